@@ -1,0 +1,401 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_ORBIFOLD_TILE_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_ORBIFOLD_TILE_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+/// \file Orbifold_tile.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteEnums
+The topology of the target orbifold.
+*/
+enum Orbifold_type
+{
+  Sphere_type, ///< a sphere with cone points (for closed genus-0 meshes)
+  Disk_type    ///< a disk with corner points on its boundary (for meshes with one boundary loop)
+};
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+
+The signature of a genus-0 orbifold with at most one boundary loop, in Conway's
+notation: cone points of orders \f$ n_i \f$ (cone angle \f$ 2\pi/n_i \f$) and, on the
+boundary, corner reflectors of orders \f$ m_j \f$ (corner angle \f$ \pi/m_j \f$).
+Its orbifold Euler characteristic is
+\f$ \chi = 2 - \sum_i (1 - 1/n_i) \f$ without boundary and
+\f$ \chi = 1 - \sum_i (1 - 1/n_i) - \frac12 \sum_j (1 - 1/m_j) \f$ with one boundary;
+it is hyperbolic if and only if \f$ \chi < 0 \f$, and its hyperbolic area is then
+\f$ -2\pi\chi \f$ (Gauss-Bonnet).
+
+The package currently builds tiles for two families (paper, section 3): sphere type
+with \f$k\f$ cones of angle \f$\pi\f$ (\f$ n_i = 2 \f$) and disk type with \f$k\f$ corners
+of angle \f$\pi/2\f$ (\f$ m_j = 2 \f$); both are hyperbolic exactly when \f$ k \ge 5 \f$.
+*/
+class Orbifold_signature
+{
+public:
+  Orbifold_signature() : type_(Sphere_type) {}
+  Orbifold_signature(Orbifold_type type, std::vector<int> orders) : type_(type), orders_(std::move(orders)) {}
+
+  /// sphere type with `k` cones of angle \f$\pi\f$
+  static Orbifold_signature sphere(int k) { return Orbifold_signature(Sphere_type, std::vector<int>(k < 0 ? 0 : k, 2)); }
+  /// disk type with `k` boundary corners of angle \f$\pi/2\f$
+  static Orbifold_signature disk(int k) { return Orbifold_signature(Disk_type, std::vector<int>(k < 0 ? 0 : k, 2)); }
+
+  Orbifold_type type() const { return type_; }
+  /// number of cones (sphere type) or boundary corners (disk type)
+  int number_of_cones() const { return static_cast<int>(orders_.size()); }
+  /// the order \f$ n \f$ of cone `i`
+  int order(int i) const { return orders_[i]; }
+  /// the angle of cone `i`: \f$ 2\pi/n \f$ for a cone point, \f$ \pi/n \f$ for a boundary corner
+  double cone_angle(int i) const { return (type_ == Sphere_type ? 2.0 : 1.0) * CGAL_PI / orders_[i]; }
+
+  /// the orbifold Euler characteristic
+  double euler_characteristic() const
+  {
+    double chi = (type_ == Sphere_type) ? 2.0 : 1.0;
+    for(int n : orders_)
+      chi -= (type_ == Sphere_type ? 1.0 : 0.5) * (1.0 - 1.0 / n);
+    return chi;
+  }
+  /// `true` when the orbifold is hyperbolic (negative Euler characteristic)
+  bool is_hyperbolic() const { return euler_characteristic() < -1e-12; }
+  /// the hyperbolic area \f$ -2\pi\chi \f$ of a hyperbolic orbifold
+  double area() const { return -2.0 * CGAL_PI * euler_characteristic(); }
+
+private:
+  Orbifold_type type_;
+  std::vector<int> orders_;
+};
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+
+The basic tile of a hyperbolic orbifold in the Poincar&eacute; disk: a convex geodesic
+polygon whose sides are glued in pairs by isometries (the side pairings), which
+generate the orbifold's symmetry group; the images of the tile under the group tile
+the whole disk.
+
+The tile is plain data (corners, which cone each corner is a copy of, side pairings),
+so any signature whose tile is convex, contains the origin in its interior, and whose
+side pairings move points across a side closer to the origin can be represented;
+`make_orbifold_tile()` builds the two families of the paper (Appendix C).
+
+Conventions: corners are listed counterclockwise; side `i` goes from corner `i` to
+corner `i+1` (modulo the number of corners); `side_pairing(i)` maps side `i` onto side
+`paired_side(i)`, and the tile's neighbour across side `i` is the image of the tile by
+`side_pairing(i).inverse()`.
+
+\tparam Traits a model of `HyperbolicOrbifoldTraits_2`; `Poincare_disk_traits_2<>` by default.
+*/
+template <class Traits_ = Poincare_disk_traits_2<> >
+class Orbifold_tile
+{
+public:
+  typedef Traits_ Traits;
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Point_2 Point_2;
+  typedef typename Traits::Isometry Isometry;
+
+private:
+  typedef Hyperbolic_isometry_2<long double> Isometry_ld;
+  typedef typename Isometry_ld::Complex Complex_ld;
+
+public:
+  /// the result of `reduce_to_tile()`
+  struct Reduction
+  {
+    Point_2 point;      ///< the image of the input point in the tile
+    Isometry element;   ///< the group element used: `point` = `element(input)`
+    std::size_t steps;  ///< the number of side pairings applied
+  };
+
+  Orbifold_tile() {}
+
+  /// builds a tile from its data; see the class documentation for the conventions.
+  Orbifold_tile(const Orbifold_signature& signature,
+                const std::vector<Point_2>& corners,
+                const std::vector<int>& corner_cones,
+                const std::vector<double>& corner_angles,
+                const std::vector<int>& paired_sides,
+                const std::vector<Isometry>& side_pairings,
+                const Traits& traits = Traits())
+    : signature_(signature), corners_(corners), corner_cones_(corner_cones), corner_angles_(corner_angles),
+      paired_sides_(paired_sides), side_pairings_(side_pairings), traits_(traits)
+  {
+    for(const Isometry& g : side_pairings_)
+      side_pairings_ld_.push_back(Isometry_ld(g));
+    cone_corners_.assign(signature_.number_of_cones(), -1);
+    for(std::size_t i = 0; i < corners_.size(); ++i)
+      if(cone_corners_[corner_cones_[i]] < 0)
+        cone_corners_[corner_cones_[i]] = static_cast<int>(i);
+  }
+
+  /// \name Access
+  /// @{
+  const Orbifold_signature& signature() const { return signature_; }
+  Orbifold_type type() const { return signature_.type(); }
+  int number_of_cones() const { return signature_.number_of_cones(); }
+  /// the orbifold's hyperbolic area (Gauss-Bonnet), which is also the tile's
+  double area() const { return signature_.area(); }
+
+  int number_of_corners() const { return static_cast<int>(corners_.size()); }
+  const Point_2& corner(int i) const { return corners_[i]; }
+  const std::vector<Point_2>& corners() const { return corners_; }
+  /// the cone of which corner `i` is a copy
+  int corner_cone(int i) const { return corner_cones_[i]; }
+  /// the tile's interior angle at corner `i`
+  double corner_angle(int i) const { return corner_angles_[i]; }
+  /// the first corner (in counterclockwise order from corner 0) that is a copy of cone `c`:
+  /// where the embedding places landmark `c`
+  int cone_corner(int c) const { return cone_corners_[c]; }
+  const Point_2& cone_point(int c) const { return corners_[cone_corners_[c]]; }
+
+  int number_of_sides() const { return number_of_corners(); }
+  int side_source(int i) const { return i; }
+  int side_target(int i) const { return (i + 1) % number_of_corners(); }
+  int paired_side(int i) const { return paired_sides_[i]; }
+  /// the isometry mapping side `i` onto side `paired_side(i)`
+  const Isometry& side_pairing(int i) const { return side_pairings_[i]; }
+  const Traits& traits() const { return traits_; }
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /// position of `p` with respect to the tile, decided exactly on the coordinates of `p` and of the corners
+  Bounded_side bounded_side(const Point_2& p) const
+  {
+    typename Traits::Hyperbolic_orientation_2 orient = traits_.hyperbolic_orientation_2_object();
+    bool on_boundary = false;
+    for(int i = 0; i < number_of_sides(); ++i) {
+      const Orientation o = orient(corners_[side_source(i)], corners_[side_target(i)], p);
+      if(o == NEGATIVE)
+        return ON_UNBOUNDED_SIDE;
+      if(o == ZERO)
+        on_boundary = true;
+    }
+    return on_boundary ? ON_BOUNDARY : ON_BOUNDED_SIDE;
+  }
+
+  /// maps `p` into the tile by elements of the group: while `p` lies beyond a side
+  /// (exact test), the side's pairing is applied. For the tiles of this package each
+  /// step strictly decreases the hyperbolic distance to the origin, so the loop ends;
+  /// once a step no longer decreases it in floating point (a point within rounding of
+  /// the tile's boundary), the point before that step is returned.
+  /// Works for points arbitrarily close to the unit circle (as long as \f$|p| < 1\f$ in double).
+  /// \pre \f$ |p| < 1 \f$ and the tile is not empty
+  Reduction reduce_to_tile(const Point_2& p) const
+  {
+    // The loop runs in long double (64-bit mantissa on x86-64): near the unit circle a
+    // group element has large coefficients, and composing them in double would lose
+    // the digits that the point's position needs.
+    typename Traits::Hyperbolic_orientation_2 orient = traits_.hyperbolic_orientation_2_object();
+    Complex_ld z(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    Isometry_ld element;
+    std::size_t steps = 0;
+    long double radius2 = internal::norm(z);
+    const std::size_t max_steps = 100000; // far more than any point representable in double needs
+    for(; steps < max_steps; ++steps) {
+      int violated = -1;
+      const Point_2 zp(static_cast<double>(z.re), static_cast<double>(z.im));
+      for(int i = 0; i < number_of_sides(); ++i) {
+        if(orient(corners_[side_source(i)], corners_[side_target(i)], zp) == NEGATIVE) {
+          violated = i;
+          break;
+        }
+      }
+      if(violated < 0)
+        break;
+      const Complex_ld w = side_pairings_ld_[violated].apply(z);
+      const long double w2 = internal::norm(w);
+      if(!(w2 < radius2))
+        break; // rounding-level boundary point: keep the closest image
+      z = w;
+      radius2 = w2;
+      element = side_pairings_ld_[violated] * element;
+    }
+    const Isometry e(element);
+    return Reduction{Point_2(static_cast<double>(z.re), static_cast<double>(z.im)), e, steps};
+  }
+
+  /// the group elements that are products of at most `depth` side pairings, without
+  /// repetitions (the identity first): the tiles around this one, as in the paper's Figure 4.
+  std::vector<Isometry> group_elements(int depth) const
+  {
+    typedef typename Isometry::Complex C;
+    std::vector<Isometry> result(1, Isometry());
+    // Two elements are the same iff they move a generic interior point to the same place
+    // (the group acts freely on the tile's interior).
+    const C probe(0.0123, 0.0456);
+    std::vector<C> images(1, probe);
+    std::size_t begin = 0;
+    for(int d = 0; d < depth; ++d) {
+      const std::size_t end = result.size();
+      for(std::size_t e = begin; e < end; ++e) {
+        for(int i = 0; i < number_of_sides(); ++i) {
+          const Isometry g = side_pairings_[i] * result[e];
+          const C img = g.apply(probe);
+          bool seen = false;
+          for(const C& q : images)
+            if(internal::norm(q - img) < 1e-20) { seen = true; break; }
+          if(!seen) {
+            result.push_back(g);
+            images.push_back(img);
+          }
+        }
+      }
+      begin = end;
+    }
+    return result;
+  }
+  /// @}
+
+private:
+  Orbifold_signature signature_;
+  std::vector<Point_2> corners_;
+  std::vector<int> corner_cones_;
+  std::vector<double> corner_angles_;
+  std::vector<int> cone_corners_;
+  std::vector<int> paired_sides_;
+  std::vector<Isometry> side_pairings_;
+  std::vector<Isometry_ld> side_pairings_ld_;
+  Traits traits_;
+};
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+builds the basic tile of the sphere-type (`k` cones of angle \f$\pi\f$) or disk-type
+(`k` corners of angle \f$\pi/2\f$) hyperbolic orbifold, following the paper's Appendix C.
+
+Disk type: the regular right-angled `k`-gon centred at the origin, corners
+\f$ p_j = \tanh(l/2)\, e^{2\pi i j/k} \f$, \f$ j = 1..k \f$, with \f$ \cosh l = \cot(\pi/k) \f$;
+corner `j-1` is cone `j-1`; each side is paired with itself by the reflection in it.
+
+Sphere type: that `k`-gon moved so that the geodesic midpoint of \f$p_k, p_1\f$ is the
+origin, \f$p_1\f$ on the positive and \f$p_k\f$ on the negative real axis (so the polygon lies
+in the upper half-disk), united with its mirror image \f$q_j = \bar p_j\f$. The corners,
+counterclockwise, are \f$ p_1, \dots, p_k, q_{k-1}, \dots, q_2 \f$ (\f$2k-2\f$ of them);
+\f$p_j\f$ and \f$q_j\f$ are copies of cone `j-1`. Side \f$p_j p_{j+1}\f$ is glued to side
+\f$q_j q_{j+1}\f$ by the orientation-preserving isometry "reflect in the geodesic
+\f$p_j p_{j+1}\f$, then conjugate".
+
+\return `OK`, or `ERROR_NOT_HYPERBOLIC` when `k < 5` (the tile is left unchanged then).
+*/
+template <class Traits>
+Error_code make_orbifold_tile(Orbifold_type type, int k, Orbifold_tile<Traits>& tile,
+                              const Traits& traits = Traits())
+{
+  typedef Orbifold_tile<Traits> Tile;
+  typedef typename Tile::Isometry Isometry;
+  typedef typename Isometry::Complex C;
+  typedef typename Tile::Point_2 Point_2;
+  typedef typename Tile::FT FT;
+
+  const Orbifold_signature signature =
+    (type == Sphere_type) ? Orbifold_signature::sphere(k) : Orbifold_signature::disk(k);
+  if(k < 5 || !signature.is_hyperbolic())
+    return ERROR_NOT_HYPERBOLIC;
+
+  // Regular right-angled k-gon: cosh(l) = cot(pi/k), Euclidean radius tanh(l/2).
+  const double cosh_l = 1.0 / std::tan(CGAL_PI / k);
+  const double radius = std::sqrt((cosh_l - 1.0) / (cosh_l + 1.0));
+  std::vector<C> p(k);
+  for(int j = 1; j <= k; ++j)
+    p[j - 1] = internal::polar(radius, 2.0 * CGAL_PI * j / k);
+
+  auto to_point = [](const C& z) { return Point_2(FT(z.re), FT(z.im)); };
+
+  if(type == Disk_type) {
+    std::vector<Point_2> corners;
+    std::vector<int> cones, paired;
+    std::vector<double> angles;
+    std::vector<Isometry> pairings;
+    for(int i = 0; i < k; ++i) {
+      corners.push_back(to_point(p[i]));
+      cones.push_back(i);
+      angles.push_back(CGAL_PI / 2);
+      paired.push_back(i);
+      pairings.push_back(Isometry::reflection_in_geodesic(p[i], p[(i + 1) % k]));
+    }
+    tile = Tile(signature, corners, cones, angles, paired, pairings, traits);
+    return OK;
+  }
+
+  // Sphere type: move the geodesic midpoint of p_k and p_1 to the origin, p_1 to the positive real axis.
+  const Point_2 mid = traits.construct_hyperbolic_midpoint_2_object()(to_point(p[k - 1]), to_point(p[0]));
+  const Isometry to0 = Isometry::translation_to_origin(C(CGAL::to_double(mid.x()), CGAL::to_double(mid.y())));
+  const Isometry place = Isometry::rotation(-internal::arg(to0.apply(p[0]))) * to0;
+  std::vector<C> P(k);
+  for(int j = 0; j < k; ++j)
+    P[j] = place.apply(p[j]);
+  // p_1 and p_k are on the real axis by construction; remove the rounding noise so that
+  // the shared side is exactly the real diameter and q_1 = p_1, q_k = p_k exactly.
+  const double x = 0.5 * (P[0].re - P[k - 1].re);
+  P[0] = C(x, 0.0);
+  P[k - 1] = C(-x, 0.0);
+
+  std::vector<Point_2> corners;
+  std::vector<int> cones;
+  std::vector<double> angles;
+  for(int j = 0; j < k; ++j) { // p_1 .. p_k
+    corners.push_back(to_point(P[j]));
+    cones.push_back(j);
+    angles.push_back((j == 0 || j == k - 1) ? CGAL_PI : CGAL_PI / 2);
+  }
+  for(int j = k - 2; j >= 1; --j) { // q_{k-1} .. q_2
+    corners.push_back(to_point(internal::conj(P[j])));
+    cones.push_back(j);
+    angles.push_back(CGAL_PI / 2);
+  }
+  const int n = 2 * k - 2;
+  std::vector<int> paired(n);
+  std::vector<Isometry> pairings(n);
+  const Isometry conj = Isometry::complex_conjugation();
+  for(int j = 1; j <= k - 1; ++j) {
+    // side j-1 is p_j p_{j+1}; side 2k-2-j is q_{j+1} q_j.
+    const Isometry m = conj * Isometry::reflection_in_geodesic(P[j - 1], P[j]);
+    paired[j - 1] = 2 * k - 2 - j;
+    paired[2 * k - 2 - j] = j - 1;
+    pairings[j - 1] = m;
+    pairings[2 * k - 2 - j] = m.inverse();
+  }
+  tile = Tile(signature, corners, cones, angles, paired, pairings, traits);
+  return OK;
+}
+
+/// \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+/// builds the tile of the signature `signature` (see the other overload).
+template <class Traits>
+Error_code make_orbifold_tile(const Orbifold_signature& signature, Orbifold_tile<Traits>& tile,
+                              const Traits& traits = Traits())
+{
+  for(int i = 0; i < signature.number_of_cones(); ++i)
+    if(signature.order(i) != 2)
+      return ERROR_WRONG_PARAMETER; // not built yet: only cone angle pi (sphere) and pi/2 corners (disk)
+  return make_orbifold_tile(signature.type(), signature.number_of_cones(), tile, traits);
+}
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_ORBIFOLD_TILE_H

@@ -1,0 +1,16 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H
+
+/// \file hyperbolic_orbifold_Tutte.h
+/// Includes every public header of the package.
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs, with apt-get, the Debian 12 packages this project needs and that are missing.
+# Idempotent: does nothing (and needs no network) when everything is already there.
+# Works as root, or as a user with sudo.
+set -euo pipefail
+
+PACKAGES=(
+  g++ cmake make ccache pkg-config
+  libcgal-dev        # CGAL 5.5 (header-only), pulls Boost
+  libcgal-demo       # ships data/meshes/*.off used by tests and the demo
+  libeigen3-dev      # sparse linear algebra
+  libboost-dev
+  libgmp-dev libmpfr-dev   # exact arithmetic behind the filtered predicates
+  libtbb-dev         # parallel collections
+  doxygen            # the reference manual
+  librsvg2-bin       # rsvg-convert: SVG -> PNG for looking at pictures
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO="sudo"; else
+    echo "install-deps: missing packages (${missing[*]}) and not root, no sudo" >&2; exit 1
+  fi
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"
