@@ -1,0 +1,205 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_HYPERBOLIC_ORBIFOLD_TUTTE_PARAMETERIZER_3_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_HYPERBOLIC_ORBIFOLD_TUTTE_PARAMETERIZER_3_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_solver.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+/// \file Hyperbolic_orbifold_Tutte_parameterizer_3.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+What a parameterization did: solver statistics, timings (seconds) and the certificate.
+*/
+struct Embedding_statistics
+{
+  int number_of_vertices = 0;         ///< vertices of the cut (seam) mesh
+  int number_of_variables = 0;        ///< unknowns after eliminating seam twins
+  int iterations = 0;                 ///< Newton iterations
+  double initial_energy = 0;          ///< Dirichlet energy of the Euclidean Tutte initialisation
+  double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
+  double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
+  double relative_gradient_norm = 0;  ///< the same, relative to its initial value
+  bool converged = false;
+  int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
+  bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
+  double time_setup = 0, time_initialization = 0, time_optimization = 0, time_certificate = 0;
+  Embedding_certificate certificate;
+  std::string message;                ///< one-line reason when the result is an error
+};
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+
+computes a hyperbolic orbifold Tutte embedding (Aigerman and Lipman 2016, Algorithm 1)
+of a cut mesh into the basic tile of a sphere-type or disk-type hyperbolic orbifold:
+the critical point of the hyperbolic Dirichlet energy \f$ \frac12 \sum w_{ij} d(\Phi_i,\Phi_j)^2 \f$
+with the landmarks fixed at the tile's cones and seam twins tied by the side pairings
+(sphere type), or boundary vertices sliding on the tile's sides (disk type).
+
+The result is written as Poincar&eacute;-disk coordinates, one `Point_2` per seam-mesh
+vertex, and is certified: `parameterize()` returns `OK` only when
+`Embedding_certificate::is_bijective()` holds for the written coordinates.
+
+\tparam SeamMesh a `CGAL::Seam_mesh` whose seams cut the underlying closed genus-0 mesh
+        into a disk along a simple path through the landmarks in order (sphere type),
+        or a `Seam_mesh` without seams over a mesh with one boundary loop (disk type).
+\tparam Traits a model of `HyperbolicOrbifoldTraits_2`, by default
+        `Poincare_disk_traits_2` over the kernel of the mesh's points.
+*/
+template <class SeamMesh, class Traits_ = Default>
+class Hyperbolic_orbifold_Tutte_parameterizer_3
+{
+public:
+  typedef SeamMesh Seam_mesh;
+  typedef typename SeamMesh::TriangleMesh Triangle_mesh;
+  typedef typename boost::property_map<Triangle_mesh, boost::vertex_point_t>::const_type Vertex_point_map;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel Kernel;
+  typedef typename Default::Get<Traits_, Poincare_disk_traits_2<Kernel> >::type Traits;
+  typedef typename Traits::Point_2 Point_2;
+  typedef Orbifold_tile<Traits> Tile;
+  typedef typename boost::graph_traits<SeamMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<SeamMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor TM_vertex_descriptor;
+
+  /// \param type the orbifold's topology
+  /// \param weights the edge weights
+  /// \param epsilon the lower clamp of cotangent weights
+  explicit Hyperbolic_orbifold_Tutte_parameterizer_3(Orbifold_type type = Sphere_type, Weight_type weights = Cotangent,
+                                                     double epsilon = 1e-6, const Traits& traits = Traits())
+    : type_(type), weights_(weights), epsilon_(epsilon), traits_(traits)
+  {}
+
+  /// the relative gradient norm at which the solver stops (default \f$10^{-12}\f$)
+  void set_gradient_tolerance(double t) { options_.gradient_tolerance = t; }
+  void set_maximum_number_of_iterations(int n) { options_.max_iterations = n; }
+  void set_verbose(bool v) { options_.verbose = v; }
+
+  /*!
+  computes the embedding.
+  \tparam VertexUVMap a model of `WritablePropertyMap` with `vertex_descriptor` of `SeamMesh`
+          as key type and `Point_2` as value type (typically a halfedge property map of
+          the underlying mesh, as for `Surface_mesh_parameterization`).
+  \param mesh the cut mesh
+  \param bhd a border halfedge of `mesh`
+  \param landmarks the landmark vertices of the underlying mesh, in cone order
+  \param uvmap receives the Poincar&eacute; coordinates
+  \param stats if not null, receives statistics, timings and the certificate
+  \return `OK`, or the reason of the failure (`uvmap` is then left unchanged).
+  */
+  template <class VertexUVMap>
+  Error_code parameterize(const SeamMesh& mesh, halfedge_descriptor bhd,
+                          const std::vector<TM_vertex_descriptor>& landmarks, VertexUVMap uvmap,
+                          Embedding_statistics* stats = nullptr) const
+  {
+    Embedding_statistics local;
+    Embedding_statistics& st = stats ? *stats : local;
+    st = Embedding_statistics();
+    typedef std::chrono::steady_clock Clock;
+    auto t0 = Clock::now();
+    auto fail = [&](Error_code ec, const std::string& msg) {
+      st.message = msg.empty() ? std::string(error_message(ec)) : msg;
+      return ec;
+    };
+
+    const int k = static_cast<int>(landmarks.size());
+    if(k < 5)
+      return fail(ERROR_TOO_FEW_LANDMARKS, "at least 5 landmarks are needed, got " + std::to_string(k));
+    Tile tile;
+    if(make_orbifold_tile(type_, k, tile, traits_) != OK)
+      return fail(ERROR_NOT_HYPERBOLIC, "");
+
+    internal::Flat_problem P;
+    std::unordered_map<TM_vertex_descriptor, int> base_index;
+    std::vector<vertex_descriptor> cut_vertices;
+    std::string msg;
+    Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_index, cut_vertices, msg);
+    if(ec != OK)
+      return fail(ec, msg);
+    st.number_of_vertices = P.n;
+    st.number_of_variables = P.n_vars;
+    st.landmark_order_reversed = P.landmark_order_reversed;
+
+    const Triangle_mesh& tm = mesh.mesh();
+    Vertex_point_map vpm = get(vertex_point, tm);
+    std::vector<Point_3> base_points(P.n_base);
+    for(const auto& bi : base_index)
+      base_points[bi.second] = get(vpm, bi.first);
+    internal::compute_edge_weights(P, base_points, weights_, epsilon_);
+    st.time_setup = std::chrono::duration<double>(Clock::now() - t0).count();
+
+    auto t1 = Clock::now();
+    std::vector<double> x;
+    ec = internal::initialize_embedding(P, tile, base_points, x);
+    st.time_initialization = std::chrono::duration<double>(Clock::now() - t1).count();
+    if(ec != OK)
+      return fail(ec, "the Euclidean Tutte initialisation failed");
+
+    auto t2 = Clock::now();
+    internal::Solver_statistics ss;
+    ec = internal::minimize_energy(P, x, options_, ss);
+    st.iterations = ss.iterations;
+    st.initial_energy = ss.initial_energy;
+    st.energy = ss.energy;
+    st.gradient_norm = ss.gradient;
+    st.relative_gradient_norm = ss.relative_gradient;
+    st.converged = ss.converged;
+    st.time_optimization = std::chrono::duration<double>(Clock::now() - t2).count();
+
+    std::vector<internal::Complex<double> > uv(P.n);
+    for(int v = 0; v < P.n; ++v)
+      uv[v] = internal::position(P, x, v);
+
+    auto t3 = Clock::now();
+    st.certificate = internal::certify_flat(P, tile, uv);
+    st.time_certificate = std::chrono::duration<double>(Clock::now() - t3).count();
+    if(ec != OK) {
+      std::ostringstream os;
+      os << "the solver stopped at relative gradient norm " << ss.relative_gradient << " after " << ss.iterations
+         << " iterations (tolerance " << options_.gradient_tolerance << ")";
+      return fail(ec, os.str());
+    }
+    if(!st.certificate.is_bijective()) {
+      std::ostringstream os;
+      os << "the embedding failed the certificate: " << st.certificate;
+      return fail(ERROR_NO_1_TO_1_MAPPING, os.str());
+    }
+    for(int v = 0; v < P.n; ++v)
+      put(uvmap, cut_vertices[v], Point_2(uv[v].re, uv[v].im));
+    return OK;
+  }
+
+private:
+  Orbifold_type type_;
+  Weight_type weights_;
+  double epsilon_;
+  Traits traits_;
+  internal::Solver_options options_;
+};
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_HYPERBOLIC_ORBIFOLD_TUTTE_PARAMETERIZER_3_H

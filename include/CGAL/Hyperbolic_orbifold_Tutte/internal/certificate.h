@@ -1,0 +1,117 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CERTIFICATE_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CERTIFICATE_H
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// Checks an embedding of the cut mesh given by one Poincare point per cut-mesh vertex.
+template <class Tile>
+Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, const std::vector<Complex<double> >& uv,
+                                   double tolerance = 1e-6)
+{
+  typedef Complex<double> C;
+  typedef typename Tile::Traits Traits;
+  typedef typename Traits::Point_2 Point_2;
+  Embedding_certificate cert;
+  Traits tr = tile.traits();
+  auto orient = tr.hyperbolic_orientation_2_object();
+  auto angle = tr.compute_hyperbolic_angle_2_object();
+  cert.number_of_faces = P.faces.size();
+  cert.expected_area = tile.area();
+
+  for(int v = 0; v < P.n; ++v)
+    if(!(norm(uv[v]) < 1.0) || !std::isfinite(uv[v].re) || !std::isfinite(uv[v].im))
+      ++cert.points_outside_disk;
+
+  std::vector<double> angle_sum(P.n_base, 0.0);
+  auto pt = [&](int v) { return Point_2(uv[v].re, uv[v].im); };
+  if(cert.points_outside_disk == 0) {
+    for(const auto& t : P.faces) {
+      const Point_2 a = pt(t[0]), b = pt(t[1]), c = pt(t[2]);
+      const Orientation o = orient(a, b, c);
+      if(o == NEGATIVE)
+        ++cert.flipped_faces;
+      else if(o == ZERO)
+        ++cert.degenerate_faces;
+      const double A = CGAL::to_double(angle(a, b, c)), B = CGAL::to_double(angle(b, c, a)),
+                   Cc = CGAL::to_double(angle(c, a, b));
+      angle_sum[P.base[t[0]]] += A;
+      angle_sum[P.base[t[1]]] += B;
+      angle_sum[P.base[t[2]]] += Cc;
+      const double area = CGAL_PI - (A + B + Cc);
+      cert.total_area += (o == NEGATIVE) ? -area : area;
+    }
+    // expected angle sums per base vertex
+    std::vector<double> expected(P.n_base, 2 * CGAL_PI);
+    for(int v = 0; v < P.n; ++v) {
+      if(P.corner[v] >= 0) {
+        const int c = tile.corner_cone(P.corner[v]);
+        expected[P.base[v]] = tile.signature().cone_angle(c);
+      } else if(tile.type() == Disk_type && P.side[v] >= 0) {
+        expected[P.base[v]] = CGAL_PI;
+      }
+    }
+    std::vector<char> seen(P.n_base, 0);
+    for(int v = 0; v < P.n; ++v) {
+      const int b = P.base[v];
+      if(seen[b])
+        continue;
+      seen[b] = 1;
+      const double err = std::abs(angle_sum[b] - expected[b]);
+      cert.max_angle_sum_error = std::max(cert.max_angle_sum_error, err);
+      if(!(err <= tolerance))
+        ++cert.angle_sum_failures;
+    }
+    cert.area_error = std::abs(cert.total_area - cert.expected_area);
+    // seam twins and cones
+    auto hdist = [&](const C& p, const C& q) {
+      return CGAL::to_double(tr.compute_hyperbolic_distance_2_object()(Point_2(p.re, p.im), Point_2(q.re, q.im)));
+    };
+    for(int v = 0; v < P.n; ++v) {
+      if(P.kind[v] == Transformed) {
+        const double d = hdist(P.transform[v].apply(uv[P.twin[v]]), uv[v]);
+        cert.max_twin_error = std::max(cert.max_twin_error, d);
+        if(!(d <= tolerance))
+          ++cert.twin_failures;
+      }
+      if(P.corner[v] >= 0) {
+        const auto& c = tile.corner(P.corner[v]);
+        const double d = hdist(C(CGAL::to_double(c.x()), CGAL::to_double(c.y())), uv[v]);
+        cert.max_cone_error = std::max(cert.max_cone_error, d);
+        if(!(d <= tolerance))
+          ++cert.cone_failures;
+      }
+      if(tile.type() == Disk_type && P.side[v] >= 0) {
+        // on its side: distance to the side's line in the Klein model
+        const int s = P.side[v];
+        const auto Kp = tr.construct_Klein_point_2_object()(pt(v));
+        const auto K0 = tr.construct_Klein_point_2_object()(tile.corner(tile.side_source(s)));
+        const auto K1 = tr.construct_Klein_point_2_object()(tile.corner(tile.side_target(s)));
+        const double ux = K1.x() - K0.x(), uy = K1.y() - K0.y();
+        const double off = std::abs(ux * (Kp.y() - K0.y()) - uy * (Kp.x() - K0.x())) / std::sqrt(ux * ux + uy * uy);
+        cert.max_border_error = std::max(cert.max_border_error, off);
+        if(!(off <= tolerance))
+          ++cert.border_failures;
+      }
+    }
+  }
+  cert.area_ok = cert.points_outside_disk == 0 && cert.area_error <= tolerance * std::max(1.0, cert.expected_area);
+  return cert;
+}
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CERTIFICATE_H

@@ -1,0 +1,363 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_FLAT_PROBLEM_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_FLAT_PROBLEM_H
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/hyperbolic_energy.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <array>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// The cut mesh (a topological disk) as plain arrays, with what each vertex is in the
+// orbifold: a cone copy fixed at a tile corner, a free interior vertex, a seam vertex
+// tied to its twin by a side pairing, or a disk-boundary vertex sliding on a side.
+struct Flat_problem
+{
+  typedef Complex<double> C;
+  typedef Hyperbolic_isometry_2<double> Isometry;
+
+  Orbifold_type type = Sphere_type;
+  int k = 0;
+  int n = 0;                                 // cut-mesh (seam-mesh) vertices
+  std::vector<std::array<int, 3> > faces;    // counterclockwise in the mesh's orientation
+  std::vector<int> base;                     // base-mesh vertex index of each cut-mesh vertex
+  int n_base = 0;
+  std::vector<int> border_loop;              // counterclockwise, starting at the first landmark's copy
+  std::vector<int> side;                     // tile side of a border vertex (-1: interior or corner)
+  std::vector<int> corner;                   // tile corner of a cone copy (-1 otherwise)
+  std::vector<double> border_param;          // position along its side in [0,1] (initialisation)
+  std::vector<Position_kind> kind;
+  std::vector<int> var;                      // first variable (Free, On_line)
+  std::vector<int> twin;                     // Transformed: the vertex whose variables it uses
+  std::vector<Isometry> transform;           // Transformed: z = transform(z_twin)
+  std::vector<C> fixed;                      // Fixed: position
+  std::vector<C> line_k0, line_D;            // On_line: Klein segment of the side
+  std::vector<std::array<int, 2> > edges;    // each cut-mesh edge once
+  std::vector<double> edge_weight;           // with seam copies halved (each base edge counts once)
+  int n_vars = 0;
+  bool landmark_order_reversed = false;      // disk type: given order was clockwise
+};
+
+// Position of vertex v (and derivatives) for the variable vector x.
+inline void position_jet(const Flat_problem& P, const std::vector<double>& x, int v, Position_jet& jet)
+{
+  typedef Complex<double> C;
+  switch(P.kind[v]) {
+    case Fixed:
+      jet.z = P.fixed[v];
+      jet.dim = 0;
+      break;
+    case Free:
+      jet.z = C(x[P.var[v]], x[P.var[v] + 1]);
+      jet.dim = 2;
+      jet.dz[0] = C(1, 0);
+      jet.dz[1] = C(0, 1);
+      jet.ddz[0][0] = jet.ddz[0][1] = jet.ddz[1][0] = jet.ddz[1][1] = C();
+      break;
+    case Transformed: {
+      const int t = P.twin[v];
+      transformed_jet(P.transform[v], C(x[P.var[t]], x[P.var[t] + 1]), jet);
+      break;
+    }
+    case On_line:
+      on_line_jet(P.line_k0[v], P.line_D[v], x[P.var[v]], jet);
+      break;
+  }
+}
+
+inline Complex<double> position(const Flat_problem& P, const std::vector<double>& x, int v)
+{
+  typedef Complex<double> C;
+  switch(P.kind[v]) {
+    case Fixed: return P.fixed[v];
+    case Free: return C(x[P.var[v]], x[P.var[v] + 1]);
+    case Transformed: return P.transform[v].apply(C(x[P.var[P.twin[v]]], x[P.var[P.twin[v]] + 1]));
+    case On_line: {
+      const C k = P.line_k0[v] + x[P.var[v]] * P.line_D[v];
+      const double s = 1.0 - norm(k);
+      return k / (1.0 + std::sqrt(s > 0 ? s : 0.0));
+    }
+  }
+  return C();
+}
+
+// the first variable index of the vertex that owns v's variables, or -1
+inline int variable_owner(const Flat_problem& P, int v)
+{
+  switch(P.kind[v]) {
+    case Free:
+    case On_line: return P.var[v];
+    case Transformed: return P.var[P.twin[v]];
+    default: return -1;
+  }
+}
+
+// Builds the topology part of a Flat_problem from a seam mesh (a topological disk) whose
+// border loop goes through copies of the landmarks. `landmarks` are base-mesh vertices in
+// cone order. Fills faces, base, border_loop, side, corner, kind, var, twin, transform,
+// fixed, line_k0/D, edges (weights are set by the caller).
+template <class SeamMesh, class Tile>
+Error_code build_flat_topology(const SeamMesh& mesh,
+                               typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
+                               const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
+                               const Tile& tile,
+                               Flat_problem& P,
+                               std::unordered_map<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor, int>& base_index,
+                               std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor>& cut_vertices,
+                               std::string& message)
+{
+  typedef typename SeamMesh::TriangleMesh TM;
+  typedef boost::graph_traits<SeamMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TM>::vertex_descriptor tm_vertex_descriptor;
+  typedef Complex<double> C;
+  typedef Hyperbolic_isometry_2<double> Isometry;
+
+  const TM& tm = mesh.mesh();
+  const int k = static_cast<int>(landmarks.size());
+  P = Flat_problem();
+  P.type = tile.type();
+  P.k = k;
+
+  // index the base mesh
+  base_index.clear();
+  for(tm_vertex_descriptor v : vertices(tm)) {
+    const int i = static_cast<int>(base_index.size());
+    base_index.emplace(v, i);
+  }
+  P.n_base = static_cast<int>(base_index.size());
+
+  // index the seam-mesh vertices
+  std::unordered_map<halfedge_descriptor, int, boost::hash<halfedge_descriptor> > vindex;
+  cut_vertices.clear();
+  for(vertex_descriptor vd : vertices(mesh)) {
+    vindex.emplace(vd.hd, static_cast<int>(cut_vertices.size()));
+    cut_vertices.push_back(vd);
+  }
+  P.n = static_cast<int>(cut_vertices.size());
+  auto index_of = [&](vertex_descriptor vd) -> int {
+    auto it = vindex.find(vd.hd);
+    return it == vindex.end() ? -1 : it->second;
+  };
+  P.base.resize(P.n);
+  for(int i = 0; i < P.n; ++i)
+    P.base[i] = base_index.at(target(cut_vertices[i].hd.tmhd, tm));
+
+  for(face_descriptor f : faces(mesh)) {
+    std::array<int, 3> t;
+    int j = 0;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+      if(j < 3)
+        t[j] = index_of(target(h, mesh));
+      ++j;
+    }
+    if(j != 3 || t[0] < 0 || t[1] < 0 || t[2] < 0) {
+      message = "the mesh has a face that is not a triangle";
+      return ERROR_NON_TRIANGULAR_MESH;
+    }
+    P.faces.push_back(t);
+  }
+
+  // edges of the cut mesh, each once (from its halfedge with the smaller index pair)
+  {
+    std::vector<std::vector<int> > adj(P.n);
+    for(const auto& t : P.faces)
+      for(int e = 0; e < 3; ++e) {
+        const int a = t[e], b = t[(e + 1) % 3];
+        adj[std::min(a, b)].push_back(std::max(a, b));
+      }
+    for(int a = 0; a < P.n; ++a) {
+      std::sort(adj[a].begin(), adj[a].end());
+      adj[a].erase(std::unique(adj[a].begin(), adj[a].end()), adj[a].end());
+      for(int b : adj[a])
+        P.edges.push_back({a, b});
+    }
+  }
+
+  // border loop: next() walks border halfedges with the mesh on their right; reverse it
+  if(!is_border(bhd, mesh)) {
+    message = "the given halfedge is not on the border of the cut mesh";
+    return ERROR_WRONG_PARAMETER;
+  }
+  std::vector<int> loop;
+  {
+    halfedge_descriptor h = bhd;
+    std::size_t guard = 0;
+    do {
+      loop.push_back(index_of(target(h, mesh)));
+      h = next(h, mesh);
+      if(++guard > static_cast<std::size_t>(P.n) + 1) {
+        message = "the border of the cut mesh is not a simple loop";
+        return ERROR_CUT_FAILED;
+      }
+    } while(h != bhd);
+  }
+  std::reverse(loop.begin(), loop.end());
+  {
+    std::vector<char> seen(P.n, 0);
+    for(int v : loop) {
+      if(v < 0 || seen[v]) {
+        message = "the border of the cut mesh is not a simple loop";
+        return ERROR_CUT_FAILED;
+      }
+      seen[v] = 1;
+    }
+  }
+
+  // cone index of each base vertex
+  std::vector<int> cone_of_base(P.n_base, -1);
+  for(int c = 0; c < k; ++c) {
+    auto it = base_index.find(landmarks[c]);
+    if(it == base_index.end()) {
+      message = "a landmark is not a vertex of the mesh";
+      return ERROR_LANDMARK_OUT_OF_RANGE;
+    }
+    cone_of_base[it->second] = c;
+  }
+
+  // Positions of cone copies along the loop, in loop order.
+  std::vector<int> loop_cone_pos; // indices into loop
+  for(std::size_t i = 0; i < loop.size(); ++i)
+    if(cone_of_base[P.base[loop[i]]] >= 0)
+      loop_cone_pos.push_back(static_cast<int>(i));
+
+  // Expected cone sequence along the counterclockwise loop: the tile's corner cones.
+  const int nc = tile.number_of_corners();
+  std::vector<int> expected(nc);
+  for(int i = 0; i < nc; ++i)
+    expected[i] = tile.corner_cone(i);
+
+  if(static_cast<int>(loop_cone_pos.size()) != nc) {
+    message = "the border of the cut mesh holds " + std::to_string(loop_cone_pos.size()) +
+              " landmark copies, the orbifold tile has " + std::to_string(nc) + " corners";
+    return tile.type() == Disk_type ? ERROR_LANDMARK_NOT_ON_BORDER : ERROR_CUT_FAILED;
+  }
+  // rotate so that the loop starts at a copy of cone 0
+  int start = -1;
+  for(int i = 0; i < nc; ++i)
+    if(cone_of_base[P.base[loop[loop_cone_pos[i]]]] == 0) {
+      start = i;
+      break;
+    }
+  std::vector<int> seq(nc);
+  for(int i = 0; i < nc; ++i)
+    seq[i] = cone_of_base[P.base[loop[loop_cone_pos[(start + i) % nc]]]];
+  std::vector<int> cone_map(k);
+  for(int c = 0; c < k; ++c)
+    cone_map[c] = c;
+  if(seq != expected) {
+    bool ok = false;
+    if(tile.type() == Disk_type) {
+      // a clockwise order is accepted: landmark c then goes to corner (k - c) mod k
+      std::vector<int> rev(nc);
+      for(int i = 0; i < nc; ++i)
+        rev[i] = (k - seq[i]) % k;
+      if(rev == expected) {
+        ok = true;
+        P.landmark_order_reversed = true;
+        for(int c = 0; c < k; ++c)
+          cone_map[c] = (k - c) % k;
+      }
+    }
+    if(!ok) {
+      message = tile.type() == Disk_type
+                  ? "the landmarks are not in boundary order (clockwise or counterclockwise)"
+                  : "the cut does not visit the landmarks in order p1 -> ... -> pk and back";
+      return ERROR_CUT_FAILED;
+    }
+  }
+  const int shift = loop_cone_pos[start];
+  std::rotate(loop.begin(), loop.begin() + shift, loop.end());
+  P.border_loop = loop;
+  for(int& p : loop_cone_pos)
+    p = (p - shift + static_cast<int>(loop.size())) % static_cast<int>(loop.size());
+  std::sort(loop_cone_pos.begin(), loop_cone_pos.end());
+
+  P.side.assign(P.n, -1);
+  P.corner.assign(P.n, -1);
+  P.border_param.assign(P.n, 0.0);
+  P.kind.assign(P.n, Free);
+  P.var.assign(P.n, -1);
+  P.twin.assign(P.n, -1);
+  P.transform.assign(P.n, Isometry());
+  P.fixed.assign(P.n, C());
+  P.line_k0.assign(P.n, C());
+  P.line_D.assign(P.n, C());
+
+  const int L = static_cast<int>(loop.size());
+  for(int s = 0; s < nc; ++s) {
+    const int a = loop_cone_pos[s], b = (s + 1 < nc) ? loop_cone_pos[s + 1] : L;
+    P.corner[loop[a]] = s;
+    P.kind[loop[a]] = Fixed;
+    P.fixed[loop[a]] = C(CGAL::to_double(tile.corner(s).x()), CGAL::to_double(tile.corner(s).y()));
+    for(int i = a + 1; i < b; ++i)
+      P.side[loop[i]] = s;
+  }
+  (void)cone_map;
+
+  // Seam twins (sphere type): q-side vertices are images of their p-side copies.
+  if(tile.type() == Sphere_type) {
+    std::vector<int> p_copy(P.n_base, -1);
+    for(int v : loop)
+      if(P.side[v] >= 0 && P.side[v] <= k - 2)
+        p_copy[P.base[v]] = v;
+    for(int v : loop) {
+      const int s = P.side[v];
+      if(s >= k - 1) {
+        const int t = p_copy[P.base[v]];
+        const int ps = tile.paired_side(s);
+        if(t < 0 || P.side[t] != ps) {
+          message = "a seam vertex has no twin on the paired side of the cut";
+          return ERROR_CUT_FAILED;
+        }
+        P.kind[v] = Transformed;
+        P.twin[v] = t;
+        P.transform[v] = tile.side_pairing(ps); // maps side ps onto side s
+      }
+    }
+  } else {
+    for(int v : loop)
+      if(P.side[v] >= 0) {
+        const int s = P.side[v];
+        P.kind[v] = On_line;
+        const auto K = Poincare_disk_traits_2<>().construct_Klein_point_2_object();
+        const auto k0 = K(tile.corner(tile.side_source(s)));
+        const auto k1 = K(tile.corner(tile.side_target(s)));
+        P.line_k0[v] = C(k0.x(), k0.y());
+        P.line_D[v] = C(k1.x() - k0.x(), k1.y() - k0.y());
+      }
+  }
+  // variables
+  P.n_vars = 0;
+  for(int v = 0; v < P.n; ++v) {
+    if(P.kind[v] == Free) {
+      P.var[v] = P.n_vars;
+      P.n_vars += 2;
+    } else if(P.kind[v] == On_line) {
+      P.var[v] = P.n_vars;
+      P.n_vars += 1;
+    }
+  }
+  return OK;
+}
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_FLAT_PROBLEM_H
