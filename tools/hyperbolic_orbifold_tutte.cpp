@@ -8,7 +8,13 @@
 // Every error ends the program with a non-zero status and one line on stderr;
 // output files are written to a temporary name and renamed only when complete.
 
+// the mesh's header first: Seam_mesh calls CGAL::halfedges(tm) etc. qualified
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/svg_writer.h>
 
 #include <cerrno>
@@ -35,7 +41,14 @@ const char* const usage_text =
   "usage:\n"
   "  hyperbolic_orbifold_tutte tile --orbifold sphere|disk --cones K --svg FILE [--depth D]\n"
   "      draws the basic tile of the orbifold with K cones and its images under the group\n"
-  "      (products of at most D side pairings, default 3) in the Poincare disk\n";
+  "      (products of at most D side pairings, default 3) in the Poincare disk\n"
+  "  hyperbolic_orbifold_tutte embed --mesh IN --cones CONES [--orbifold sphere|disk]\n"
+  "      [--weights cotan|mvc|uniform] [--order given|tsp] --out OUT.obj [--svg PICTURE.svg]\n"
+  "      [--report REPORT.json]\n"
+  "      embeds the mesh into the hyperbolic orbifold whose cones are the landmarks CONES\n"
+  "      (0-based vertex indices); OUT.obj holds the input vertices (v), one Poincare point\n"
+  "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
+  "      bijective or the program fails. --order defaults to tsp for sphere type.\n";
 
 // --name value options; every option takes a value.
 class Options
@@ -143,6 +156,218 @@ int run_tile(int argc, char** argv)
   return EXIT_SUCCESS;
 }
 
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Surface_mesh;
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
+typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor SM_halfedge;
+typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
+
+struct Failure
+{
+  HOT::Error_code code;
+  std::string message;
+};
+
+std::string json_escape(const std::string& s)
+{
+  std::string r;
+  for(char c : s) {
+    if(c == '"' || c == '\\') { r += '\\'; r += c; }
+    else if(static_cast<unsigned char>(c) < 0x20) { char b[8]; std::snprintf(b, sizeof(b), "\\u%04x", c); r += b; }
+    else r += c;
+  }
+  return r;
+}
+
+// Writes the embedding's SVG: the tiling (faded tile copies), the embedded mesh in the
+// tile and its images around it, cones in distinct colours (paper, Figure 1).
+void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
+                         const Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2>& uv,
+                         const HOT::Orbifold_tile<>& tile, const std::vector<SM_vertex>& landmarks,
+                         const std::string& title)
+{
+  typedef HOT::internal::Complex<double> C;
+  HOT::internal::Poincare_svg svg;
+  svg.begin(os, title);
+  const int n = tile.number_of_corners();
+  std::vector<C> corners;
+  for(int i = 0; i < n; ++i)
+    corners.push_back(C(tile.corner(i).x(), tile.corner(i).y()));
+  // copies of the mesh: as many group elements as keep the picture below ~400k segments
+  const std::size_t edges_per_copy = 3 * num_faces(m);
+  int depth = 2;
+  while(depth > 0 && tile.group_elements(depth).size() * edges_per_copy > 400000)
+    --depth;
+  const std::vector<HOT::Orbifold_tile<>::Isometry> group = tile.group_elements(std::max(depth, 2));
+  for(std::size_t e = 1; e < group.size(); ++e) {
+    std::vector<C> img;
+    for(const C& c : corners)
+      img.push_back(group[e].apply(c));
+    svg.path(os, svg.geodesic_path(img, true), "#e3ebf3", "#9fb3c8", 0.6);
+  }
+  std::vector<HOT::Orbifold_tile<>::Isometry> copies(group.begin(), group.begin() + (depth > 0 ? tile.group_elements(depth).size() : 1));
+  for(std::size_t e = 0; e < copies.size(); ++e) {
+    std::ostringstream d;
+    d.precision(6);
+    for(SM_face f : faces(m)) {
+      // each edge once per face: draw the face's three edges as straight segments (short edges)
+      bool first = true;
+      for(SM_halfedge h : halfedges_around_face(halfedge(f, m), m)) {
+        const C z = copies[e].apply(C(get(uv, h).x(), get(uv, h).y()));
+        d << (first ? "M" : "L") << svg.X(z) << "," << svg.Y(z);
+        first = false;
+      }
+      d << "Z";
+    }
+    svg.path(os, d.str(), "none", e == 0 ? "#1d3557" : "#9aa7b8", e == 0 ? 0.25 : 0.15);
+  }
+  svg.path(os, svg.geodesic_path(corners, true), "none", "#c1121f", 1.5);
+  for(int i = 0; i < n; ++i)
+    svg.dot(os, corners[i], 6, HOT::internal::Poincare_svg::palette(tile.corner_cone(i), tile.number_of_cones(), 0.75, 1.0));
+  (void)landmarks;
+  svg.end(os);
+}
+
+int run_embed(int argc, char** argv)
+{
+  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report"});
+  const std::string mesh_path = opt.get("mesh"), cones_path = opt.get("cones"), out_path = opt.get("out");
+  HOT::Weight_type weights = HOT::Cotangent;
+  std::string weights_name = "cotan";
+  if(opt.has("weights")) {
+    weights_name = opt.get("weights");
+    if(weights_name == "cotan") weights = HOT::Cotangent;
+    else if(weights_name == "mvc") weights = HOT::Mean_value;
+    else if(weights_name == "uniform") weights = HOT::Uniform;
+    else throw Usage_error{"--weights must be cotan, mvc or uniform, got '" + weights_name + "'"};
+  }
+  std::string order_name = opt.has("order") ? opt.get("order") : std::string();
+  if(!order_name.empty() && order_name != "given" && order_name != "tsp")
+    throw Usage_error{"--order must be given or tsp, got '" + order_name + "'"};
+
+  Surface_mesh m;
+  HOT::internal::Check_result r = HOT::internal::read_mesh(mesh_path, m);
+  if(!r)
+    throw Failure{r.code, r.message};
+  std::vector<std::size_t> cone_indices;
+  r = HOT::internal::read_landmarks(cones_path, cone_indices);
+  if(!r)
+    throw Failure{r.code, r.message};
+
+  HOT::Orbifold_type type = HOT::Sphere_type;
+  if(opt.has("orbifold")) {
+    type = parse_orbifold(opt.get("orbifold"));
+  } else if(!HOT::internal::detect_orbifold_type(m, type)) {
+    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk; give --orbifold"};
+  }
+  if(order_name.empty())
+    order_name = (type == HOT::Sphere_type) ? "tsp" : "given";
+  std::vector<SM_vertex> landmarks;
+  r = HOT::internal::check_landmarks(m, cone_indices, type, landmarks);
+  if(!r)
+    throw Failure{r.code, r.message};
+
+  Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> uv =
+    m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  HOT::Embedding_statistics st;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    m, landmarks, uv,
+    HOT::parameters::embedding_statistics(
+      &st, HOT::parameters::landmark_order(order_name == "tsp" ? HOT::Tsp_order : HOT::Given_order,
+                                           HOT::parameters::weight_type(weights, HOT::parameters::orbifold_type(type)))));
+  if(ec != HOT::OK)
+    throw Failure{ec, st.message};
+
+  HOT::Orbifold_tile<> tile;
+  HOT::make_orbifold_tile(type, static_cast<int>(landmarks.size()), tile);
+
+  // vt: one per cut-mesh vertex: corners of a vertex with the same point share it
+  std::vector<std::vector<std::pair<Kernel::Point_2, std::size_t> > > vts(num_vertices(m));
+  std::vector<Kernel::Point_2> vt_points;
+  std::map<SM_halfedge, std::size_t> corner_vt;
+  for(SM_face f : faces(m))
+    for(SM_halfedge h : halfedges_around_face(halfedge(f, m), m)) {
+      const Kernel::Point_2 p = get(uv, h);
+      auto& list = vts[target(h, m).idx()];
+      std::size_t id = std::size_t(-1);
+      for(const auto& e : list)
+        if(e.first == p) { id = e.second; break; }
+      if(id == std::size_t(-1)) {
+        id = vt_points.size();
+        vt_points.push_back(p);
+        list.push_back(std::make_pair(p, id));
+      }
+      corner_vt[h] = id;
+    }
+
+  std::vector<std::string> written;
+  try {
+    write_file_atomically(out_path, [&](std::ostream& os) {
+      os.precision(17);
+      os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
+      for(SM_vertex v : vertices(m))
+        os << "v " << m.point(v) << "\n";
+      for(const auto& p : vt_points)
+        os << "vt " << p.x() << " " << p.y() << "\n";
+      for(SM_face f : faces(m)) {
+        os << "f";
+        for(SM_halfedge h : halfedges_around_face(halfedge(f, m), m))
+          os << " " << target(h, m).idx() + 1 << "/" << corner_vt[h] + 1;
+        os << "\n";
+      }
+    });
+    written.push_back(out_path);
+    if(opt.has("svg")) {
+      const std::string svg = opt.get("svg");
+      std::ostringstream title;
+      title << (type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold, " << landmarks.size() << " cones, "
+            << num_vertices(m) << " vertices, certified bijective";
+      write_file_atomically(svg, [&](std::ostream& os) { write_embedding_svg(os, m, uv, tile, landmarks, title.str()); });
+      written.push_back(svg);
+    }
+    if(opt.has("report")) {
+      const std::string rep = opt.get("report");
+      write_file_atomically(rep, [&](std::ostream& os) {
+        const HOT::Embedding_certificate& c = st.certificate;
+        os.precision(17);
+        os << "{\n  \"mesh\": \"" << json_escape(mesh_path) << "\",\n"
+           << "  \"vertices\": " << num_vertices(m) << ",\n  \"faces\": " << num_faces(m) << ",\n"
+           << "  \"cones\": [";
+        for(std::size_t i = 0; i < cone_indices.size(); ++i) os << (i ? ", " : "") << cone_indices[i];
+        os << "],\n  \"orbifold\": \"" << (type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n"
+           << "  \"weights\": \"" << weights_name << "\",\n  \"order\": \"" << order_name << "\",\n"
+           << "  \"landmark_order_used\": [";
+        for(std::size_t i = 0; i < st.landmark_order.size(); ++i)
+          os << (i ? ", " : "") << cone_indices[st.landmark_order[i]];
+        os << "],\n  \"landmark_order_reversed\": " << (st.landmark_order_reversed ? "true" : "false") << ",\n"
+           << "  \"cut_mesh_vertices\": " << st.number_of_vertices << ",\n"
+           << "  \"time_seconds\": {\"setup_and_cut\": " << st.time_setup << ", \"initialization\": "
+           << st.time_initialization << ", \"optimization\": " << st.time_optimization << ", \"certificate\": "
+           << st.time_certificate << "},\n"
+           << "  \"iterations\": " << st.iterations << ",\n  \"initial_energy\": " << st.initial_energy << ",\n"
+           << "  \"energy\": " << st.energy << ",\n  \"relative_gradient_norm\": " << st.relative_gradient_norm << ",\n"
+           << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
+           << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk
+           << ", \"flipped_faces\": " << c.flipped_faces << ", \"degenerate_faces\": " << c.degenerate_faces
+           << ", \"angle_sum_failures\": " << c.angle_sum_failures << ", \"max_angle_sum_error\": " << c.max_angle_sum_error
+           << ", \"twin_failures\": " << c.twin_failures << ", \"cone_failures\": " << c.cone_failures
+           << ", \"border_failures\": " << c.border_failures << ", \"total_area\": " << c.total_area
+           << ", \"expected_area\": " << c.expected_area << "}\n}\n";
+      });
+      written.push_back(rep);
+    }
+  } catch(...) {
+    for(const std::string& f : written)
+      std::remove(f.c_str());
+    throw;
+  }
+  std::cout << "embedded " << mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
+            << (type == HOT::Sphere_type ? "sphere" : "disk") << " type) in "
+            << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
+            << st.iterations << " Newton iterations, certified bijective; wrote " << out_path << std::endl;
+  return EXIT_SUCCESS;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -157,7 +382,12 @@ int main(int argc, char** argv)
     }
     if(command == "tile")
       return run_tile(argc, argv);
+    if(command == "embed")
+      return run_embed(argc, argv);
     throw Usage_error{"unknown command '" + command + "'"};
+  } catch(const Failure& e) {
+    std::cerr << "hyperbolic_orbifold_tutte: " << HOT::error_message(e.code) << ": " << e.message << std::endl;
+    return 3;
   } catch(const Usage_error& e) {
     std::cerr << "hyperbolic_orbifold_tutte: " << e.message << " (see --help)" << std::endl;
     return 2;

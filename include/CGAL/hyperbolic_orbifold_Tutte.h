@@ -6,11 +6,16 @@
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H
 
 /// \file hyperbolic_orbifold_Tutte.h
-/// Includes every public header of the package.
+/// Includes every public header of the package. Include your mesh type's header
+/// (e.g. `<CGAL/Surface_mesh.h>`) before this one, as for `CGAL::Seam_mesh`.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H

@@ -38,13 +38,18 @@ struct Embedding_statistics
   double initial_energy = 0;          ///< Dirichlet energy of the Euclidean Tutte initialisation
   double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
   double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
-  double relative_gradient_norm = 0;  ///< the same, relative to its initial value
+  double relative_gradient_norm = 0;  ///< the same, relative to the norm of the sums of the absolute values of the edges' contributions (the forces' imbalance; its floor is the rounding error)
   bool converged = false;
   int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
   bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
+  std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
   double time_setup = 0, time_initialization = 0, time_optimization = 0, time_certificate = 0;
+  double time_assembly = 0, time_factorization = 0, time_line_search = 0; ///< parts of `time_optimization`
   Embedding_certificate certificate;
   std::string message;                ///< one-line reason when the result is an error
+  /// mesh vertices named by the error, as indices in the order of `vertices(tm)`
+  /// (`ERROR_BOUNDARY_CHORD`: the ends of the offending edge)
+  std::vector<std::size_t> problem_vertices;
 };
 
 /*!
@@ -90,7 +95,7 @@ public:
     : type_(type), weights_(weights), epsilon_(epsilon), traits_(traits)
   {}
 
-  /// the relative gradient norm at which the solver stops (default \f$10^{-12}\f$)
+  /// the force imbalance (relative hyperbolic gradient norm, see `Embedding_statistics`) at which the solver stops (default \f$10^{-10}\f$)
   void set_gradient_tolerance(double t) { options_.gradient_tolerance = t; }
   void set_maximum_number_of_iterations(int n) { options_.max_iterations = n; }
   void set_verbose(bool v) { options_.verbose = v; }
@@ -134,8 +139,10 @@ public:
     std::vector<vertex_descriptor> cut_vertices;
     std::string msg;
     Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_index, cut_vertices, msg);
-    if(ec != OK)
+    if(ec != OK) {
+      st.problem_vertices.assign(P.problem_vertices.begin(), P.problem_vertices.end());
       return fail(ec, msg);
+    }
     st.number_of_vertices = P.n;
     st.number_of_variables = P.n_vars;
     st.landmark_order_reversed = P.landmark_order_reversed;
@@ -164,6 +171,9 @@ public:
     st.gradient_norm = ss.gradient;
     st.relative_gradient_norm = ss.relative_gradient;
     st.converged = ss.converged;
+    st.time_assembly = ss.time_assemble;
+    st.time_factorization = ss.time_factor;
+    st.time_line_search = ss.time_line_search;
     st.time_optimization = std::chrono::duration<double>(Clock::now() - t2).count();
 
     std::vector<internal::Complex<double> > uv(P.n);
@@ -172,6 +182,14 @@ public:
 
     auto t3 = Clock::now();
     st.certificate = internal::certify_flat(P, tile, uv);
+    if(!st.certificate.is_bijective() && st.certificate.points_outside_disk == 0 &&
+       (st.certificate.flipped_faces > 0 || st.certificate.degenerate_faces > 0)) {
+      // the paper's one-ring repair for vertices left outside the hull of their neighbours
+      st.repaired_vertices = internal::repair_one_rings(P, x);
+      for(int v = 0; v < P.n; ++v)
+        uv[v] = internal::position(P, x, v);
+      st.certificate = internal::certify_flat(P, tile, uv);
+    }
     st.time_certificate = std::chrono::duration<double>(Clock::now() - t3).count();
     if(ec != OK) {
       std::ostringstream os;

@@ -42,11 +42,12 @@ enum Error_code
   ERROR_NO_1_TO_1_MAPPING,       ///< the result failed the bijectivity certificate
   ERROR_POINT_NOT_LOCATED,       ///< a point could not be located in an embedding
   ERROR_READ_FAILED,             ///< an input file could not be read or parsed
-  ERROR_WRITE_FAILED             ///< an output file could not be written
+  ERROR_WRITE_FAILED,            ///< an output file could not be written
+  ERROR_BOUNDARY_CHORD           ///< disk type: an inner edge joins two boundary vertices of one tile side (e.g. a boundary ear), whose triangles would be degenerate
 };
 
 /// the number of values of `Error_code`
-constexpr int number_of_error_codes = ERROR_WRITE_FAILED + 1;
+constexpr int number_of_error_codes = ERROR_BOUNDARY_CHORD + 1;
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteEnums
@@ -75,7 +76,8 @@ inline const char* error_message(Error_code code)
     "The result is not certified bijective",
     "A point could not be located in the embedding",
     "An input file could not be read",
-    "An output file could not be written"
+    "An output file could not be written",
+    "An inner edge joins two boundary vertices that map to the same side of the disk orbifold's tile (e.g. a boundary ear); its triangles would be degenerate: put a landmark on the boundary between its ends, or split the triangle"
   };
   static_assert(sizeof(messages) / sizeof(messages[0]) == number_of_error_codes,
                 "error_message(): one message per Error_code value");

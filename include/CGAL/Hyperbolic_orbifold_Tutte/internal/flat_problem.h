@@ -49,6 +49,7 @@ struct Flat_problem
   std::vector<double> edge_weight;           // with seam copies halved (each base edge counts once)
   int n_vars = 0;
   bool landmark_order_reversed = false;      // disk type: given order was clockwise
+  std::vector<int> problem_vertices;         // base-mesh indices named by an error (e.g. a boundary chord)
 };
 
 // Position of vertex v (and derivatives) for the variable vector x.
@@ -342,6 +343,38 @@ Error_code build_flat_topology(const SeamMesh& mesh,
         P.line_D[v] = C(k1.x() - k0.x(), k1.y() - k0.y());
       }
   }
+  // Disk type: an inner edge (not on the border loop) whose two ends lie on one closed
+  // tile side bounds, with the border, a region that the embedding must flatten onto a
+  // straight Klein segment: its triangles would be degenerate. Refuse such input.
+  if(tile.type() == Disk_type) {
+    std::vector<int> loop_pos(P.n, -1);
+    for(int i = 0; i < L; ++i)
+      loop_pos[loop[i]] = i;
+    auto on_closed_side = [&](int v, int s) {
+      if(P.side[v] == s)
+        return true;
+      const int c = P.corner[v];
+      return c >= 0 && (c == tile.side_source(s) || c == tile.side_target(s));
+    };
+    for(const auto& e : P.edges) {
+      const int a = e[0], b = e[1];
+      if(loop_pos[a] < 0 || loop_pos[b] < 0)
+        continue;
+      const int d = std::abs(loop_pos[a] - loop_pos[b]);
+      if(d == 1 || d == L - 1)
+        continue; // a border edge
+      for(int s = 0; s < nc; ++s)
+        if(on_closed_side(a, s) && on_closed_side(b, s)) {
+          P.problem_vertices = {P.base[a], P.base[b]};
+          message = "the inner edge between mesh vertices " + std::to_string(P.base[a]) + " and " +
+                    std::to_string(P.base[b]) + " joins two boundary vertices of tile side " + std::to_string(s) +
+                    " (between landmarks " + std::to_string(s) + " and " + std::to_string((s + 1) % nc) +
+                    "): its triangles would be degenerate; put a landmark on the boundary between its ends, or split it";
+          return ERROR_BOUNDARY_CHORD;
+        }
+    }
+  }
+
   // variables
   P.n_vars = 0;
   for(int v = 0; v < P.n; ++v) {

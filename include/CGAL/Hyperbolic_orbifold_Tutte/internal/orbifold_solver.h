@@ -251,7 +251,7 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
 
 struct Solver_options
 {
-  double gradient_tolerance = 1e-12; // relative (hyperbolic) gradient norm
+  double gradient_tolerance = 1e-10; // force imbalance (relative hyperbolic gradient norm)
   int max_iterations = 200;
   bool verbose = false;
 };
@@ -309,6 +309,7 @@ public:
                   std::vector<Eigen::Triplet<double> >* H, bool project = true) const
   {
     g.assign(P_.n_vars, 0.0);
+    g_abs_.assign(P_.n_vars, 0.0);
     if(H)
       H->clear();
     double E = 0;
@@ -318,10 +319,13 @@ public:
       const int a = P_.edges[e][0], b = P_.edges[e][1];
       position_jet(P_, x, a, ja);
       position_jet(P_, x, b, jb);
-      if(ja.dim == 0 && jb.dim == 0)
-        continue;
-      squared_hyperbolic_distance(ja.z, jb.z, sd, H != nullptr);
       const double hw = 0.5 * P_.edge_weight[e];
+      if(ja.dim == 0 && jb.dim == 0) { // constant, but part of the energy that energy() returns
+        squared_hyperbolic_distance(ja.z, jb.z, sd, false);
+        E += hw * sd.f;
+        continue;
+      }
+      squared_hyperbolic_distance(ja.z, jb.z, sd, H != nullptr);
       E += hw * sd.f;
       const int oa = variable_owner(P_, a), ob = variable_owner(P_, b);
       // local variables: first ja.dim of a, then jb.dim of b
@@ -340,6 +344,7 @@ public:
       for(int i = 0; i < n; ++i) {
         lg[i] = hw * (sd.g[off[i]] * J[i][0] + sd.g[off[i] + 1] * J[i][1]);
         g[gi[i]] += lg[i];
+        g_abs_[gi[i]] += std::abs(lg[i]);
       }
       if(!H)
         continue;
@@ -369,24 +374,31 @@ public:
   }
 
   // hyperbolic (Riemannian) norm of the gradient: per vertex |grad| (1 - |z|^2) / 2,
-  // per boundary parameter |dE/dt| / |dz/dt|_hyperbolic
-  double hyperbolic_gradient_norm(const std::vector<double>& x, const std::vector<double>& g) const
+  // per boundary parameter |dE/dt| / |dz/dt|_hyperbolic. With `relative`, divided by the
+  // same norm of the sums of the absolute values of the edges' contributions (the
+  // "forces" on each vertex, from the last call of evaluate() at x): the remaining
+  // imbalance of the forces, a scale-free measure whose floor is the rounding error.
+  double hyperbolic_gradient_norm(const std::vector<double>& x, const std::vector<double>& g, bool relative = false) const
   {
-    double s = 0;
+    double s = 0, sa = 0;
     Position_jet j;
     for(int v = 0; v < P_.n; ++v) {
       if(P_.kind[v] == Free) {
-        const double gx = g[P_.var[v]], gy = g[P_.var[v] + 1];
-        const double r = (1 - (x[P_.var[v]] * x[P_.var[v]] + x[P_.var[v] + 1] * x[P_.var[v] + 1])) / 2;
-        s += (gx * gx + gy * gy) * r * r;
+        const int i = P_.var[v];
+        const double r = (1 - (x[i] * x[i] + x[i + 1] * x[i + 1])) / 2;
+        s += (g[i] * g[i] + g[i + 1] * g[i + 1]) * r * r;
+        sa += (g_abs_[i] * g_abs_[i] + g_abs_[i + 1] * g_abs_[i + 1]) * r * r;
       } else if(P_.kind[v] == On_line) {
         position_jet(P_, x, v, j);
         const double speed = abs(j.dz[0]) * 2 / (1 - norm(j.z));
-        const double gt = g[P_.var[v]] / speed;
+        const double gt = g[P_.var[v]] / speed, ga = g_abs_[P_.var[v]] / speed;
         s += gt * gt;
+        sa += ga * ga;
       }
     }
-    return std::sqrt(s);
+    if(!relative)
+      return std::sqrt(s);
+    return sa > 0 ? std::sqrt(s / sa) : 0.0;
   }
 
 private:
@@ -417,6 +429,7 @@ private:
   }
 
   const Flat_problem& P_;
+  mutable std::vector<double> g_abs_;
 };
 
 // Projected Newton with backtracking line search; the symbolic factorisation is computed once.
@@ -447,10 +460,21 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   st.initial_gradient = ev.hyperbolic_gradient_norm(x, g);
   const double g0 = st.initial_gradient > 0 ? st.initial_gradient : 1.0;
   double gnorm = st.initial_gradient;
+  double grel = ev.hyperbolic_gradient_norm(x, g, true);
   int stalls = 0;
+  double best_grel = grel;
+  int since_best = 0;
   for(int it = 0; it < opt.max_iterations; ++it) {
-    if(gnorm / g0 <= opt.gradient_tolerance)
+    if(grel <= opt.gradient_tolerance)
       break;
+    // Newton with the exact Hessian halves the imbalance at least every few steps until
+    // rounding stops it: ten steps without that mean the floor of double precision
+    if(grel < 0.5 * best_grel || !exact) {
+      best_grel = std::min(best_grel, grel);
+      since_best = 0;
+    } else if(++since_best > 10) {
+      break;
+    }
     auto t1 = Clock::now();
     H.setFromTriplets(trip.begin(), trip.end());
     double maxd = 0;
@@ -473,6 +497,11 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     Eigen::VectorXd p;
     if(ok) {
       p = solver.solve(-gv);
+      if(exact && solver.info() == Eigen::Success) {
+        // one step of iterative refinement: the exact Hessian can be badly conditioned
+        const Eigen::VectorXd r = -gv - H * p;
+        p += solver.solve(r);
+      }
       ok = solver.info() == Eigen::Success && p.allFinite() && gv.dot(p) < 0;
     }
     st.time_factor += std::chrono::duration<double>(Clock::now() - t1).count();
@@ -526,6 +555,7 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     const double gprev = gnorm;
     E = ev.evaluate(x, g, nullptr);
     gnorm = ev.hyperbolic_gradient_norm(x, g);
+    grel = ev.hyperbolic_gradient_norm(x, g, true);
     // switch to the exact Hessian near the solution
     if(!exact && gnorm / g0 < 1e-2 && alpha == 1.0)
       exact = true;
@@ -534,13 +564,78 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     (void)gprev;
     if(opt.verbose)
       std::cerr << "  newton " << it + 1 << (exact ? " (exact)" : " (projected)") << ": E = " << E
-                << "  |grad|/|grad0| = " << gnorm / g0 << "  step " << alpha << std::endl;
+                << "  |grad|/|grad0| = " << gnorm / g0 << "  force imbalance " << grel << "  step " << alpha << std::endl;
   }
   st.energy = E;
   st.gradient = gnorm;
-  st.relative_gradient = gnorm / g0;
+  st.relative_gradient = grel;
   st.converged = st.relative_gradient <= opt.gradient_tolerance;
   return st.converged ? OK : ERROR_NOT_CONVERGED;
+}
+
+// The paper's post-processing (section 5): every free vertex that is not inside the
+// hyperbolic convex hull of its neighbours (detected by a non-positive incident face, exact
+// test) is moved by a Mobius map to the origin with its one-ring, put at the Euclidean
+// weighted centroid of its neighbours there, and moved back; repeated until no face is
+// flipped or `max_sweeps` sweeps. Seam vertices see their neighbours across the seam
+// through the side pairing. Returns the number of vertex moves.
+inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int max_sweeps = 100)
+{
+  typedef Complex<double> C;
+  typedef Hyperbolic_isometry_2<double> Isometry;
+  typedef Poincare_disk_traits_2<> Traits;
+  const Traits::Hyperbolic_orientation_2 orient = Traits().hyperbolic_orientation_2_object();
+  // neighbours of each free vertex, with the map bringing them into its frame
+  struct Nb { int u; int via; double w; };  // via: the vertex of the edge standing for v (v or a twin copy)
+  std::vector<std::vector<Nb> > nb(P.n);
+  std::vector<std::vector<int> > vfaces(P.n);
+  auto owner = [&](int v) { return P.kind[v] == Transformed ? P.twin[v] : v; };
+  for(std::size_t e = 0; e < P.edges.size(); ++e) {
+    const int a = P.edges[e][0], b = P.edges[e][1];
+    if(P.kind[owner(a)] == Free) nb[owner(a)].push_back(Nb{b, a, P.edge_weight[e]});
+    if(P.kind[owner(b)] == Free) nb[owner(b)].push_back(Nb{a, b, P.edge_weight[e]});
+  }
+  for(std::size_t f = 0; f < P.faces.size(); ++f)
+    for(int i = 0; i < 3; ++i)
+      vfaces[owner(P.faces[f][i])].push_back(static_cast<int>(f));
+  auto face_ok = [&](int f) {
+    const C a = position(P, x, P.faces[f][0]), b = position(P, x, P.faces[f][1]), c = position(P, x, P.faces[f][2]);
+    return orient(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im), Traits::Point_2(c.re, c.im)) == POSITIVE;
+  };
+  int moves = 0;
+  for(int sweep = 0; sweep < max_sweeps; ++sweep) {
+    int moved = 0;
+    for(int v = 0; v < P.n; ++v) {
+      if(P.kind[v] != Free)
+        continue;
+      bool bad = false;
+      for(int f : vfaces[v])
+        if(!face_ok(f)) { bad = true; break; }
+      if(!bad)
+        continue;
+      const C z(x[P.var[v]], x[P.var[v] + 1]);
+      const Isometry to0 = Isometry::translation_to_origin(z);
+      C sum;
+      double wsum = 0;
+      for(const Nb& q : nb[v]) {
+        C zu = position(P, x, q.u);
+        if(q.via != v) // the edge is at a seam copy: bring the neighbour back through the pairing
+          zu = P.transform[q.via].inverse().apply(zu);
+        sum += q.w * to0.apply(zu);
+        wsum += q.w;
+      }
+      if(!(wsum > 0))
+        continue;
+      const C c = to0.inverse().apply(sum / wsum);
+      x[P.var[v]] = c.re;
+      x[P.var[v] + 1] = c.im;
+      ++moved;
+    }
+    moves += moved;
+    if(moved == 0)
+      break;
+  }
+  return moves;
 }
 
 } // namespace internal

@@ -1,0 +1,230 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
+
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <chrono>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+/// \file hyperbolic_orbifold_Tutte_embedding.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// check_landmarks() for vertex descriptors: a descriptor that is not a vertex of tm is
+// reported as out of range.
+template <class TriangleMesh>
+Check_result check_landmark_vertices(const TriangleMesh& tm,
+                                     const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+                                     Orbifold_type type)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  std::unordered_map<vertex_descriptor, std::size_t, boost::hash<vertex_descriptor> > index;
+  for(vertex_descriptor v : vertices(tm))
+    index.emplace(v, index.size());
+  std::vector<std::size_t> ids;
+  for(std::size_t i = 0; i < landmarks.size(); ++i) {
+    auto it = index.find(landmarks[i]);
+    ids.push_back(it == index.end() ? index.size() + i : it->second);
+  }
+  std::vector<vertex_descriptor> out;
+  return check_landmarks(tm, ids, type, out);
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+computes, in one call, the hyperbolic orbifold Tutte embedding of a triangle mesh with
+landmarks: checks the input, orders the landmarks, cuts a closed mesh open through
+them (shortest paths that are pairwise disjoint except at shared landmarks), builds
+the `Seam_mesh`, embeds with `Hyperbolic_orbifold_Tutte_parameterizer_3` and certifies
+the result.
+
+The output is a halfedge map of `tm`: for every halfedge `h` of a face, the Poincar&eacute;
+coordinates of the corner `target(h)` in `face(h)`. A vertex on the cut has a different
+point in the faces on each side of the cut; the two are related by a side pairing of the
+orbifold tile (`Orbifold_tile::side_pairing()`).
+
+\tparam TriangleMesh a model of `FaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`)
+\tparam HalfedgeUVMap a model of `WritablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key and `Point_2` of the
+        traits as value type
+\param tm a closed genus-0 triangle mesh (sphere type) or a triangulated disk (disk type)
+\param landmarks at least 5 distinct vertices; for the disk type, on the boundary, in
+       boundary order (either orientation)
+\param uvmap receives the coordinates; unchanged unless `OK` is returned
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map} \cgalParamDescription{the 3D points}
+    \cgalParamDefault{`get(CGAL::vertex_point, tm)`} \cgalParamNEnd
+  \cgalParamNBegin{orbifold_type} \cgalParamDescription{`Sphere_type` or `Disk_type`}
+    \cgalParamDefault{`Sphere_type` for a closed mesh, `Disk_type` for a mesh with one boundary loop} \cgalParamNEnd
+  \cgalParamNBegin{weight_type} \cgalParamDescription{`Cotangent`, `Mean_value` or `Uniform`}
+    \cgalParamDefault{`Cotangent`} \cgalParamNEnd
+  \cgalParamNBegin{weight_epsilon} \cgalParamDescription{lower clamp of cotangent weights}
+    \cgalParamDefault{`1e-6`} \cgalParamNEnd
+  \cgalParamNBegin{landmark_order} \cgalParamDescription{`Given_order` or `Tsp_order` (sphere type)}
+    \cgalParamDefault{`Given_order`} \cgalParamNEnd
+  \cgalParamNBegin{gradient_tolerance} \cgalParamDescription{relative gradient norm to reach}
+    \cgalParamDefault{`1e-10`} \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations} \cgalParamDescription{maximum number of Newton iterations}
+    \cgalParamDefault{`200`} \cgalParamNEnd
+  \cgalParamNBegin{verbose} \cgalParamDescription{prints the solver's progress on `std::cerr`}
+    \cgalParamDefault{`false`} \cgalParamNEnd
+  \cgalParamNBegin{embedding_statistics} \cgalParamDescription{an `Embedding_statistics*` filled on return}
+    \cgalParamDefault{none} \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\return `OK`, or the specific reason of the failure (see `Error_code`); details in
+        `Embedding_statistics::message`.
+*/
+template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code hyperbolic_orbifold_Tutte_embedding(
+  const TriangleMesh& tm,
+  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+  HalfedgeUVMap uvmap,
+  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+
+  Embedding_statistics local;
+  Embedding_statistics* stp = choose_parameter(get_parameter(np, internal_np::embedding_statistics),
+                                               static_cast<Embedding_statistics*>(nullptr));
+  Embedding_statistics& st = stp ? *stp : local;
+  st = Embedding_statistics();
+  auto fail = [&](Error_code ec, const std::string& msg) {
+    st.message = msg.empty() ? std::string(error_message(ec)) : msg;
+    return ec;
+  };
+  typedef std::chrono::steady_clock Clock;
+  const auto t0 = Clock::now();
+
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, tm));
+
+  // 1. the mesh and the orbifold type
+  Orbifold_type type = Sphere_type;
+  if(is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value) {
+    if(!internal::detect_orbifold_type(tm, type))
+      return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk (it has more than one boundary loop)");
+  } else {
+    type = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
+  }
+  {
+    const internal::Check_result r = internal::check_mesh(tm, vpm, type);
+    if(!r)
+      return fail(r.code, r.message);
+  }
+  // 2. the landmarks
+  {
+    const internal::Check_result r = internal::check_landmark_vertices(tm, landmarks, type);
+    if(!r)
+      return fail(r.code, r.message);
+  }
+  std::vector<vertex_descriptor> ordered = landmarks;
+  st.landmark_order.resize(landmarks.size());
+  for(std::size_t i = 0; i < landmarks.size(); ++i)
+    st.landmark_order[i] = i;
+  const Landmark_order order = choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order);
+  if(order == Tsp_order && type == Sphere_type) {
+    const std::vector<std::size_t> perm = internal::compute_tsp_landmark_order(tm, landmarks, vpm);
+    if(perm.size() != landmarks.size())
+      return fail(ERROR_CUT_FAILED, "the landmark tour could not be computed");
+    for(std::size_t i = 0; i < perm.size(); ++i)
+      ordered[i] = landmarks[perm[i]];
+    st.landmark_order = perm;
+  }
+
+  // 3. the cut and the seam mesh (seams on edges and vertices held in hash maps, so that
+  //    the input mesh is not modified and may be const)
+  typedef std::unordered_map<edge_descriptor, bool, boost::hash<edge_descriptor> > Edge_flags;
+  typedef std::unordered_map<vertex_descriptor, bool, boost::hash<vertex_descriptor> > Vertex_flags;
+  Edge_flags edge_flags;
+  Vertex_flags vertex_flags;
+  typedef boost::associative_property_map<Edge_flags> SEM;
+  typedef boost::associative_property_map<Vertex_flags> SVM;
+  for(edge_descriptor e : edges(tm))
+    edge_flags.emplace(e, false);
+  for(vertex_descriptor v : vertices(tm))
+    vertex_flags.emplace(v, false);
+  typedef CGAL::Seam_mesh<TriangleMesh, SEM, SVM> Mesh;
+  Mesh mesh(tm, SEM(edge_flags), SVM(vertex_flags));
+  if(type == Sphere_type) {
+    const internal::Cut_result<TriangleMesh> cut = internal::compute_cut_through_landmarks(tm, ordered, vpm);
+    if(!cut.ok)
+      return fail(ERROR_CUT_FAILED, cut.message);
+    if(!internal::add_cut_to_seam_mesh(mesh, tm, cut))
+      return fail(ERROR_CUT_FAILED, "the cut could not be marked on the seam mesh");
+  }
+  typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
+  bool found = false;
+  for(auto h : halfedges(mesh))
+    if(is_border(h, mesh)) {
+      bhd = h;
+      found = true;
+      break;
+    }
+  if(!found)
+    return fail(ERROR_CUT_FAILED, "the cut mesh has no border");
+  const double time_cut = std::chrono::duration<double>(Clock::now() - t0).count();
+
+  // 4. the embedding
+  typedef Hyperbolic_orbifold_Tutte_parameterizer_3<Mesh> Parameterizer;
+  typedef typename Parameterizer::Point_2 Point_2;
+  Parameterizer parameterizer(type, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
+                              choose_parameter(get_parameter(np, internal_np::weight_epsilon), 1e-6));
+  parameterizer.set_gradient_tolerance(choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-10));
+  parameterizer.set_maximum_number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200));
+  parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
+  std::unordered_map<halfedge_descriptor, Point_2, boost::hash<halfedge_descriptor> > canonical;
+  std::vector<std::size_t> order_used = st.landmark_order;
+  const Error_code ec =
+    parameterizer.parameterize(mesh, bhd, ordered, boost::associative_property_map<decltype(canonical)>(canonical), &st);
+  st.landmark_order = order_used;
+  st.time_setup += time_cut;
+  if(ec != OK)
+    return ec;
+
+  // 5. corner coordinates
+  for(face_descriptor f : faces(tm))
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
+      const typename boost::graph_traits<Mesh>::halfedge_descriptor sh(h, false);
+      const auto vd = target(sh, mesh);
+      put(uvmap, h, canonical.at(vd.hd.tmhd));
+    }
+  return OK;
+}
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_H

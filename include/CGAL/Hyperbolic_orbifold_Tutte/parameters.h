@@ -1,0 +1,73 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_PARAMETERS_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+/// \file parameters.h
+/// The package's own named parameters. CGAL's list of chainable parameters is closed, so
+/// ours combine by nesting: each takes an optional second argument, the parameters to
+/// append to: `HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::weight_type(HOT::Mean_value))`.
+/// CGAL's own parameters chain after ours as members:
+/// `HOT::parameters::weight_type(HOT::Uniform).verbose(true).number_of_iterations(50)`.
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteEnums
+How the landmarks are ordered before cutting a sphere-type mesh p1 -> p2 -> ... -> pk.
+*/
+enum Landmark_order
+{
+  Given_order, ///< as given
+  Tsp_order    ///< the paper's section 7: shortest closed tour over geodesic distances, cut at its longest edge
+};
+
+namespace internal_np {
+enum orbifold_type_t { orbifold_type };
+enum weight_type_t { weight_type };
+enum weight_epsilon_t { weight_epsilon };
+enum landmark_order_t { landmark_order };
+enum gradient_tolerance_t { gradient_tolerance };
+enum embedding_statistics_t { embedding_statistics };
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_HOT_NAMED_PARAMETER(NAME)                                                                   \
+  template <class T>                                                                                     \
+  Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& t)                                   \
+  {                                                                                                      \
+    return Named_function_parameters<T, internal_np::NAME##_t>(t);                                       \
+  }                                                                                                      \
+  template <class T, class T2, class Tag2, class Base2>                                                  \
+  Named_function_parameters<T, internal_np::NAME##_t, Named_function_parameters<T2, Tag2, Base2> >       \
+  NAME(const T& t, const Named_function_parameters<T2, Tag2, Base2>& np)                                 \
+  {                                                                                                      \
+    return Named_function_parameters<T, internal_np::NAME##_t, Named_function_parameters<T2, Tag2, Base2> >(t, np); \
+  }
+
+/// `Orbifold_type`: `Sphere_type` or `Disk_type` (default: from the mesh's topology)
+CGAL_HOT_NAMED_PARAMETER(orbifold_type)
+/// `Weight_type` (default `Cotangent`)
+CGAL_HOT_NAMED_PARAMETER(weight_type)
+/// `double`: lower clamp of cotangent weights (default \f$10^{-6}\f$)
+CGAL_HOT_NAMED_PARAMETER(weight_epsilon)
+/// `Landmark_order` (default `Given_order`)
+CGAL_HOT_NAMED_PARAMETER(landmark_order)
+/// `double`: force imbalance (relative hyperbolic gradient norm) at which the solver stops (default \f$10^{-10}\f$)
+CGAL_HOT_NAMED_PARAMETER(gradient_tolerance)
+/// `Embedding_statistics*`: receives statistics, timings and the certificate
+CGAL_HOT_NAMED_PARAMETER(embedding_statistics)
+
+#undef CGAL_HOT_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_PARAMETERS_H

@@ -1,0 +1,449 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The hyperbolic orbifold Tutte parameterizer: derivatives checked by finite
+// differences, certified embeddings of real meshes, the critical point's defining
+// property (every vertex is the weighted hyperbolic centre of mass of its
+// neighbours), and the paper's Figure 8 comparison.
+
+#include "test_harness.h"
+#include "test_common_meshes.h"
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Random.h>
+
+#include <map>
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+using namespace hot_test;
+typedef HOT::internal::Complex<double> C;
+typedef HOT::Hyperbolic_isometry_2<double> Isometry;
+typedef K::Point_2 Point_2;
+
+static CGAL::Random rng(77);
+
+static C random_disk_point(double rmax)
+{
+  const double r = rmax * std::sqrt(rng.get_double(0, 1)), t = rng.get_double(0, 2 * CGAL_PI);
+  return C(r * std::cos(t), r * std::sin(t));
+}
+
+static double sqdist(const C& a, const C& b)
+{
+  HOT::internal::Squared_distance_derivatives sd;
+  HOT::internal::squared_hyperbolic_distance(a, b, sd, false);
+  return sd.f;
+}
+
+TEST_CASE(squared_distance_derivatives_by_finite_differences)
+{
+  for(int trial = 0; trial < 400; ++trial) {
+    const double rmax = trial < 200 ? 0.9 : 0.999;
+    C z = random_disk_point(rmax), w = random_disk_point(rmax);
+    if(trial % 10 == 0) w = z + C(1e-3 * rng.get_double(-1, 1), 1e-3 * rng.get_double(-1, 1)); // short edges
+    HOT::internal::Squared_distance_derivatives sd;
+    HOT::internal::squared_hyperbolic_distance(z, w, sd, true);
+    // the value is eq. (6) squared
+    const double cosh_d = 1 + 2 * HOT::internal::norm(z - w) / ((1 - HOT::internal::norm(z)) * (1 - HOT::internal::norm(w)));
+    if(cosh_d > 1.001)
+      CHECK_NEAR(sd.d, std::acosh(cosh_d), 1e-9 * (1 + sd.d));
+    double x[4] = {z.re, z.im, w.re, w.im};
+    const double scale = std::min(1 - HOT::internal::norm(z), 1 - HOT::internal::norm(w));
+    const double h = 1e-6 * scale;
+    auto f = [&](const double* y) { return sqdist(C(y[0], y[1]), C(y[2], y[3])); };
+    for(int i = 0; i < 4; ++i) {
+      double xp[4], xm[4];
+      std::copy(x, x + 4, xp);
+      std::copy(x, x + 4, xm);
+      xp[i] += h;
+      xm[i] -= h;
+      const double fd = (f(xp) - f(xm)) / (2 * h);
+      CHECK_NEAR(sd.g[i], fd, 1e-5 * (std::abs(fd) + 1) / scale);
+      HOT::internal::Squared_distance_derivatives sp, sm;
+      HOT::internal::squared_hyperbolic_distance(C(xp[0], xp[1]), C(xp[2], xp[3]), sp, false);
+      HOT::internal::squared_hyperbolic_distance(C(xm[0], xm[1]), C(xm[2], xm[3]), sm, false);
+      for(int j = 0; j < 4; ++j) {
+        const double fdh = (sp.g[j] - sm.g[j]) / (2 * h);
+        CHECK_NEAR(sd.H[i][j], fdh, 1e-4 * (std::abs(fdh) + 1) / (scale * scale));
+      }
+    }
+  }
+}
+
+TEST_CASE(position_jets_by_finite_differences)
+{
+  for(int trial = 0; trial < 200; ++trial) {
+    // z = m(x) for a Mobius map m
+    const Isometry m = Isometry::translation_from_origin(random_disk_point(0.9)) * Isometry::rotation(rng.get_double(0, 6));
+    const C x = random_disk_point(0.9);
+    HOT::internal::Position_jet jet;
+    HOT::internal::transformed_jet(m, x, jet);
+    const double h = 1e-6;
+    const C e[2] = {C(1, 0), C(0, 1)};
+    for(int i = 0; i < 2; ++i) {
+      const C fd = (m.apply(x + h * e[i]) - m.apply(x - h * e[i])) / (2 * h);
+      CHECK(HOT::internal::abs(fd - jet.dz[i]) < 1e-6 * (1 + HOT::internal::abs(fd)));
+      HOT::internal::Position_jet jp, jm;
+      HOT::internal::transformed_jet(m, x + h * e[i], jp);
+      HOT::internal::transformed_jet(m, x - h * e[i], jm);
+      for(int j = 0; j < 2; ++j) {
+        const C fdd = (jp.dz[j] - jm.dz[j]) / (2 * h);
+        CHECK(HOT::internal::abs(fdd - jet.ddz[i][j]) < 1e-5 * (1 + HOT::internal::abs(fdd)));
+      }
+    }
+    // the Klein model: z(t) = Poincare(k0 + t D), straight in Klein
+    const C k0 = random_disk_point(0.7), D = random_disk_point(0.2);
+    const double t = rng.get_double(0, 1);
+    HOT::internal::on_line_jet(k0, D, t, jet);
+    auto zt = [&](double s) {
+      const C k = k0 + s * D;
+      return k / (1 + std::sqrt(1 - HOT::internal::norm(k)));
+    };
+    CHECK(HOT::internal::abs(jet.z - zt(t)) < 1e-15);
+    const C fd = (zt(t + h) - zt(t - h)) / (2 * h);
+    CHECK(HOT::internal::abs(fd - jet.dz[0]) < 1e-7);
+    const C fdd = (zt(t + h) - 2.0 * zt(t) + zt(t - h)) / (h * h);
+    CHECK(HOT::internal::abs(fdd - jet.ddz[0][0]) < 1e-3);
+  }
+}
+
+// ---- embeddings of real meshes ----------------------------------------------
+
+// the corner uv map: Poincare point of corner target(h) in face(h)
+typedef Mesh::Property_map<halfedge_descriptor, Point_2> UV_map;
+
+struct Embedding_run
+{
+  HOT::Error_code ec;
+  HOT::Embedding_statistics st;
+};
+
+static Embedding_run embed(Mesh& m, const std::vector<vertex_descriptor>& lm, HOT::Weight_type w,
+                           HOT::Landmark_order order = HOT::Given_order)
+{
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+  Embedding_run r;
+  r.ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    m, lm, uv, HOT::parameters::embedding_statistics(&r.st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(w))));
+  return r;
+}
+
+// Every mesh vertex is the weighted hyperbolic centre of mass of its neighbours:
+// sum_j w_ij log_{z_i}(z_j) = 0, computed with Mobius maps (independent of the solver's
+// derivatives). Checked at interior vertices of the cut (all corners of a vertex have one point).
+static double worst_centre_of_mass_defect(const Mesh& m, const UV_map& uv, HOT::Weight_type w,
+                                          const std::vector<vertex_descriptor>& landmarks)
+{
+  double worst = 0;
+  for(vertex_descriptor v : vertices(m)) {
+    if(std::find(landmarks.begin(), landmarks.end(), v) != landmarks.end())
+      continue; // cones are fixed: not a centre of mass
+    // skip vertices whose corners do not share one point (cut vertices, cones)
+    bool single = true;
+    C z0;
+    bool first = true;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m)) {
+      if(is_border(h, m)) { single = false; break; }
+      const C z(get(uv, h).x(), get(uv, h).y());
+      if(first) { z0 = z; first = false; }
+      else if(HOT::internal::abs(z - z0) > 1e-14) { single = false; break; }
+    }
+    if(!single) continue;
+    const Isometry to0 = Isometry::translation_to_origin(z0);
+    C sum;
+    double scale = 0;
+    // what double precision can resolve here: a rounding of 1e-16 in a point z moves it by
+    // about 2e-16 / (1 - |z|^2) hyperbolic units, which is relative to the edge's length
+    double resolution = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m)) {
+      // neighbour source(h) as seen in face(h): the corner before v in that face
+      const halfedge_descriptor hp = prev(h, m);
+      const C zj(get(uv, hp).x(), get(uv, hp).y());
+      const C u = to0.apply(zj);
+      const double r = HOT::internal::abs(u);
+      const double d = 2 * std::atanh(r);
+      const double A = std::min(1 - HOT::internal::norm(z0), 1 - HOT::internal::norm(zj));
+      resolution = std::max(resolution, 4e-16 / (A * d));
+      double wij = 1;
+      if(w == HOT::Cotangent) {
+        auto cot = [&](halfedge_descriptor g) { // cot of the angle opposite edge g in face(g)
+          const auto& a = m.point(source(g, m));
+          const auto& b = m.point(target(g, m));
+          const auto& c = m.point(target(next(g, m), m));
+          const K::Vector_3 u1 = a - c, u2 = b - c;
+          return (u1 * u2) / std::sqrt(CGAL::cross_product(u1, u2).squared_length());
+        };
+        wij = 0.5 * (cot(h) + cot(opposite(h, m)));
+        wij = std::max(wij, 1e-6);
+      }
+      sum += (wij * d / r) * u; // log at the origin: direction u, length d
+      scale += wij * d;
+    }
+    worst = std::max(worst, HOT::internal::abs(sum) / scale / (1e-8 + 1e3 * resolution));
+  }
+  return worst;
+}
+
+static void check_sphere_mesh(const std::string& name, const std::vector<int>& ks, HOT::Weight_type w)
+{
+  Mesh m;
+  CHECK_MSG(read_demo_mesh(name, m), "cannot read " << name << " from " << data_dir());
+  if(num_vertices(m) == 0) return;
+  for(int k : ks) {
+    const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, k, k * 7);
+    const Embedding_run r = embed(m, lm, w, HOT::Tsp_order);
+    CHECK_MSG(r.ec == HOT::OK, name << " k=" << k << ": " << r.st.message);
+    CHECK_MSG(r.st.certificate.is_bijective(), name << " k=" << k << ": " << r.st.certificate);
+    CHECK_MSG(r.st.relative_gradient_norm < 1e-10, name << " k=" << k << " relative gradient " << r.st.relative_gradient_norm);
+    // Gauss-Bonnet: the triangles' hyperbolic areas add up to (k - 4) pi
+    CHECK_NEAR(r.st.certificate.total_area, (k - 4) * CGAL_PI, 1e-6 * k);
+    if(r.ec == HOT::OK && w != HOT::Mean_value) {
+      const double defect = worst_centre_of_mass_defect(m, m.property_map<halfedge_descriptor, Point_2>("h:uv").first, w, lm);
+      // defect in units of (1e-8 + 1000 x what doubles resolve at that vertex)
+      CHECK_MSG(defect < 1, name << " k=" << k << " centre-of-mass defect " << defect);
+    }
+    std::cout << "  " << name << " k=" << k << ": " << r.st.iterations << " iterations, relative gradient "
+              << r.st.relative_gradient_norm << ", " << r.st.time_optimization << " s" << std::endl;
+    UV_map uvm = m.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    m.remove_property_map(uvm);
+  }
+}
+
+TEST_CASE(sphere_hand_all_weights)
+{
+  check_sphere_mesh("hand", {5, 7, 12, 23}, HOT::Cotangent);
+  check_sphere_mesh("hand", {6, 9}, HOT::Mean_value);
+  check_sphere_mesh("hand", {5, 8}, HOT::Uniform);
+}
+TEST_CASE(sphere_triceratops) { check_sphere_mesh("triceratops", {5, 7, 16, 50}, HOT::Cotangent); }
+TEST_CASE(sphere_homer) { check_sphere_mesh("homer", {7, 11}, HOT::Cotangent); check_sphere_mesh("homer", {6}, HOT::Uniform); }
+TEST_CASE(sphere_camel) { check_sphere_mesh("camel", {5, 9}, HOT::Cotangent); check_sphere_mesh("camel", {7}, HOT::Mean_value); }
+TEST_CASE(sphere_bear) { check_sphere_mesh("bear", {7}, HOT::Cotangent); }
+
+static void check_disk_mesh(const std::string& name, const std::vector<int>& ks, HOT::Weight_type w)
+{
+  Mesh m;
+  CHECK_MSG(read_demo_mesh(name, m), "cannot read " << name);
+  if(num_vertices(m) == 0) return;
+  for(int k : ks) {
+    // Landmarks spread by arc length. Where a boundary ear or chord would be flattened onto
+    // one tile side the input is refused with ERROR_BOUNDARY_CHORD naming the edge; then,
+    // as a user would, check the claim and move the nearest landmark onto the edge's end.
+    std::vector<vertex_descriptor> lm = boundary_landmarks(m, k, 0.3);
+    Embedding_run r;
+    for(int attempt = 0; attempt < 10; ++attempt) {
+      r = embed(m, lm, w);
+      if(r.ec != HOT::ERROR_BOUNDARY_CHORD)
+        break;
+      CHECK(r.st.problem_vertices.size() == 2);
+      if(r.st.problem_vertices.size() != 2)
+        break;
+      const vertex_descriptor a(r.st.problem_vertices[0]), b(r.st.problem_vertices[1]);
+      // the claim: a and b are boundary vertices joined by an inner edge
+      const auto e = edge(a, b, m);
+      CHECK(is_border(a, m) && is_border(b, m) && e.second && !is_border(e.first, m));
+      // the boundary vertex halfway along the shorter boundary path from a to b
+      std::vector<vertex_descriptor> loop;
+      {
+        halfedge_descriptor h0;
+        for(halfedge_descriptor h : halfedges(m))
+          if(is_border(h, m)) { h0 = h; break; }
+        halfedge_descriptor h = h0;
+        do { loop.push_back(target(h, m)); h = next(h, m); } while(h != h0);
+      }
+      const long nl = long(loop.size());
+      const long ia = long(std::find(loop.begin(), loop.end(), a) - loop.begin());
+      const long ib = long(std::find(loop.begin(), loop.end(), b) - loop.begin());
+      CHECK(ia < nl && ib < nl);
+      if(ia >= nl || ib >= nl) break;
+      std::vector<vertex_descriptor> path;
+      const long fwd = (ib - ia + nl) % nl, bwd = (ia - ib + nl) % nl;
+      for(long i = 1; i <= std::min(fwd, bwd); ++i)
+        path.push_back(loop[((fwd <= bwd) ? ia + i : ia - i + nl) % nl]);
+      CHECK(path.size() >= 2 && path.back() == b);
+      if(path.size() < 2) break;
+      const vertex_descriptor mid = path[(path.size() - 1) / 2];
+      std::size_t nearest = 0;
+      double best = 1e300;
+      for(std::size_t i = 0; i < lm.size(); ++i) {
+        const double d = CGAL::squared_distance(m.point(lm[i]), m.point(mid));
+        if(d < best) { best = d; nearest = i; }
+      }
+      std::cout << "  " << name << " k=" << k << ": boundary chord " << a.idx() << "-" << b.idx()
+                << " refused; landmark " << nearest << " moved onto " << mid.idx() << ", between them" << std::endl;
+      lm[nearest] = mid;
+    }
+    CHECK_MSG(r.ec == HOT::OK, name << " k=" << k << ": " << r.st.message);
+    CHECK_MSG(r.st.certificate.is_bijective(), name << " k=" << k << ": " << r.st.certificate);
+    CHECK(r.st.relative_gradient_norm < 1e-10);
+    CHECK_NEAR(r.st.certificate.total_area, (k - 4) * CGAL_PI / 2, 1e-6 * k);
+    // the other orientation of the same landmarks is accepted too
+    std::vector<vertex_descriptor> rev(lm.rbegin(), lm.rend());
+    std::rotate(rev.begin(), rev.end() - 1, rev.end());
+    const Embedding_run r2 = embed(m, rev, w);
+    CHECK_MSG(r2.ec == HOT::OK, name << " k=" << k << " reversed: " << r2.st.message);
+    CHECK(r2.st.landmark_order_reversed != r.st.landmark_order_reversed);
+    // same landmarks, same cyclic positions: the same energy
+    CHECK_NEAR(r2.st.energy, r.st.energy, 1e-9 * r.st.energy);
+    std::cout << "  " << name << " k=" << k << ": " << r.st.iterations << " iterations, " << r.st.time_optimization
+              << " s" << std::endl;
+  }
+}
+
+TEST_CASE(disk_mushroom_all_weights)
+{
+  check_disk_mesh("mushroom", {5, 8}, HOT::Cotangent);
+  check_disk_mesh("mushroom", {6}, HOT::Mean_value);
+  check_disk_mesh("mushroom", {5}, HOT::Uniform);
+}
+TEST_CASE(disk_nefertiti) { check_disk_mesh("nefertiti", {5, 7, 12}, HOT::Cotangent); }
+TEST_CASE(disk_lion_head) { check_disk_mesh("lion-head", {5, 10}, HOT::Cotangent); }
+TEST_CASE(disk_mannequin_devil) { check_disk_mesh("mannequin-devil", {6}, HOT::Cotangent); }
+
+// ---- synthetic disks: boundary ears, Figure 8, the one-ring repair ------------
+
+// an n x n grid of the unit square, every cell split by the diagonal (i,j)-(i+1,j+1):
+// the corners (n-1, 0) and (0, n-1) are ears (degree-2 boundary vertices)
+static Mesh grid_mesh(int n, double bump = 0.0)
+{
+  Mesh m;
+  std::vector<vertex_descriptor> v;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const double x = double(i) / (n - 1), y = double(j) / (n - 1);
+      v.push_back(m.add_vertex(K::Point_3(x, y, bump * std::exp(-20 * ((x - .5) * (x - .5) + (y - .5) * (y - .5))))));
+    }
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      const vertex_descriptor a = v[j * n + i], b = v[j * n + i + 1], c = v[(j + 1) * n + i + 1], d = v[(j + 1) * n + i];
+      m.add_face(a, b, c);
+      m.add_face(a, c, d);
+    }
+  return m;
+}
+
+TEST_CASE(disk_boundary_ear_is_refused_or_used)
+{
+  const int n = 8;
+  Mesh m = grid_mesh(n, 0.3);
+  auto V = [&](int i, int j) { return vertex_descriptor(j * n + i); };
+  // counterclockwise landmarks avoiding the ear (n-1, 0): it lies between landmarks 0 and 1
+  std::vector<vertex_descriptor> lm = {V(2, 0), V(n - 1, 3), V(n - 1, n - 1), V(2, n - 1), V(0, 3)};
+  Embedding_run r = embed(m, lm, HOT::Cotangent);
+  CHECK_MSG(r.ec == HOT::ERROR_BOUNDARY_CHORD, r.st.message);
+  CHECK(r.st.message.find(std::to_string(V(n - 2, 0).idx())) != std::string::npos);
+  // with a landmark at the ear's tip (and one at the other ear) the embedding is certified
+  lm = {V(2, 0), V(n - 1, 0), V(n - 1, 4), V(2, n - 1), V(0, n - 1), V(0, 3)};
+  r = embed(m, lm, HOT::Cotangent);
+  CHECK_MSG(r.ec == HOT::OK, r.st.message);
+  CHECK(r.st.certificate.is_bijective());
+}
+
+// The internal pipeline on a disk mesh, to compare with a fixed boundary.
+struct Disk_problem
+{
+  typedef CGAL::Seam_mesh<Mesh, Mesh::Property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>,
+                          Mesh::Property_map<vertex_descriptor, bool> > SMesh;
+  HOT::internal::Flat_problem P;
+  HOT::Orbifold_tile<> tile;
+  std::vector<K::Point_3> pts;
+  std::vector<double> x;
+};
+
+static bool make_disk_problem(Mesh& m, const std::vector<vertex_descriptor>& lm, Disk_problem& D)
+{
+  auto sem = m.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:s", false).first;
+  auto svm = m.add_property_map<vertex_descriptor, bool>("v:s", false).first;
+  Disk_problem::SMesh sm(m, sem, svm);
+  boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
+  for(auto h : halfedges(sm))
+    if(is_border(h, sm)) { bhd = h; break; }
+  HOT::make_orbifold_tile(HOT::Disk_type, int(lm.size()), D.tile);
+  std::unordered_map<vertex_descriptor, int> bi;
+  std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
+  std::string msg;
+  if(HOT::internal::build_flat_topology(sm, bhd, lm, D.tile, D.P, bi, cv, msg) != HOT::OK)
+    return false;
+  D.pts.resize(D.P.n_base);
+  for(auto& e : bi)
+    D.pts[e.second] = m.point(e.first);
+  HOT::internal::compute_edge_weights(D.P, D.pts, HOT::Cotangent, 1e-6);
+  return HOT::internal::initialize_embedding(D.P, D.tile, D.pts, D.x) == HOT::OK;
+}
+
+TEST_CASE(disk_orbifold_energy_below_fixed_boundary_figure_8)
+{
+  // The paper's Figure 8: letting boundary vertices slide on the tile's sides (disk
+  // orbifold) gives a lower Dirichlet energy than fixing them (hyperbolic Tutte onto the
+  // same convex polygon), for the same mesh, weights and corners.
+  for(const std::string name : {"mushroom", "nefertiti", "grid"}) {
+    Mesh m;
+    if(name == "grid") m = grid_mesh(12, 0.5);
+    else CHECK(read_demo_mesh(name, m));
+    std::vector<vertex_descriptor> lm = (name == "grid") ? std::vector<vertex_descriptor>{vertex_descriptor(0), vertex_descriptor(11), vertex_descriptor(143), vertex_descriptor(138), vertex_descriptor(132)}
+                                                          : boundary_landmarks(m, 6, 0.3);
+    Disk_problem D;
+    CHECK_MSG(make_disk_problem(m, lm, D), name);
+    HOT::internal::Flat_problem F = D.P; // fixed boundary: the On_line vertices frozen at the initial positions
+    std::vector<double> xf;
+    {
+      std::vector<HOT::internal::Complex<double> > z0(F.n);
+      for(int v = 0; v < F.n; ++v) z0[v] = HOT::internal::position(D.P, D.x, v);
+      int nv = 0;
+      for(int v = 0; v < F.n; ++v) {
+        if(F.kind[v] == HOT::internal::On_line) { F.kind[v] = HOT::internal::Fixed; F.fixed[v] = z0[v]; }
+        if(F.kind[v] == HOT::internal::Free) { F.var[v] = nv; nv += 2; xf.push_back(z0[v].re); xf.push_back(z0[v].im); }
+      }
+      F.n_vars = nv;
+    }
+    HOT::internal::Solver_options opt;
+    opt.verbose = std::getenv("HOT_VERBOSE") != nullptr;
+    HOT::internal::Solver_statistics s1, s2;
+    std::vector<double> x = D.x;
+    CHECK(HOT::internal::minimize_energy(D.P, x, opt, s1) == HOT::OK);
+    const HOT::Error_code ec2 = HOT::internal::minimize_energy(F, xf, opt, s2);
+    CHECK_MSG(ec2 == HOT::OK, HOT::error_message(ec2) << " after " << s2.iterations << " iterations, imbalance " << s2.relative_gradient);
+    std::cout << "  " << name << ": disk orbifold energy " << s1.energy << " < fixed boundary " << s2.energy << std::endl;
+    CHECK(s1.energy < s2.energy);
+    // both are bijective (Theorems 1 and 2)
+    std::vector<HOT::internal::Complex<double> > u1(D.P.n), u2(F.n);
+    for(int v = 0; v < D.P.n; ++v) { u1[v] = HOT::internal::position(D.P, x, v); u2[v] = HOT::internal::position(F, xf, v); }
+    const HOT::Embedding_certificate c1 = HOT::internal::certify_flat(D.P, D.tile, u1);
+    CHECK_MSG(c1.is_bijective(), c1);
+    const HOT::Embedding_certificate c2 = HOT::internal::certify_flat(F, D.tile, u2);
+    CHECK_MSG(c2.flipped_faces == 0 && c2.degenerate_faces == 0 && c2.angle_sum_failures == 0, c2);
+  }
+}
+
+TEST_CASE(one_ring_repair)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("mushroom", m));
+  Disk_problem D;
+  CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
+  HOT::internal::Solver_options opt;
+  HOT::internal::Solver_statistics st;
+  CHECK(HOT::internal::minimize_energy(D.P, D.x, opt, st) == HOT::OK);
+  // throw 20 interior vertices out of their one-rings (to the reflection of a neighbour)
+  int thrown = 0;
+  for(std::size_t e = 0; e < D.P.edges.size() && thrown < 20; e += 97) {
+    const int a = D.P.edges[e][0], b = D.P.edges[e][1];
+    if(D.P.kind[a] != HOT::internal::Free) continue;
+    const C za = HOT::internal::position(D.P, D.x, a), zb = HOT::internal::position(D.P, D.x, b);
+    const C far = Isometry::rotation_about(zb, CGAL_PI).apply(za); // beyond the neighbour
+    D.x[D.P.var[a]] = far.re;
+    D.x[D.P.var[a] + 1] = far.im;
+    ++thrown;
+  }
+  std::vector<C> uv(D.P.n);
+  for(int v = 0; v < D.P.n; ++v) uv[v] = HOT::internal::position(D.P, D.x, v);
+  const HOT::Embedding_certificate before = HOT::internal::certify_flat(D.P, D.tile, uv);
+  CHECK_MSG(before.flipped_faces > 0, before); // the certificate sees it
+  const int moves = HOT::internal::repair_one_rings(D.P, D.x);
+  for(int v = 0; v < D.P.n; ++v) uv[v] = HOT::internal::position(D.P, D.x, v);
+  const HOT::Embedding_certificate after = HOT::internal::certify_flat(D.P, D.tile, uv);
+  CHECK(moves >= thrown);
+  CHECK_MSG(after.is_bijective(), after);
+}
+
+HOT_TEST_MAIN
