@@ -2,7 +2,7 @@
 # Command-line tests: test_cli.sh PROGRAM CASE. Each case checks exit status, the
 # one-line error and that no (partial) output file is left behind on errors.
 set -u
-prog="$1"; case_name="$2"
+prog="$1"; case_name="$2"; data="${3:-}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
@@ -43,6 +43,62 @@ case "$case_name" in
     expect_error "$tmp/nodir/a.svg" tile --orbifold sphere --cones 7 --svg "$tmp/nodir/a.svg"
     expect_error "$tmp/a.svg" frobnicate
     expect_error "$tmp/a.svg"
+    echo ok ;;
+  embed_sphere)
+    # 7 landmarks spread by farthest-point sampling on bear.off (libcgal-demo)
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/bear.cones"
+    "$prog" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --out "$tmp/b.obj" --svg "$tmp/b.svg" \
+      --report "$tmp/b.json" || fail "embed failed"
+    nv=$(sed -n 2p "$data/meshes/bear.off" | awk '{print $1}'); nf=$(sed -n 2p "$data/meshes/bear.off" | awk '{print $2}')
+    [ "$(grep -c '^v ' "$tmp/b.obj")" -eq "$nv" ] || fail "v lines"
+    [ "$(grep -c '^f ' "$tmp/b.obj")" -eq "$nf" ] || fail "f lines"
+    nvt=$(grep -c '^vt ' "$tmp/b.obj")
+    [ "$nvt" -gt "$nv" ] || fail "a sphere-type cut must duplicate the seam vertices ($nvt vt for $nv v)"
+    # every vt is strictly inside the unit disk
+    awk '/^vt /{ if ($2*$2+$3*$3 >= 1) bad++ } END { exit bad > 0 }' "$tmp/b.obj" || fail "vt outside the disk"
+    # faces in input order, each with its vertices in input order (1-based in OBJ)
+    awk -v n="$nv" 'NR>2+n && NF>=4 {print $2+1, $3+1, $4+1}' "$data/meshes/bear.off" > "$tmp/off_faces"
+    awk '/^f /{ split($2,a,"/"); split($3,b,"/"); split($4,c,"/"); print a[1], b[1], c[1] }' "$tmp/b.obj" > "$tmp/obj_faces"
+    cmp -s "$tmp/off_faces" "$tmp/obj_faces" || fail "faces differ from the input's: $(diff "$tmp/off_faces" "$tmp/obj_faces" | head -3)"
+    # vertices in input order
+    awk -v n="$nv" 'NR>2 && NR<=2+n {printf "%.6f %.6f %.6f\n", $1, $2, $3}' "$data/meshes/bear.off" > "$tmp/off_v"
+    awk '/^v /{printf "%.6f %.6f %.6f\n", $2, $3, $4}' "$tmp/b.obj" > "$tmp/obj_v"
+    cmp -s "$tmp/off_v" "$tmp/obj_v" || fail "vertices differ from the input's"
+    grep -q '"bijective": true' "$tmp/b.json" || fail "report verdict"
+    grep -q '"orbifold": "sphere"' "$tmp/b.json" || fail "report orbifold"
+    tail -n 1 "$tmp/b.svg" | grep -q "</svg>" || fail "svg"
+    echo ok ;;
+  embed_disk)
+    echo "1166 1785 147 932 2251 139" > "$tmp/m.cones"
+    "$prog" embed --mesh "$data/meshes/mushroom.off" --cones "$tmp/m.cones" --weights mvc --out "$tmp/m.obj" \
+      --report "$tmp/m.json" || fail "embed failed"
+    nv=$(sed -n 2p "$data/meshes/mushroom.off" | awk '{print $1}')
+    [ "$(grep -c '^vt ' "$tmp/m.obj")" -eq "$nv" ] || fail "a disk is not cut: one vt per vertex"
+    grep -q '"orbifold": "disk"' "$tmp/m.json" || fail "report orbifold"
+    grep -q '"weights": "mvc"' "$tmp/m.json" || fail "report weights"
+    echo ok ;;
+  embed_errors)
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/bear.cones"
+    echo "1 2 3 4" > "$tmp/four.cones"
+    echo "1 2 3 4 4" > "$tmp/dup.cones"
+    echo "1 2 3 4 99999999" > "$tmp/range.cones"
+    echo "1 2 x 4 5" > "$tmp/garbage.cones"
+    echo "1 2 3 4 5 6" > "$tmp/inner.cones"
+    printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$tmp/trunc.off"
+    expect_error "$tmp/o.obj" embed --mesh "$tmp/missing.off" --cones "$tmp/bear.cones" --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$tmp/trunc.off" --cones "$tmp/bear.cones" --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/four.cones" --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/dup.cones" --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/range.cones" --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/garbage.cones" --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/mushroom.off" --cones "$tmp/inner.cones" --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --orbifold disk --out "$tmp/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --weights harmonic --out "$tmp/o.obj"
+    expect_error "$tmp/nodir/o.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --out "$tmp/nodir/o.obj"
+    expect_error "$tmp/o.obj" embed --mesh "$data/meshes/bear.off" --out "$tmp/o.obj"
+    # the exit status tells usage errors (2) from data errors (3)
+    "$prog" embed --mesh "$data/meshes/bear.off" --cones "$tmp/four.cones" --out "$tmp/o.obj" 2>/dev/null; [ $? -eq 3 ] || fail "status for too few cones"
+    "$prog" embed --bogus 1 2>/dev/null; [ $? -eq 2 ] || fail "status for a usage error"
     echo ok ;;
   *) fail "unknown case $case_name" ;;
 esac

@@ -262,6 +262,9 @@ int run_embed(int argc, char** argv)
   }
   if(order_name.empty())
     order_name = (type == HOT::Sphere_type) ? "tsp" : "given";
+  r = HOT::internal::check_mesh(m, type);
+  if(!r)
+    throw Failure{r.code, r.message};
   std::vector<SM_vertex> landmarks;
   r = HOT::internal::check_landmarks(m, cone_indices, type, landmarks);
   if(!r)
@@ -311,7 +314,8 @@ int run_embed(int argc, char** argv)
         os << "vt " << p.x() << " " << p.y() << "\n";
       for(SM_face f : faces(m)) {
         os << "f";
-        for(SM_halfedge h : halfedges_around_face(halfedge(f, m), m))
+        // read_mesh() builds face f with source(halfedge(f)) = the file's first vertex of the face
+        for(SM_halfedge h : halfedges_around_face(prev(halfedge(f, m), m), m))
           os << " " << target(h, m).idx() + 1 << "/" << corner_vt[h] + 1;
         os << "\n";
       }
