@@ -365,10 +365,11 @@ public:
         }
       if(project)
         project_psd(M, n);
+      // every entry, zero or not: the sparsity pattern must not change between iterations,
+      // since the symbolic factorisation is computed once
       for(int i = 0; i < n; ++i)
         for(int j = 0; j < n; ++j)
-          if(M(i, j) != 0.0)
-            H->emplace_back(gi[i], gi[j], M(i, j));
+          H->emplace_back(gi[i], gi[j], M(i, j));
     }
     return E;
   }
