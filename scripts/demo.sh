@@ -1,16 +1,23 @@
 #!/usr/bin/env bash
 # Quick start, part 1: installs what is missing, builds (Release) into build/, and runs
-# the main job on a default input. Until the embedding lands, the main job draws the
-# basic tiles of the two orbifold families (the paper's Figure 4).
+# the main job on a default input: the hyperbolic orbifold Tutte embedding of Debian's
+# libcgal-demo bear.off with 7 landmarks chosen by farthest-point sampling, written as
+# OBJ + SVG (+ PNG) + JSON report; plus pictures of the two orbifold tiles (Figure 4).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
 build="${HOT_BUILD_DIR:-$root/build}"
+bin="$build/bin/hyperbolic_orbifold_tutte"
+mesh="${1:-$build/data/meshes/bear.off}"
 out="$build/demo"
 mkdir -p "$out"
-"$build/bin/hyperbolic_orbifold_tutte" tile --orbifold sphere --cones 7 --svg "$out/sphere_tile_7.svg"
-"$build/bin/hyperbolic_orbifold_tutte" tile --orbifold disk --cones 5 --svg "$out/disk_tile_5.svg"
+name="$(basename "${mesh%.*}")"
+"$bin" landmarks --mesh "$mesh" --count 7 --out "$out/$name.cones.txt"
+"$bin" embed --mesh "$mesh" --cones "$out/$name.cones.txt" --out "$out/$name.obj" --svg "$out/$name.svg" \
+  --report "$out/$name.report.json"
+"$bin" tile --orbifold sphere --cones 7 --svg "$out/sphere_tile_7.svg"
+"$bin" tile --orbifold disk --cones 5 --svg "$out/disk_tile_5.svg"
 if command -v rsvg-convert >/dev/null 2>&1; then
   for f in "$out"/*.svg; do rsvg-convert "$f" -o "${f%.svg}.png"; done
 fi

@@ -100,5 +100,15 @@ case "$case_name" in
     "$prog" embed --mesh "$data/meshes/bear.off" --cones "$tmp/four.cones" --out "$tmp/o.obj" 2>/dev/null; [ $? -eq 3 ] || fail "status for too few cones"
     "$prog" embed --bogus 1 2>/dev/null; [ $? -eq 2 ] || fail "status for a usage error"
     echo ok ;;
+  landmarks)
+    for mesh in hand mushroom; do
+      "$prog" landmarks --mesh "$data/meshes/$mesh.off" --count 9 --out "$tmp/$mesh.cones" || fail "landmarks $mesh"
+      [ "$(wc -l < "$tmp/$mesh.cones")" -eq 9 ] || fail "9 lines"
+      [ "$(sort -u "$tmp/$mesh.cones" | wc -l)" -eq 9 ] || fail "distinct landmarks"
+      "$prog" embed --mesh "$data/meshes/$mesh.off" --cones "$tmp/$mesh.cones" --out "$tmp/$mesh.obj" || fail "embed $mesh"
+    done
+    expect_error "$tmp/x.cones" landmarks --mesh "$data/meshes/hand.off" --count 0 --out "$tmp/x.cones"
+    expect_error "$tmp/x.cones" landmarks --mesh "$tmp/none.off" --count 7 --out "$tmp/x.cones"
+    echo ok ;;
   *) fail "unknown case $case_name" ;;
 esac

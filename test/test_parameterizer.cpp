@@ -9,6 +9,9 @@
 #include "test_harness.h"
 #include "test_common_meshes.h"
 
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Random.h>
 
@@ -219,6 +222,11 @@ TEST_CASE(sphere_triceratops) { check_sphere_mesh("triceratops", {5, 7, 16, 50},
 TEST_CASE(sphere_homer) { check_sphere_mesh("homer", {7, 11}, HOT::Cotangent); check_sphere_mesh("homer", {6}, HOT::Uniform); }
 TEST_CASE(sphere_camel) { check_sphere_mesh("camel", {5, 9}, HOT::Cotangent); check_sphere_mesh("camel", {7}, HOT::Mean_value); }
 TEST_CASE(sphere_bear) { check_sphere_mesh("bear", {7}, HOT::Cotangent); }
+// larger meshes and up to 50 landmarks (the paper's Figure 6): label "heavy"
+TEST_CASE(heavy_sphere_armadillo) { check_sphere_mesh("armadillo", {7, 23, 50}, HOT::Cotangent); }
+TEST_CASE(heavy_sphere_bunny00) { check_sphere_mesh("bunny00", {7, 50}, HOT::Cotangent); }
+TEST_CASE(heavy_sphere_diplodocus) { check_sphere_mesh("diplodocus", {5, 12, 50}, HOT::Cotangent); check_sphere_mesh("diplodocus", {9}, HOT::Mean_value); }
+TEST_CASE(heavy_sphere_many_landmarks) { check_sphere_mesh("homer", {30, 50}, HOT::Cotangent); check_sphere_mesh("camel", {50}, HOT::Uniform); check_sphere_mesh("bear", {50}, HOT::Cotangent); }
 
 static void check_disk_mesh(const std::string& name, const std::vector<int>& ks, HOT::Weight_type w)
 {
@@ -276,7 +284,9 @@ static void check_disk_mesh(const std::string& name, const std::vector<int>& ks,
     CHECK_MSG(r.ec == HOT::OK, name << " k=" << k << ": " << r.st.message);
     CHECK_MSG(r.st.certificate.is_bijective(), name << " k=" << k << ": " << r.st.certificate);
     CHECK(r.st.relative_gradient_norm < 1e-10);
-    CHECK_NEAR(r.st.certificate.total_area, (k - 4) * CGAL_PI / 2, 1e-6 * k);
+    // Gauss-Bonnet, with the number of distinct landmarks actually used
+    const int kk = static_cast<int>(lm.size());
+    CHECK_NEAR(r.st.certificate.total_area, (kk - 4) * CGAL_PI / 2, 1e-6 * kk);
     // the other orientation of the same landmarks is accepted too
     std::vector<vertex_descriptor> rev(lm.rbegin(), lm.rend());
     std::rotate(rev.begin(), rev.end() - 1, rev.end());
@@ -299,6 +309,7 @@ TEST_CASE(disk_mushroom_all_weights)
 TEST_CASE(disk_nefertiti) { check_disk_mesh("nefertiti", {5, 7, 12}, HOT::Cotangent); }
 TEST_CASE(disk_lion_head) { check_disk_mesh("lion-head", {5, 10}, HOT::Cotangent); }
 TEST_CASE(disk_mannequin_devil) { check_disk_mesh("mannequin-devil", {6}, HOT::Cotangent); }
+TEST_CASE(heavy_disk_many_corners) { check_disk_mesh("mannequin-devil", {12, 30}, HOT::Cotangent); check_disk_mesh("lion-head", {50}, HOT::Mean_value); }
 
 // ---- synthetic disks: boundary ears, Figure 8, the one-ring repair ------------
 
@@ -444,6 +455,130 @@ TEST_CASE(one_ring_repair)
   const HOT::Embedding_certificate after = HOT::internal::certify_flat(D.P, D.tile, uv);
   CHECK(moves >= thrown);
   CHECK_MSG(after.is_bijective(), after);
+}
+
+// ---- other mesh types, and bad input through the one-call function ------------
+
+TEST_CASE(polyhedron_3_gives_the_same_embedding)
+{
+  typedef CGAL::Polyhedron_3<K> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor P_vertex;
+  typedef boost::graph_traits<Polyhedron>::halfedge_descriptor P_halfedge;
+  for(const std::string name : {"hand", "mushroom"}) {
+    Mesh sm;
+    CHECK(read_demo_mesh(name, sm));
+    Polyhedron poly;
+    std::ifstream in(data_dir() + "/meshes/" + name + ".off");
+    CHECK(bool(in >> poly));
+    std::vector<P_vertex> pv;
+    for(P_vertex v : vertices(poly)) pv.push_back(v);
+    CHECK(pv.size() == num_vertices(sm));
+    const std::vector<vertex_descriptor> lm = (name == "hand") ? farthest_point_landmarks(sm, 7) : boundary_landmarks(sm, 6, 0.3);
+    std::vector<P_vertex> plm;
+    for(vertex_descriptor v : lm) plm.push_back(pv[v.idx()]);
+    const Embedding_run r = embed(sm, lm, HOT::Cotangent, HOT::Tsp_order);
+    std::unordered_map<P_halfedge, Point_2> uvp;
+    HOT::Embedding_statistics st;
+    const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+      poly, plm, boost::make_assoc_property_map(uvp),
+      HOT::parameters::embedding_statistics(&st, HOT::parameters::landmark_order(HOT::Tsp_order)));
+    CHECK_MSG(ec == HOT::OK, st.message);
+    CHECK(st.certificate.is_bijective());
+    CHECK(r.ec == HOT::OK);
+    // same mesh, same landmarks, same cut order: the same critical point
+    CHECK_NEAR(st.energy, r.st.energy, 1e-9 * r.st.energy);
+    CHECK(st.landmark_order == r.st.landmark_order);
+    // every face corner of the polyhedron got a point inside the disk
+    std::size_t corners = 0;
+    for(auto f : faces(poly))
+      for(P_halfedge h : halfedges_around_face(halfedge(f, poly), poly)) {
+        ++corners;
+        CHECK(uvp.count(h) && uvp[h].x() * uvp[h].x() + uvp[h].y() * uvp[h].y() < 1);
+      }
+    CHECK(corners == 3 * num_faces(sm));
+  }
+}
+
+static HOT::Error_code embed_code(const Mesh& m, const std::vector<vertex_descriptor>& lm, std::string* msg = nullptr,
+                                  HOT::Orbifold_type type = HOT::Sphere_type, bool force_type = false)
+{
+  std::unordered_map<halfedge_descriptor, Point_2> uv;
+  HOT::Embedding_statistics st;
+  const HOT::Error_code ec = force_type
+    ? HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv),
+                                               HOT::parameters::orbifold_type(type, HOT::parameters::embedding_statistics(&st)))
+    : HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv),
+                                               HOT::parameters::embedding_statistics(&st));
+  if(msg) *msg = st.message;
+  CHECK_MSG(ec == HOT::OK || (!st.message.empty() && st.message.find('\n') == std::string::npos), "message: " << st.message);
+  CHECK(ec == HOT::OK || uv.empty()); // nothing written on failure
+  return ec;
+}
+
+TEST_CASE(bad_input_gets_its_error_code)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("hand", m));
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 7);
+  CHECK(embed_code(m, lm) == HOT::OK);
+  // landmarks
+  CHECK(embed_code(m, std::vector<vertex_descriptor>(lm.begin(), lm.begin() + 4)) == HOT::ERROR_TOO_FEW_LANDMARKS);
+  std::vector<vertex_descriptor> dup = lm;
+  dup[3] = dup[1];
+  CHECK(embed_code(m, dup) == HOT::ERROR_DUPLICATE_LANDMARK);
+  std::vector<vertex_descriptor> out = lm;
+  out[2] = vertex_descriptor(static_cast<Mesh::size_type>(num_vertices(m) + 10));
+  CHECK(embed_code(m, out) == HOT::ERROR_LANDMARK_OUT_OF_RANGE);
+  // wrong orbifold for the topology
+  CHECK(embed_code(m, lm, nullptr, HOT::Disk_type, true) == HOT::ERROR_WRONG_TOPOLOGY);
+  // NaN coordinate
+  {
+    Mesh bad = m;
+    bad.point(vertex_descriptor(5)) = K::Point_3(std::nan(""), 0, 0);
+    CHECK(embed_code(bad, lm) == HOT::ERROR_NON_FINITE_COORDINATES);
+  }
+  // degenerate face: a vertex moved onto its neighbour
+  {
+    Mesh bad = m;
+    const halfedge_descriptor h = halfedge(vertex_descriptor(7), bad);
+    bad.point(target(h, bad)) = bad.point(source(h, bad));
+    CHECK(embed_code(bad, lm) == HOT::ERROR_DEGENERATE_FACE);
+  }
+  // two components
+  {
+    Mesh two = m;
+    Mesh copy = m;
+    for(vertex_descriptor v : vertices(copy)) copy.point(v) = copy.point(v) + K::Vector_3(10, 0, 0);
+    two.join(copy);
+    CHECK(embed_code(two, lm) == HOT::ERROR_SEVERAL_COMPONENTS);
+  }
+  // a hole in a sphere-type mesh
+  {
+    Mesh holed = m;
+    CGAL::Euler::remove_face(halfedge(*faces(holed).begin(), holed), holed);
+    holed.collect_garbage();
+    std::string msg;
+    const HOT::Error_code ec = embed_code(holed, lm, &msg, HOT::Sphere_type, true);
+    CHECK_MSG(ec == HOT::ERROR_WRONG_TOPOLOGY || ec == HOT::ERROR_LANDMARK_OUT_OF_RANGE, msg);
+  }
+  // empty mesh
+  CHECK(embed_code(Mesh(), lm) != HOT::OK);
+  // disk type: a landmark off the boundary
+  {
+    Mesh d;
+    CHECK(read_demo_mesh("mushroom", d));
+    std::vector<vertex_descriptor> dl = boundary_landmarks(d, 6, 0.3);
+    CHECK(embed_code(d, dl) == HOT::OK);
+    for(vertex_descriptor v : vertices(d))
+      if(!is_border(v, d)) { dl[2] = v; break; }
+    CHECK(embed_code(d, dl) == HOT::ERROR_LANDMARK_NOT_ON_BORDER);
+    // boundary landmarks out of boundary order
+    std::vector<vertex_descriptor> shuffled = boundary_landmarks(d, 6, 0.3);
+    std::swap(shuffled[1], shuffled[3]);
+    std::string msg;
+    CHECK(embed_code(d, shuffled, &msg) == HOT::ERROR_CUT_FAILED);
+    CHECK(msg.find("boundary order") != std::string::npos);
+  }
 }
 
 HOT_TEST_MAIN

@@ -15,6 +15,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/svg_writer.h>
 
 #include <cerrno>
@@ -372,6 +373,31 @@ int run_embed(int argc, char** argv)
   return EXIT_SUCCESS;
 }
 
+int run_landmarks(int argc, char** argv)
+{
+  const Options opt(argc, argv, 2, {"mesh", "count", "out"});
+  const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
+  const long k = opt.get_int("count", 1, 100000);
+  Surface_mesh m;
+  HOT::internal::Check_result r = HOT::internal::read_mesh(mesh_path, m);
+  if(!r)
+    throw Failure{r.code, r.message};
+  r = HOT::internal::check_mesh(m);
+  if(!r)
+    throw Failure{r.code, r.message};
+  if(static_cast<std::size_t>(k) > num_vertices(m))
+    throw Usage_error{"--count is larger than the number of vertices (" + std::to_string(num_vertices(m)) + ")"};
+  const std::vector<std::size_t> lm = HOT::internal::sample_landmarks(m, get(CGAL::vertex_point, m), static_cast<std::size_t>(k));
+  if(lm.size() != static_cast<std::size_t>(k))
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the boundary has fewer than " + std::to_string(k) + " vertices"};
+  write_file_atomically(out, [&](std::ostream& os) {
+    for(std::size_t i : lm)
+      os << i << "\n";
+  });
+  std::cout << "wrote " << k << " landmarks of " << mesh_path << " to " << out << std::endl;
+  return EXIT_SUCCESS;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -388,6 +414,8 @@ int main(int argc, char** argv)
       return run_tile(argc, argv);
     if(command == "embed")
       return run_embed(argc, argv);
+    if(command == "landmarks")
+      return run_landmarks(argc, argv);
     throw Usage_error{"unknown command '" + command + "'"};
   } catch(const Failure& e) {
     std::cerr << "hyperbolic_orbifold_tutte: " << HOT::error_message(e.code) << ": " << e.message << std::endl;
