@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Random.h>
 
 #include <map>
@@ -578,6 +579,52 @@ TEST_CASE(bad_input_gets_its_error_code)
     std::string msg;
     CHECK(embed_code(d, shuffled, &msg) == HOT::ERROR_CUT_FAILED);
     CHECK(msg.find("boundary order") != std::string::npos);
+  }
+}
+
+TEST_CASE(public_certificate_on_corner_maps)
+{
+  for(const std::string name : {"hand", "mushroom"}) {
+    Mesh m;
+    CHECK(read_demo_mesh(name, m));
+    std::vector<vertex_descriptor> lm = (name == "hand") ? farthest_point_landmarks(m, 8) : boundary_landmarks(m, 6, 0.3);
+    const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
+    CHECK_MSG(r.ec == HOT::OK, r.st.message);
+    UV_map uv = m.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    std::vector<vertex_descriptor> used;
+    for(std::size_t i : r.st.landmark_order) used.push_back(lm[i]);
+    HOT::Embedding_certificate c;
+    std::string msg;
+    CHECK_MSG(HOT::certify_hyperbolic_orbifold_embedding(m, used, uv, c, &msg) == HOT::OK, msg);
+    CHECK_MSG(c.is_bijective(), c);
+    CHECK(c.number_of_faces == num_faces(m));
+    // the landmarks in another order: the cones are not at their corners
+    std::vector<vertex_descriptor> swapped = used;
+    std::swap(swapped[1], swapped[2]);
+    const HOT::Error_code ec = HOT::certify_hyperbolic_orbifold_embedding(m, swapped, uv, c, &msg);
+    CHECK(ec != HOT::OK || !c.is_bijective());
+    // move one interior vertex (all its corners) beyond a neighbour: faces flip, angle sums break
+    vertex_descriptor v;
+    for(vertex_descriptor w : vertices(m))
+      if(!is_border(w, m) && std::find(lm.begin(), lm.end(), w) == lm.end()) {
+        bool single = true;
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(w, m), m))
+          single = single && get(uv, h) == get(uv, halfedge(w, m));
+        if(single) { v = w; break; }
+      }
+    const Point_2 zv = get(uv, halfedge(v, m));
+    const Point_2 zn = get(uv, prev(halfedge(v, m), m));
+    const C far = Isometry::rotation_about(C(zn.x(), zn.y()), CGAL_PI).apply(C(zv.x(), zv.y()));
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m))
+      put(uv, h, Point_2(far.re, far.im));
+    CHECK(HOT::certify_hyperbolic_orbifold_embedding(m, used, uv, c, &msg) == HOT::OK);
+    CHECK_MSG(!c.is_bijective() && c.flipped_faces > 0, c);
+    // a point outside the disk
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m))
+      put(uv, h, Point_2(1.5, 0));
+    CHECK(HOT::certify_hyperbolic_orbifold_embedding(m, used, uv, c, &msg) == HOT::OK);
+    CHECK(c.points_outside_disk > 0 && !c.is_bijective());
+    m.remove_property_map(uv);
   }
 }
 

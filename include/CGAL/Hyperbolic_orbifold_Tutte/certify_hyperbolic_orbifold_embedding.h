@@ -1,0 +1,159 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_CERTIFY_HYPERBOLIC_ORBIFOLD_EMBEDDING_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_CERTIFY_HYPERBOLIC_ORBIFOLD_EMBEDDING_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
+
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+/// \file certify_hyperbolic_orbifold_embedding.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+certifies any map of a mesh into a hyperbolic orbifold given as Poincar&eacute;
+coordinates per face corner (the output format of `hyperbolic_orbifold_Tutte_embedding()`),
+whoever computed it: the cut is recovered from the corners whose coordinates differ on the
+two sides of an edge, then every check of `Embedding_certificate` is run, with the exact
+orientation predicate on the given coordinates.
+
+\param tm the mesh
+\param landmarks the landmark vertices in cone order (the order the map was computed with,
+       e.g. `Embedding_statistics::landmark_order` applied to the given landmarks)
+\param uvmap for every halfedge `h` of a face, the point of corner `target(h)` in `face(h)`
+\param certificate receives the verdict and the count of each failure
+\param np optional named parameter `orbifold_type` (default: from the mesh's topology)
+
+\return `OK` when the map could be analysed (read `certificate.is_bijective()`), otherwise the
+reason (invalid mesh or landmarks, or a cut that is not a simple path through the landmarks
+in order, which no map onto the orbifold's tile has: `ERROR_CUT_FAILED`); `message` (if not
+null) gets a one-line explanation.
+*/
+template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code certify_hyperbolic_orbifold_embedding(
+  const TriangleMesh& tm,
+  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+  HalfedgeUVMap uvmap,
+  Embedding_certificate& certificate,
+  std::string* message = nullptr,
+  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
+
+  certificate = Embedding_certificate();
+  std::string local;
+  std::string& msg = message ? *message : local;
+  msg.clear();
+  auto fail = [&](Error_code ec, const std::string& m) {
+    msg = m.empty() ? std::string(error_message(ec)) : m;
+    return ec;
+  };
+
+  Orbifold_type type = Sphere_type;
+  if(is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value) {
+    if(!internal::detect_orbifold_type(tm, type))
+      return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk");
+  } else {
+    type = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
+  }
+  internal::Check_result r = internal::check_mesh(tm, type);
+  if(!r)
+    return fail(r.code, r.message);
+  const int k = static_cast<int>(landmarks.size());
+  Orbifold_tile<> tile;
+  if(make_orbifold_tile(type, k, tile) != OK)
+    return fail(k < 5 ? ERROR_TOO_FEW_LANDMARKS : ERROR_NOT_HYPERBOLIC, "");
+
+  // the cut: edges whose two sides disagree on a shared corner
+  typedef std::unordered_map<edge_descriptor, bool, boost::hash<edge_descriptor> > Edge_flags;
+  typedef std::unordered_map<vertex_descriptor, bool, boost::hash<vertex_descriptor> > Vertex_flags;
+  Edge_flags edge_flags;
+  Vertex_flags vertex_flags;
+  for(vertex_descriptor v : vertices(tm))
+    vertex_flags.emplace(v, false);
+  for(edge_descriptor e : edges(tm))
+    edge_flags.emplace(e, false);
+  typedef boost::associative_property_map<Edge_flags> SEM;
+  typedef boost::associative_property_map<Vertex_flags> SVM;
+  typedef CGAL::Seam_mesh<TriangleMesh, SEM, SVM> Mesh;
+  Mesh mesh(tm, SEM(edge_flags), SVM(vertex_flags));
+  for(edge_descriptor e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm), o = opposite(h, tm);
+    if(is_border(h, tm) || is_border(o, tm))
+      continue;
+    // corner of target(h) in face(h) vs in face(o); corner of source(h) likewise
+    const bool differ = get(uvmap, h) != get(uvmap, prev(o, tm)) || get(uvmap, prev(h, tm)) != get(uvmap, o);
+    if(differ)
+      mesh.add_seam(source(h, tm), target(h, tm));
+  }
+  typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
+  bool found = false;
+  for(auto h : halfedges(mesh))
+    if(is_border(h, mesh)) {
+      bhd = h;
+      found = true;
+      break;
+    }
+  if(!found)
+    return fail(ERROR_CUT_FAILED, "the map has no cut: a closed mesh must be cut open through the landmarks");
+
+  internal::Flat_problem P;
+  std::unordered_map<vertex_descriptor, int> base_index;
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> cut_vertices;
+  std::string why;
+  const Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_index, cut_vertices, why);
+  if(ec != OK)
+    return fail(ec, why);
+
+  // the point of each cut-mesh vertex, from any of its corners (they agree off the cut)
+  std::unordered_map<halfedge_descriptor, int, boost::hash<halfedge_descriptor> > index_of;
+  for(int i = 0; i < P.n; ++i)
+    index_of.emplace(cut_vertices[i].hd.tmhd, i);
+  std::vector<internal::Complex<double> > uv(P.n, internal::Complex<double>(2.0, 0.0));
+  for(face_descriptor f : faces(tm))
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
+      const auto vd = target(typename boost::graph_traits<Mesh>::halfedge_descriptor(h, false), mesh);
+      const auto it = index_of.find(vd.hd.tmhd);
+      if(it == index_of.end())
+        return fail(ERROR_CUT_FAILED, "a corner could not be matched to a vertex of the cut mesh");
+      const Point_2 p = get(uvmap, h);
+      uv[it->second] = internal::Complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    }
+  certificate = internal::certify_flat(P, tile, uv);
+  return OK;
+}
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_CERTIFY_HYPERBOLIC_ORBIFOLD_EMBEDDING_H
