@@ -628,4 +628,117 @@ TEST_CASE(public_certificate_on_corner_maps)
   }
 }
 
+TEST_CASE(user_edge_weights)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("hand", m));
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 7);
+  // constant user weights give the uniform-weight embedding (the critical point is scale invariant)
+  std::unordered_map<boost::graph_traits<Mesh>::edge_descriptor, double> w;
+  for(auto e : edges(m)) w[e] = 2.5;
+  std::unordered_map<halfedge_descriptor, Point_2> uv1, uv2;
+  HOT::Embedding_statistics s1, s2;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv1),
+          HOT::parameters::edge_weight_map(boost::make_assoc_property_map(w), HOT::parameters::embedding_statistics(&s1))) == HOT::OK);
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv2),
+          HOT::parameters::weight_type(HOT::Uniform, HOT::parameters::embedding_statistics(&s2))) == HOT::OK);
+  CHECK_NEAR(s1.energy, 2.5 * s2.energy, 1e-9 * s1.energy);
+  double worst = 0;
+  for(auto& e : uv1) worst = std::max(worst, std::abs(e.second.x() - uv2[e.first].x()) + std::abs(e.second.y() - uv2[e.first].y()));
+  CHECK_MSG(worst < 1e-9, worst);
+  // a non-positive weight is refused
+  w[*edges(m).begin()] = 0.0;
+  std::unordered_map<halfedge_descriptor, Point_2> uv3;
+  HOT::Embedding_statistics s3;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv3),
+          HOT::parameters::edge_weight_map(boost::make_assoc_property_map(w), HOT::parameters::embedding_statistics(&s3))) == HOT::ERROR_WRONG_PARAMETER);
+  CHECK(uv3.empty());
+}
+
+// The whole energy of a cut mesh, with seam twins (Mobius-transformed variables) and
+// disk-boundary parameters (straight Klein segments): gradient and exact Hessian
+// against central differences of the energy at the Tutte initialisation and at a
+// random perturbation of it.
+static void check_energy_derivatives(const HOT::internal::Flat_problem& P, std::vector<double> x, const std::string& what)
+{
+  HOT::internal::Energy_evaluator ev(P);
+  for(int round = 0; round < 2; ++round) {
+    if(round == 1) // move every variable a little: away from the initialisation's structure
+      for(double& xi : x) xi += 1e-3 * rng.get_double(-1, 1);
+    std::vector<double> g, g2;
+    std::vector<Eigen::Triplet<double> > trip;
+    const double E = ev.evaluate(x, g, &trip, false);
+    CHECK_NEAR(E, ev.energy(x), 1e-12 * E);
+    Eigen::SparseMatrix<double> H(P.n_vars, P.n_vars);
+    H.setFromTriplets(trip.begin(), trip.end());
+    int checked = 0;
+    for(int i = 0; i < P.n_vars; i += std::max(1, P.n_vars / 60)) {
+      const double h = 1e-6;
+      std::vector<double> xp = x, xm = x;
+      xp[i] += h;
+      xm[i] -= h;
+      const double fd = (ev.energy(xp) - ev.energy(xm)) / (2 * h);
+      CHECK_MSG(std::abs(fd - g[i]) <= 1e-5 * (1 + std::abs(g[i])), what << " dE/dx" << i << ": " << g[i] << " vs " << fd);
+      ev.evaluate(xp, g2, nullptr);
+      std::vector<double> gm;
+      ev.evaluate(xm, gm, nullptr);
+      double worst = 0, scale = 1;
+      for(int j = 0; j < P.n_vars; ++j) {
+        const double fdh = (g2[j] - gm[j]) / (2 * h);
+        worst = std::max(worst, std::abs(fdh - H.coeff(j, i)));
+        scale = std::max(scale, std::abs(fdh));
+      }
+      CHECK_MSG(worst <= 1e-4 * scale, what << " Hessian column " << i << " off by " << worst << " (scale " << scale << ")");
+      ++checked;
+    }
+    CHECK(checked > 10);
+  }
+}
+
+TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
+{
+  // sphere type: hand, cut through 7 landmarks (seam twins)
+  {
+    Mesh m;
+    CHECK(read_demo_mesh("hand", m));
+    const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 7);
+    auto sem = m.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:s", false).first;
+    auto svm = m.add_property_map<vertex_descriptor, bool>("v:s", false).first;
+    Disk_problem::SMesh sm(m, sem, svm);
+    std::vector<vertex_descriptor> ordered;
+    for(std::size_t i : HOT::internal::compute_tsp_landmark_order(m, lm, get(CGAL::vertex_point, m))) ordered.push_back(lm[i]);
+    const auto cut = HOT::internal::compute_cut_through_landmarks(m, ordered, get(CGAL::vertex_point, m));
+    CHECK(cut.ok && HOT::internal::add_cut_to_seam_mesh(sm, m, cut));
+    boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
+    for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
+    HOT::Orbifold_tile<> tile;
+    HOT::make_orbifold_tile(HOT::Sphere_type, 7, tile);
+    HOT::internal::Flat_problem P;
+    std::unordered_map<vertex_descriptor, int> bi;
+    std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
+    std::string msg;
+    CHECK(HOT::internal::build_flat_topology(sm, bhd, ordered, tile, P, bi, cv, msg) == HOT::OK);
+    int twins = 0;
+    for(int v = 0; v < P.n; ++v) twins += (P.kind[v] == HOT::internal::Transformed);
+    CHECK(twins > 10);
+    std::vector<K::Point_3> pts(P.n_base);
+    for(auto& e : bi) pts[e.second] = m.point(e.first);
+    HOT::internal::compute_edge_weights(P, pts, HOT::Cotangent, 1e-6);
+    std::vector<double> x;
+    CHECK(HOT::internal::initialize_embedding(P, tile, pts, x) == HOT::OK);
+    check_energy_derivatives(P, x, "sphere");
+  }
+  // disk type: mushroom (boundary parameters)
+  {
+    Mesh m;
+    CHECK(read_demo_mesh("mushroom", m));
+    Disk_problem D;
+    CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
+    int lines = 0;
+    for(int v = 0; v < D.P.n; ++v) lines += (D.P.kind[v] == HOT::internal::On_line);
+    CHECK(lines > 10);
+    check_energy_derivatives(D.P, D.x, "disk");
+  }
+}
+
 HOT_TEST_MAIN

@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/properties.h>
 
 #include <chrono>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,9 @@ public:
   typedef typename boost::graph_traits<SeamMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<SeamMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor TM_vertex_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::edge_descriptor TM_edge_descriptor;
+  /// user edge weights: a positive number per edge of the underlying mesh
+  typedef std::function<double(const TM_edge_descriptor&)> Edge_weight_function;
 
   /// \param type the orbifold's topology
   /// \param weights the edge weights
@@ -99,6 +103,10 @@ public:
   void set_gradient_tolerance(double t) { options_.gradient_tolerance = t; }
   void set_maximum_number_of_iterations(int n) { options_.max_iterations = n; }
   void set_verbose(bool v) { options_.verbose = v; }
+  /// uses `w(e)` as the weight of every edge `e` of the underlying mesh instead of the
+  /// `Weight_type`; each must be positive and finite (else `ERROR_WRONG_PARAMETER`).
+  /// An empty function restores the `Weight_type`.
+  void set_edge_weights(const Edge_weight_function& w) { user_weights_ = w; }
 
   /*!
   computes the embedding.
@@ -152,7 +160,28 @@ public:
     std::vector<Point_3> base_points(P.n_base);
     for(const auto& bi : base_index)
       base_points[bi.second] = get(vpm, bi.first);
-    internal::compute_edge_weights(P, base_points, weights_, epsilon_);
+    if(user_weights_) {
+      std::vector<TM_vertex_descriptor> base_vertex(P.n_base);
+      for(const auto& bi : base_index)
+        base_vertex[bi.second] = bi.first;
+      // each base edge once in total: its copies (two along a seam) share the weight
+      std::unordered_map<long long, int> copies;
+      auto key = [](int a, int b) { return (static_cast<long long>(std::min(a, b)) << 32) | std::max(a, b); };
+      for(const auto& e : P.edges)
+        ++copies[key(P.base[e[0]], P.base[e[1]])];
+      P.edge_weight.resize(P.edges.size());
+      for(std::size_t i = 0; i < P.edges.size(); ++i) {
+        const int a = P.base[P.edges[i][0]], b = P.base[P.edges[i][1]];
+        const auto e = edge(base_vertex[a], base_vertex[b], tm);
+        const double w = e.second ? user_weights_(e.first) : 0.0;
+        if(!(w > 0) || !std::isfinite(w))
+          return fail(ERROR_WRONG_PARAMETER, "the user weight of the edge between mesh vertices " + std::to_string(a) +
+                                               " and " + std::to_string(b) + " is not a positive finite number");
+        P.edge_weight[i] = w / copies[key(a, b)];
+      }
+    } else {
+      internal::compute_edge_weights(P, base_points, weights_, epsilon_);
+    }
     st.time_setup = std::chrono::duration<double>(Clock::now() - t0).count();
 
     auto t1 = Clock::now();
@@ -213,6 +242,7 @@ private:
   double epsilon_;
   Traits traits_;
   internal::Solver_options options_;
+  Edge_weight_function user_weights_;
 };
 
 } // namespace Hyperbolic_orbifold_Tutte

@@ -81,6 +81,8 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     \cgalParamDefault{`Sphere_type` for a closed mesh, `Disk_type` for a mesh with one boundary loop} \cgalParamNEnd
   \cgalParamNBegin{weight_type} \cgalParamDescription{`Cotangent`, `Mean_value` or `Uniform`}
     \cgalParamDefault{`Cotangent`} \cgalParamNEnd
+  \cgalParamNBegin{edge_weight_map} \cgalParamDescription{a readable property map from `edge_descriptor`
+    to positive `double` weights, used instead of `weight_type`} \cgalParamDefault{unused} \cgalParamNEnd
   \cgalParamNBegin{weight_epsilon} \cgalParamDescription{lower clamp of cotangent weights}
     \cgalParamDefault{`1e-6`} \cgalParamNEnd
   \cgalParamNBegin{landmark_order} \cgalParamDescription{`Given_order` or `Tsp_order` (sphere type)}
@@ -203,6 +205,10 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   parameterizer.set_gradient_tolerance(choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-10));
   parameterizer.set_maximum_number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200));
   parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
+    const auto wmap = get_parameter(np, internal_np::edge_weight_map);
+    parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });
+  }
   std::unordered_map<halfedge_descriptor, Point_2, boost::hash<halfedge_descriptor> > canonical;
   std::vector<std::size_t> order_used = st.landmark_order;
   const Error_code ec =

@@ -34,6 +34,7 @@ enum weight_epsilon_t { weight_epsilon };
 enum landmark_order_t { landmark_order };
 enum gradient_tolerance_t { gradient_tolerance };
 enum embedding_statistics_t { embedding_statistics };
+enum edge_weight_map_t { edge_weight_map };
 } // namespace internal_np
 
 namespace parameters {
@@ -63,6 +64,10 @@ CGAL_HOT_NAMED_PARAMETER(landmark_order)
 CGAL_HOT_NAMED_PARAMETER(gradient_tolerance)
 /// `Embedding_statistics*`: receives statistics, timings and the certificate
 CGAL_HOT_NAMED_PARAMETER(embedding_statistics)
+
+/// a readable property map from the mesh's edges to positive `double` weights, used
+/// instead of `weight_type`
+CGAL_HOT_NAMED_PARAMETER(edge_weight_map)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 
