@@ -18,5 +18,6 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H
