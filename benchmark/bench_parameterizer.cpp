@@ -1,0 +1,159 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Times, on the same meshes: CGAL's Euclidean Orbifold_Tutte_parameterizer_3 (4 cones,
+// parallelogram orbifold, cotangent weights), our hyperbolic embedding (cut, init, optimise,
+// certify) and the "Cholesky floor" (one factorisation + solve of the cotangent Laplacian).
+//   bench_parameterizer [--landmarks K] mesh.off [mesh2.off ...]
+// Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Orbifold_Tutte_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/orbifold_shortest_path.h>
+
+#include <CGAL/hyperbolic_orbifold_Tutte.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <list>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> SM;
+typedef boost::graph_traits<SM>::vertex_descriptor SM_vertex;
+typedef boost::graph_traits<SM>::edge_descriptor SM_edge;
+typedef boost::graph_traits<SM>::halfedge_descriptor SM_halfedge;
+typedef std::chrono::steady_clock Clock;
+
+static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+static double peak_rss_mb()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;
+}
+
+// CGAL's Euclidean orbifold Tutte embedding with 4 cones (its own seam and cone setup)
+static double euclidean_orbifold_time(SM& sm, const std::vector<SM_vertex>& cones4, bool& ok)
+{
+  typedef SM::Property_map<SM_edge, bool> SEM;
+  typedef SM::Property_map<SM_vertex, bool> SVM;
+  typedef CGAL::Seam_mesh<SM, SEM, SVM> Mesh;
+  typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  SEM sem = sm.add_property_map<SM_edge, bool>("e:bench_seam", false).first;
+  SVM svm = sm.add_property_map<SM_vertex, bool>("v:bench_seam", false).first;
+  Mesh mesh(sm, sem, svm);
+  const auto cut = HOT::internal::compute_cut_through_landmarks(sm, cones4, get(CGAL::vertex_point, sm));
+  ok = cut.ok && HOT::internal::add_cut_to_seam_mesh(mesh, sm, cut);
+  std::unordered_map<vertex_descriptor, int> indices;
+  int counter = 0;
+  for(vertex_descriptor vd : vertices(mesh))
+    indices[vd] = counter++;
+  boost::associative_property_map<std::unordered_map<vertex_descriptor, int> > vimap(indices);
+  std::unordered_map<vertex_descriptor, SMP::Cone_type> cmap;
+  SMP::locate_cones(mesh, cones4.begin(), cones4.end(), cmap);
+  auto uvmap = sm.add_property_map<SM_halfedge, K::Point_2>("h:bench_uv").first;
+  halfedge_descriptor bhd;
+  for(halfedge_descriptor h : halfedges(mesh))
+    if(is_border(h, mesh)) { bhd = h; break; }
+  SMP::Orbifold_Tutte_parameterizer_3<Mesh> parameterizer(SMP::Parallelogram, SMP::Cotangent);
+  const auto t = Clock::now();
+  const SMP::Error_code ec = parameterizer.parameterize(mesh, bhd, cmap, uvmap, vimap);
+  const double time = seconds_since(t);
+  ok = ok && ec == SMP::OK;
+  sm.remove_property_map(uvmap);
+  sm.remove_property_map(sem);
+  sm.remove_property_map(svm);
+  return time;
+}
+
+// one factorisation + solve of the n x n cotangent Laplacian (one vertex pinned)
+static double cholesky_floor_time(const SM& sm)
+{
+  const int n = static_cast<int>(num_vertices(sm));
+  std::vector<Eigen::Triplet<double> > trip;
+  std::vector<double> diag(n, 0.0);
+  for(SM_halfedge h : halfedges(sm)) {
+    if(is_border(h, sm)) continue;
+    const K::Point_3& a = sm.point(source(h, sm));
+    const K::Point_3& b = sm.point(target(h, sm));
+    const K::Point_3& c = sm.point(target(next(h, sm), sm));
+    const K::Vector_3 u = a - c, v = b - c;
+    const double w = std::max(1e-6, 0.5 * (u * v) / std::sqrt(CGAL::cross_product(u, v).squared_length()));
+    const int i = static_cast<int>(source(h, sm).idx()), j = static_cast<int>(target(h, sm).idx());
+    if(i > 0 && j > 0) { trip.emplace_back(i - 1, j - 1, -w); trip.emplace_back(j - 1, i - 1, -w); }
+    diag[i] += w;
+    diag[j] += w;
+  }
+  for(int i = 1; i < n; ++i) trip.emplace_back(i - 1, i - 1, diag[i]);
+  Eigen::SparseMatrix<double> L(n - 1, n - 1);
+  L.setFromTriplets(trip.begin(), trip.end());
+  const auto t = Clock::now();
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > chol(L);
+  const Eigen::VectorXd x = chol.solve(Eigen::VectorXd::Ones(n - 1));
+  const double time = seconds_since(t);
+  if(!x.allFinite()) return -1;
+  return time;
+}
+
+int main(int argc, char** argv)
+{
+  std::size_t k = 7;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--landmarks" && i + 1 < argc) k = std::strtoul(argv[++i], nullptr, 10);
+    else files.push_back(a);
+  }
+  if(files.empty()) {
+    std::cerr << "usage: bench_parameterizer [--landmarks K] mesh.off [...]" << std::endl;
+    return 1;
+  }
+  std::printf("%-18s %8s %3s | %9s | %7s %7s %7s %7s %8s | %5s %9s | %7s %9s | %7s %s\n", "mesh", "vertices", "k",
+              "Euclid(s)", "cut", "init", "optim", "cert", "total(s)", "iters", "imbalance", "ratio", "chol(s)",
+              "RSS(MB)", "certificate");
+  for(const std::string& f : files) {
+    SM sm;
+    if(!CGAL::IO::read_polygon_mesh(f, sm) || num_faces(sm) == 0) {
+      std::printf("%-18s cannot read\n", f.c_str());
+      continue;
+    }
+    std::string name = f.substr(f.find_last_of('/') + 1);
+    name = name.substr(0, name.find_last_of('.'));
+    const auto landmarks = HOT::select_landmarks(sm, k);
+    bool eok = false;
+    double te = -1;
+    if(CGAL::is_closed(sm)) {
+      std::vector<SM_vertex> cones4(landmarks.begin(), landmarks.begin() + std::min<std::size_t>(4, landmarks.size()));
+      te = euclidean_orbifold_time(sm, cones4, eok);
+    }
+    auto uv = sm.add_property_map<SM_halfedge, K::Point_2>("h:uv").first;
+    HOT::Embedding_statistics st;
+    const auto t = Clock::now();
+    const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+      sm, landmarks, uv, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&st)));
+    const double total = seconds_since(t);
+    sm.remove_property_map(uv);
+    const double tc = cholesky_floor_time(sm);
+    std::printf("%-18s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %5d %9.1e | %7.2f %9.3f | %7.0f %s\n",
+                name.c_str(), static_cast<std::size_t>(num_vertices(sm)), landmarks.size(), eok ? te : -1.0,
+                st.time_setup, st.time_initialization, st.time_optimization, st.time_certificate, total, st.iterations,
+                st.relative_gradient_norm, (eok && te > 0) ? total / te : -1.0, tc, peak_rss_mb(),
+                ec == HOT::OK && st.certificate.is_bijective() ? "bijective" : HOT::error_message(ec));
+    std::fflush(stdout);
+  }
+  return 0;
+}
