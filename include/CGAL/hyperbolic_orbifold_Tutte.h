@@ -10,6 +10,7 @@
 /// (e.g. `<CGAL/Surface_mesh.h>`) before this one, as for `CGAL::Seam_mesh`.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>

@@ -17,8 +17,8 @@ namespace Hyperbolic_orbifold_Tutte {
 \ingroup PkgHyperbolicOrbifoldTutteMainClasses
 
 The verdict of the bijectivity certificate on an embedding of a cut mesh into an
-orbifold tile, with the count of each kind of failure (NOTES.md, "A certificate of
-bijectivity"): every triangle positively oriented (exact predicate on the output
+orbifold tile, with the count of each kind of failure (the checks of the user manual's section on
+the certificate): every triangle positively oriented (exact predicate on the output
 coordinates); hyperbolic angle sums of \f$2\pi\f$ at interior and seam vertices (copies
 added), \f$\pi\f$ at sphere-type cones, \f$\pi/2\f$ at disk-type corners and \f$\pi\f$ at
 the other disk-boundary vertices; total hyperbolic area equal to the orbifold's; seam
@@ -27,6 +27,7 @@ vertices on their tile side.
 */
 struct Embedding_certificate
 {
+  /// faces checked (those of the cut mesh); 0 means nothing was certified
   std::size_t number_of_faces = 0;
   std::size_t points_outside_disk = 0;  ///< output points not strictly inside the unit disk (or not finite)
   std::size_t flipped_faces = 0;        ///< faces with negative orientation (exact)
@@ -41,7 +42,10 @@ struct Embedding_certificate
   double max_border_error = 0;          ///< Klein-model distance to the side's line
   double total_area = 0;                ///< signed sum of the triangles' hyperbolic areas
   double expected_area = 0;             ///< the orbifold's area (Gauss-Bonnet)
+  /// the absolute difference of `total_area` and `expected_area`
   double area_error = 0;
+  /// `true` when every point is inside the disk and `area_error` is within the tolerance
+  /// (relative to `expected_area` when it exceeds 1)
   bool area_ok = false;
 
   /// `true` when every check passed: the embedding is a bijection onto the orbifold
@@ -51,6 +55,7 @@ struct Embedding_certificate
            angle_sum_failures == 0 && twin_failures == 0 && cone_failures == 0 && border_failures == 0 && area_ok;
   }
 
+  /// writes the verdict and the count of each failure on one line
   friend std::ostream& operator<<(std::ostream& os, const Embedding_certificate& c)
   {
     return os << (c.is_bijective() ? "bijective" : "NOT bijective") << " (faces " << c.number_of_faces

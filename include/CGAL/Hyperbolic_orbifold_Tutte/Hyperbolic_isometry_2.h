@@ -141,7 +141,10 @@ public:
 
   /// \name Access
   /// @{
+
+  /// the coefficient \f$ a \f$
   const Complex& a() const { return a_; }
+  /// the coefficient \f$ b \f$
   const Complex& b() const { return b_; }
   /// `true` for M&ouml;bius maps, `false` for anti-M&ouml;bius maps
   bool is_orientation_preserving() const { return !reversing_; }
@@ -211,6 +214,7 @@ public:
   bool is_identity(const FT& tolerance = FT(1e-9)) const { return is_close(identity(), tolerance); }
   /// @}
 
+  /// writes the kind of map and its coefficients
   friend std::ostream& operator<<(std::ostream& os, const Hyperbolic_isometry_2& f)
   {
     return os << (f.reversing_ ? "anti-Mobius" : "Mobius") << " a=(" << f.a_.re << "," << f.a_.im

@@ -40,12 +40,26 @@ struct Embedding_statistics
   double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
   double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
   double relative_gradient_norm = 0;  ///< the same, relative to the norm of the sums of the absolute values of the edges' contributions (the forces' imbalance; its floor is the rounding error)
+  /// `true` when the solver reached the gradient tolerance
   bool converged = false;
   int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
   bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
   std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
+  /// \var time_setup
+  /// seconds spent checking the input, cutting the mesh and setting up the problem
+  /// \var time_initialization
+  /// seconds spent in the Euclidean Tutte initialisation
+  /// \var time_optimization
+  /// seconds spent in Newton's method
+  /// \var time_certificate
+  /// seconds spent certifying the result (and repairing one-rings)
   double time_setup = 0, time_initialization = 0, time_optimization = 0, time_certificate = 0;
+  /// \var time_assembly
+  /// seconds spent assembling the Newton systems (part of `time_optimization`)
+  /// \var time_factorization
+  /// seconds spent factoring the Newton matrices (part of `time_optimization`)
   double time_assembly = 0, time_factorization = 0, time_line_search = 0; ///< parts of `time_optimization`
+  /// the bijectivity certificate of the computed coordinates
   Embedding_certificate certificate;
   std::string message;                ///< one-line reason when the result is an error
   /// mesh vertices named by the error, as indices in the order of `vertices(tm)`
@@ -76,17 +90,29 @@ template <class SeamMesh, class Traits_ = Default>
 class Hyperbolic_orbifold_Tutte_parameterizer_3
 {
 public:
+  /// the cut mesh type
   typedef SeamMesh Seam_mesh;
+  /// the underlying mesh type
   typedef typename SeamMesh::TriangleMesh Triangle_mesh;
+  /// the vertex point map of the underlying mesh (its internal `vertex_point` map)
   typedef typename boost::property_map<Triangle_mesh, boost::vertex_point_t>::const_type Vertex_point_map;
+  /// the point type of the underlying mesh
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
+  /// the kernel of `Point_3`
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel Kernel;
+  /// the geometric traits: `Traits_`, or `Poincare_disk_traits_2<Kernel>` by default
   typedef typename Default::Get<Traits_, Poincare_disk_traits_2<Kernel> >::type Traits;
+  /// the type of the output points (Poincar&eacute;-disk coordinates)
   typedef typename Traits::Point_2 Point_2;
+  /// the orbifold tile type
   typedef Orbifold_tile<Traits> Tile;
+  /// halfedge descriptor of the cut mesh
   typedef typename boost::graph_traits<SeamMesh>::halfedge_descriptor halfedge_descriptor;
+  /// vertex descriptor of the cut mesh (the keys of the output map)
   typedef typename boost::graph_traits<SeamMesh>::vertex_descriptor vertex_descriptor;
+  /// vertex descriptor of the underlying mesh (the landmarks)
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor TM_vertex_descriptor;
+  /// edge descriptor of the underlying mesh
   typedef typename boost::graph_traits<Triangle_mesh>::edge_descriptor TM_edge_descriptor;
   /// user edge weights: a positive number per edge of the underlying mesh
   typedef std::function<double(const TM_edge_descriptor&)> Edge_weight_function;
@@ -94,6 +120,7 @@ public:
   /// \param type the orbifold's topology
   /// \param weights the edge weights
   /// \param epsilon the lower clamp of cotangent weights
+  /// \param traits the geometric traits
   explicit Hyperbolic_orbifold_Tutte_parameterizer_3(Orbifold_type type = Sphere_type, Weight_type weights = Cotangent,
                                                      double epsilon = 1e-6, const Traits& traits = Traits())
     : type_(type), weights_(weights), epsilon_(epsilon), traits_(traits)
@@ -101,7 +128,9 @@ public:
 
   /// the force imbalance (relative hyperbolic gradient norm, see `Embedding_statistics`) at which the solver stops (default \f$10^{-10}\f$)
   void set_gradient_tolerance(double t) { options_.gradient_tolerance = t; }
+  /// the maximum number of Newton iterations (default 200)
   void set_maximum_number_of_iterations(int n) { options_.max_iterations = n; }
+  /// prints the solver's progress on `std::cerr` when `v` is `true` (default `false`)
   void set_verbose(bool v) { options_.verbose = v; }
   /// uses `w(e)` as the weight of every edge `e` of the underlying mesh instead of the
   /// `Weight_type`; each must be positive and finite (else `ERROR_WRONG_PARAMETER`).

@@ -51,6 +51,7 @@ class Orbifold_signature
 {
 public:
   Orbifold_signature() : type_(Sphere_type) {}
+  /// the signature of the given type with cone (sphere type) or corner (disk type) orders `orders`
   Orbifold_signature(Orbifold_type type, std::vector<int> orders) : type_(type), orders_(std::move(orders)) {}
 
   /// sphere type with `k` cones of angle \f$\pi\f$
@@ -58,6 +59,7 @@ public:
   /// disk type with `k` boundary corners of angle \f$\pi/2\f$
   static Orbifold_signature disk(int k) { return Orbifold_signature(Disk_type, std::vector<int>(k < 0 ? 0 : k, 2)); }
 
+  /// sphere type or disk type
   Orbifold_type type() const { return type_; }
   /// number of cones (sphere type) or boundary corners (disk type)
   int number_of_cones() const { return static_cast<int>(orders_.size()); }
@@ -108,9 +110,13 @@ template <class Traits_ = Poincare_disk_traits_2<> >
 class Orbifold_tile
 {
 public:
+  /// the geometric traits
   typedef Traits_ Traits;
+  /// the number type of the traits
   typedef typename Traits::FT FT;
+  /// the point type of the traits (Poincar&eacute;-disk coordinates)
   typedef typename Traits::Point_2 Point_2;
+  /// the isometry type of the traits: the side pairings and group elements
   typedef typename Traits::Isometry Isometry;
 
 private:
@@ -149,14 +155,21 @@ public:
 
   /// \name Access
   /// @{
+
+  /// the orbifold's signature
   const Orbifold_signature& signature() const { return signature_; }
+  /// sphere type or disk type
   Orbifold_type type() const { return signature_.type(); }
+  /// the number of cones (sphere type) or boundary corners (disk type) of the orbifold
   int number_of_cones() const { return signature_.number_of_cones(); }
   /// the orbifold's hyperbolic area (Gauss-Bonnet), which is also the tile's
   double area() const { return signature_.area(); }
 
+  /// the number of corners of the tile (\f$2k-2\f$ for sphere type, \f$k\f$ for disk type)
   int number_of_corners() const { return static_cast<int>(corners_.size()); }
+  /// corner `i`
   const Point_2& corner(int i) const { return corners_[i]; }
+  /// the corners, counterclockwise
   const std::vector<Point_2>& corners() const { return corners_; }
   /// the cone of which corner `i` is a copy
   int corner_cone(int i) const { return corner_cones_[i]; }
@@ -165,14 +178,20 @@ public:
   /// the first corner (in counterclockwise order from corner 0) that is a copy of cone `c`:
   /// where the embedding places landmark `c`
   int cone_corner(int c) const { return cone_corners_[c]; }
+  /// the point of corner `cone_corner(c)`
   const Point_2& cone_point(int c) const { return corners_[cone_corners_[c]]; }
 
+  /// the number of sides (equal to the number of corners)
   int number_of_sides() const { return number_of_corners(); }
+  /// the corner where side `i` starts: `i`
   int side_source(int i) const { return i; }
+  /// the corner where side `i` ends: `i+1` modulo the number of corners
   int side_target(int i) const { return (i + 1) % number_of_corners(); }
+  /// the side glued to side `i` (side `i` itself for disk type)
   int paired_side(int i) const { return paired_sides_[i]; }
   /// the isometry mapping side `i` onto side `paired_side(i)`
   const Isometry& side_pairing(int i) const { return side_pairings_[i]; }
+  /// the geometric traits
   const Traits& traits() const { return traits_; }
   /// @}
 
@@ -297,6 +316,12 @@ counterclockwise, are \f$ p_1, \dots, p_k, q_{k-1}, \dots, q_2 \f$ (\f$2k-2\f$ o
 \f$q_j q_{j+1}\f$ by the orientation-preserving isometry "reflect in the geodesic
 \f$p_j p_{j+1}\f$, then conjugate".
 
+\tparam Traits a model of `HyperbolicOrbifoldTraits_2`
+\param type sphere type or disk type
+\param k the number of cones (sphere type) or corners (disk type)
+\param tile receives the tile
+\param traits the geometric traits stored in the tile
+
 \return `OK`, or `ERROR_NOT_HYPERBOLIC` when `k < 5` (the tile is left unchanged then).
 */
 template <class Traits>
@@ -383,6 +408,12 @@ Error_code make_orbifold_tile(Orbifold_type type, int k, Orbifold_tile<Traits>& 
 
 /// \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 /// builds the tile of the signature `signature` (see the other overload).
+/// \tparam Traits a model of `HyperbolicOrbifoldTraits_2`
+/// \param signature a signature whose orders are all 2
+/// \param tile receives the tile
+/// \param traits the geometric traits stored in the tile
+/// \return `OK`, `ERROR_WRONG_PARAMETER` when an order is not 2 (not built yet), or
+/// `ERROR_NOT_HYPERBOLIC` when there are fewer than 5 cones
 template <class Traits>
 Error_code make_orbifold_tile(const Orbifold_signature& signature, Orbifold_tile<Traits>& tile,
                               const Traits& traits = Traits())

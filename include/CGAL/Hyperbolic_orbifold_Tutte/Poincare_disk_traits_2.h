@@ -33,7 +33,9 @@ drawing, the Euclidean circle or diameter that carries it.
 template <class Kernel>
 struct Hyperbolic_geodesic_2
 {
+  /// the number type of the kernel
   typedef typename Kernel::FT FT;
+  /// the point type of the kernel
   typedef typename Kernel::Point_2 Point_2;
   Point_2 source;      ///< ideal end point behind the first defining point
   Point_2 target;      ///< ideal end point beyond the second defining point
@@ -63,11 +65,15 @@ template <class Kernel_ = CGAL::Exact_predicates_inexact_constructions_kernel>
 class Poincare_disk_traits_2 : public Kernel_
 {
 public:
+  /// the underlying kernel
   typedef Kernel_ Kernel;
+  /// the number type of the kernel
   typedef typename Kernel::FT FT;
+  /// a point of the open unit disk, in Poincar&eacute; coordinates
   typedef typename Kernel::Point_2 Point_2;
   /// the isometry type (coefficients in double precision)
   typedef Hyperbolic_isometry_2<double> Isometry;
+  /// a geodesic line (the result of `Construct_hyperbolic_geodesic_2`)
   typedef Hyperbolic_geodesic_2<Kernel> Geodesic_2;
 
 private:
@@ -76,6 +82,7 @@ private:
   static Point_2 to_p(const C& z) { return Point_2(FT(z.re), FT(z.im)); }
 
 public:
+  /// the traits over the kernel `k`
   Poincare_disk_traits_2(const Kernel& k = Kernel()) : Kernel(k) {}
 
   /// \name Constructions
@@ -84,6 +91,7 @@ public:
   /// maps a Poincar&eacute; point to its Klein point \f$ 2z / (1 + |z|^2) \f$
   struct Construct_Klein_point_2
   {
+    /// returns the Klein point of `p`
     Point_2 operator()(const Point_2& p) const
     {
       const C z = to_c(p);
@@ -94,6 +102,7 @@ public:
   /// maps a Klein point to its Poincar&eacute; point \f$ k / (1 + \sqrt{1 - |k|^2}) \f$
   struct Construct_Poincare_point_2
   {
+    /// returns the Poincar&eacute; point of the Klein point `k`
     Point_2 operator()(const Point_2& k) const
     {
       const C z = to_c(k);
@@ -107,6 +116,7 @@ public:
   /// same number without the cancellation of `acosh` near 1.
   struct Compute_hyperbolic_distance_2
   {
+    /// returns the hyperbolic distance of the Poincar&eacute; points `p` and `q`
     FT operator()(const Point_2& p, const Point_2& q) const
     {
       const C z = to_c(p), w = to_c(q);
@@ -118,6 +128,7 @@ public:
   /// hyperbolic distance of two Klein points (paper eq. (7))
   struct Compute_Klein_distance_2
   {
+    /// returns the hyperbolic distance of the Klein points `u` and `v`
     FT operator()(const Point_2& u, const Point_2& v) const
     {
       const C a = to_c(u), b = to_c(v);
@@ -130,18 +141,21 @@ public:
   /// the M&ouml;bius map \f$ m_p(z) = (z-p)/(1-\bar p z) \f$ moving `p` to the origin
   struct Construct_translation_to_origin_2
   {
+    /// returns \f$ m_p \f$
     Isometry operator()(const Point_2& p) const { return Isometry::translation_to_origin(to_c(p)); }
   };
 
   /// the image of a point by an isometry
   struct Construct_image_by_isometry_2
   {
+    /// returns \f$ f(p) \f$
     Point_2 operator()(const Isometry& f, const Point_2& p) const { return to_p(f.apply(to_c(p))); }
   };
 
   /// the geodesic line through two distinct points
   struct Construct_hyperbolic_geodesic_2
   {
+    /// returns the geodesic line through `p` and `q`, oriented from `p` to `q`
     Geodesic_2 operator()(const Point_2& p, const Point_2& q) const
     {
       // Move p to the origin: the geodesic becomes the diameter towards m_p(q).
@@ -174,6 +188,7 @@ public:
   /// the geodesic midpoint of two points
   struct Construct_hyperbolic_midpoint_2
   {
+    /// returns the geodesic midpoint of `p` and `q`
     Point_2 operator()(const Point_2& p, const Point_2& q) const
     {
       const Isometry to0 = Isometry::translation_to_origin(to_c(p));
@@ -187,6 +202,7 @@ public:
   /// the angle at `p`, in \f$[0,\pi]\f$, between the geodesics from `p` to `q` and from `p` to `r`
   struct Compute_hyperbolic_angle_2
   {
+    /// returns the angle at `p` of the geodesics towards `q` and `r`
     FT operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
       // The model is conformal: after moving p to the origin, geodesics from p are
@@ -202,6 +218,7 @@ public:
   /// the area of the geodesic triangle `pqr`: \f$ \pi \f$ minus its angle sum
   struct Compute_hyperbolic_triangle_area_2
   {
+    /// returns the (unsigned) hyperbolic area of the triangle `pqr`
     FT operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
       Compute_hyperbolic_angle_2 angle;
@@ -218,6 +235,7 @@ public:
   /// (no hyperbolic triangle has them).
   struct Compute_triangle_side_lengths_from_angles_2
   {
+    /// returns the side lengths opposite the angles `t1`, `t2`, `t3`, or nothing
     std::optional<std::array<FT, 3> > operator()(const FT& t1, const FT& t2, const FT& t3) const
     {
       const double t[3] = {CGAL::to_double(t1), CGAL::to_double(t2), CGAL::to_double(t3)};
@@ -242,7 +260,9 @@ public:
   /// orientation of the geodesic triangle `pqr`: the Euclidean orientation of its Klein image, exact
   struct Hyperbolic_orientation_2
   {
+    /// the result type
     typedef Orientation result_type;
+    /// returns the orientation of the geodesic triangle `pqr` (`LEFT_TURN`, `RIGHT_TURN` or `COLLINEAR`)
     Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
       return internal::poincare_orientation_sign_exact<FT>(p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
@@ -253,7 +273,9 @@ public:
   /// `ON_POSITIVE_SIDE` on its left, exact
   struct Side_of_oriented_hyperbolic_segment_2
   {
+    /// the result type
     typedef Oriented_side result_type;
+    /// returns the side of `r` with respect to the geodesic from `p` to `q`
     Oriented_side operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
       return internal::poincare_orientation_sign_exact<FT>(p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
@@ -264,7 +286,9 @@ public:
   /// \pre `pqr` is not degenerate
   struct Bounded_side_of_hyperbolic_triangle_2
   {
+    /// the result type
     typedef Bounded_side result_type;
+    /// returns the position of `t` with respect to the geodesic triangle `pqr`
     Bounded_side operator()(const Point_2& p, const Point_2& q, const Point_2& r, const Point_2& t) const
     {
       Hyperbolic_orientation_2 orient;
@@ -282,19 +306,34 @@ public:
 
   /// \name Accessors
   /// @{
+
+  /// returns a `Construct_Klein_point_2` object
   Construct_Klein_point_2 construct_Klein_point_2_object() const { return {}; }
+  /// returns a `Construct_Poincare_point_2` object
   Construct_Poincare_point_2 construct_Poincare_point_2_object() const { return {}; }
+  /// returns a `Compute_hyperbolic_distance_2` object
   Compute_hyperbolic_distance_2 compute_hyperbolic_distance_2_object() const { return {}; }
+  /// returns a `Compute_Klein_distance_2` object
   Compute_Klein_distance_2 compute_Klein_distance_2_object() const { return {}; }
+  /// returns a `Construct_translation_to_origin_2` object
   Construct_translation_to_origin_2 construct_translation_to_origin_2_object() const { return {}; }
+  /// returns a `Construct_image_by_isometry_2` object
   Construct_image_by_isometry_2 construct_image_by_isometry_2_object() const { return {}; }
+  /// returns a `Construct_hyperbolic_geodesic_2` object
   Construct_hyperbolic_geodesic_2 construct_hyperbolic_geodesic_2_object() const { return {}; }
+  /// returns a `Construct_hyperbolic_midpoint_2` object
   Construct_hyperbolic_midpoint_2 construct_hyperbolic_midpoint_2_object() const { return {}; }
+  /// returns a `Compute_hyperbolic_angle_2` object
   Compute_hyperbolic_angle_2 compute_hyperbolic_angle_2_object() const { return {}; }
+  /// returns a `Compute_hyperbolic_triangle_area_2` object
   Compute_hyperbolic_triangle_area_2 compute_hyperbolic_triangle_area_2_object() const { return {}; }
+  /// returns a `Compute_triangle_side_lengths_from_angles_2` object
   Compute_triangle_side_lengths_from_angles_2 compute_triangle_side_lengths_from_angles_2_object() const { return {}; }
+  /// returns a `Hyperbolic_orientation_2` object
   Hyperbolic_orientation_2 hyperbolic_orientation_2_object() const { return {}; }
+  /// returns a `Side_of_oriented_hyperbolic_segment_2` object
   Side_of_oriented_hyperbolic_segment_2 side_of_oriented_hyperbolic_segment_2_object() const { return {}; }
+  /// returns a `Bounded_side_of_hyperbolic_triangle_2` object
   Bounded_side_of_hyperbolic_triangle_2 bounded_side_of_hyperbolic_triangle_2_object() const { return {}; }
   /// @}
 };

@@ -37,11 +37,18 @@ whoever computed it: the cut is recovered from the corners whose coordinates dif
 two sides of an edge, then every check of `Embedding_certificate` is run, with the exact
 orientation predicate on the given coordinates.
 
+\tparam TriangleMesh a model of `FaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`)
+\tparam HalfedgeUVMap a model of `ReadablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and a
+        point type with `x()`, `y()` and `!=` as value type (e.g. `Point_2` of a %CGAL kernel)
+\tparam NamedParameters a sequence of named parameters
+
 \param tm the mesh
 \param landmarks the landmark vertices in cone order (the order the map was computed with,
        e.g. `Embedding_statistics::landmark_order` applied to the given landmarks)
 \param uvmap for every halfedge `h` of a face, the point of corner `target(h)` in `face(h)`
 \param certificate receives the verdict and the count of each failure
+\param message if not null, receives a one-line explanation of an error
 \param np optional named parameter `orbifold_type` (default: from the mesh's topology)
 
 \return `OK` when the map could be analysed (read `certificate.is_bijective()`), otherwise the

@@ -52,6 +52,8 @@ constexpr int number_of_error_codes = ERROR_BOUNDARY_CHORD + 1;
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteEnums
 returns a one-line description of `code`, never a null pointer.
+\param code any value (out-of-range values give "Unknown error code")
+\return a static, null-terminated English sentence
 */
 inline const char* error_message(Error_code code)
 {

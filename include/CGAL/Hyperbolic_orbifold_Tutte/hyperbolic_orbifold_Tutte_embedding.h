@@ -69,10 +69,12 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
 \tparam HalfedgeUVMap a model of `WritablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key and `Point_2` of the
         traits as value type
+\tparam NamedParameters a sequence of named parameters
 \param tm a closed genus-0 triangle mesh (sphere type) or a triangulated disk (disk type)
 \param landmarks at least 5 distinct vertices; for the disk type, on the boundary, in
        boundary order (either orientation)
 \param uvmap receives the coordinates; unchanged unless `OK` is returned
+\param np an optional sequence of named parameters among the ones listed below
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_point_map} \cgalParamDescription{the 3D points}

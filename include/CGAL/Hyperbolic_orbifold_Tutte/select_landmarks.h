@@ -22,6 +22,12 @@ farthest-point sampling on graph distance (Dijkstra over edges weighted by their
 starting from the vertex farthest from the first vertex); for a mesh with a border, `k`
 vertices of the longest border loop spaced evenly by arc length, in border order (usable
 as disk-type corners). Fewer are returned when the border has fewer vertices.
+
+\tparam TriangleMesh a model of `FaceGraph` and `VertexListGraph` (e.g. `Surface_mesh`,
+        `Polyhedron_3`) with an internal `vertex_point` property map
+\param tm the mesh
+\param k the number of landmarks
+\return the landmarks, at most `k` of them
 */
 template <class TriangleMesh>
 std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>

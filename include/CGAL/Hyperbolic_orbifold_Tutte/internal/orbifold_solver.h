@@ -6,6 +6,7 @@
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_ORBIFOLD_SOLVER_H
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -21,17 +22,6 @@
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 
-/*!
-\ingroup PkgHyperbolicOrbifoldTutteEnums
-The edge weights \f$ w_{ij} \f$ of the Dirichlet energy. All are positive, as the
-bijectivity theorem requires.
-*/
-enum Weight_type
-{
-  Cotangent,  ///< \f$ (\cot\alpha + \cot\beta)/2 \f$, clamped below at a small \f$\epsilon > 0\f$ (paper: \f$10^{-6}\f$)
-  Mean_value, ///< Floater's mean-value weights, symmetrized: \f$ (w_{ij} + w_{ji})/2 \f$
-  Uniform     ///< 1 for every edge (combinatorial)
-};
 
 namespace internal {
 
