@@ -110,5 +110,27 @@ case "$case_name" in
     expect_error "$tmp/x.cones" landmarks --mesh "$data/meshes/hand.off" --count 0 --out "$tmp/x.cones"
     expect_error "$tmp/x.cones" landmarks --mesh "$tmp/none.off" --count 7 --out "$tmp/x.cones"
     echo ok ;;
+  map)
+    # a mesh onto itself with the same landmarks: every vertex lands on itself (weight 1 at its corner)
+    for mesh in hand mushroom; do
+      "$prog" landmarks --mesh "$data/meshes/$mesh.off" --count 7 --out "$tmp/$mesh.cones" >/dev/null || fail "landmarks"
+      "$prog" map --source "$data/meshes/$mesh.off" --source-cones "$tmp/$mesh.cones" --target "$data/meshes/$mesh.off" \
+        --target-cones "$tmp/$mesh.cones" --out "$tmp/$mesh.map" --colors-out "$tmp/$mesh.ply" || fail "map $mesh"
+      nv=$(sed -n 2p "$data/meshes/$mesh.off" | awk '{print $1}')
+      [ "$(wc -l < "$tmp/$mesh.map")" -eq "$nv" ] || fail "one line per source vertex"
+      bad=$(awk -v n="$nv" 'BEGIN{nf=0} NR==FNR && FNR>2+n && NF==4 {fa[nf]=$2; fb[nf]=$3; fc[nf]=$4; nf++; next}
+                NR!=FNR { i=FNR-1; f=$1; s=$2+$3+$4; ok=(s>0.999999 && s<1.000001 && $2>=0 && $3>=0 && $4>=0);
+                          id=((fa[f]==i && $2>0.999999) || (fb[f]==i && $3>0.999999) || (fc[f]==i && $4>0.999999));
+                          if(!(ok && id)) bad++ } END {print bad+0}' "$data/meshes/$mesh.off" "$tmp/$mesh.map")
+      [ "$bad" -eq 0 ] || fail "$bad vertices of $mesh do not map onto themselves"
+      head -1 "$tmp/$mesh.ply" | grep -q ply || fail "ply"
+      [ "$(grep -c '' "$tmp/$mesh.ply")" -gt "$nv" ] || fail "ply content"
+    done
+    echo "1 2 3 4 5 6" > "$tmp/six"
+    expect_error "$tmp/x.map" map --source "$data/meshes/hand.off" --source-cones "$tmp/hand.cones" \
+      --target "$data/meshes/mushroom.off" --target-cones "$tmp/mushroom.cones" --out "$tmp/x.map"
+    expect_error "$tmp/x.map" map --source "$data/meshes/hand.off" --source-cones "$tmp/hand.cones" \
+      --target "$data/meshes/hand.off" --target-cones "$tmp/six" --out "$tmp/x.map"
+    echo ok ;;
   *) fail "unknown case $case_name" ;;
 esac

@@ -11,11 +11,13 @@
 // the mesh's header first: Seam_mesh calls CGAL::halfedges(tm) etc. qualified
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/svg_writer.h>
 
 #include <cerrno>
@@ -373,6 +375,146 @@ int run_embed(int argc, char** argv)
   return EXIT_SUCCESS;
 }
 
+// Reads, checks and embeds one mesh of a map or a collection with landmarks in cone order.
+struct Embedded
+{
+  Surface_mesh mesh;
+  HOT::Orbifold_type type = HOT::Sphere_type;
+  std::vector<SM_vertex> landmarks;                  // as read
+  std::vector<SM_vertex> ordered;                    // in cone order
+  Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> uv;
+  HOT::Embedding_statistics stats;
+};
+
+void read_and_check(const std::string& mesh_path, const std::string& cones_path, Embedded& e)
+{
+  HOT::internal::Check_result r = HOT::internal::read_mesh(mesh_path, e.mesh);
+  if(!r) throw Failure{r.code, r.message};
+  std::vector<std::size_t> ids;
+  r = HOT::internal::read_landmarks(cones_path, ids);
+  if(!r) throw Failure{r.code, r.message};
+  if(!HOT::internal::detect_orbifold_type(e.mesh, e.type))
+    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, mesh_path + ": the mesh is neither closed nor a disk"};
+  r = HOT::internal::check_mesh(e.mesh, e.type);
+  if(!r) throw Failure{r.code, mesh_path + ": " + r.message};
+  r = HOT::internal::check_landmarks(e.mesh, ids, e.type, e.landmarks);
+  if(!r) throw Failure{r.code, cones_path + ": " + r.message};
+}
+
+void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::string& name)
+{
+  e.ordered.clear();
+  for(std::size_t i : order) e.ordered.push_back(e.landmarks[i]);
+  e.uv = e.mesh.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    e.mesh, e.ordered, e.uv, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats)));
+  if(ec != HOT::OK)
+    throw Failure{ec, name + ": " + e.stats.message};
+}
+
+typedef HOT::internal::Embedding_point_locator<Surface_mesh, Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> > Locator;
+
+// barycentric coordinates w.r.t. the face's vertices in input order (read_mesh() builds face f
+// with source(halfedge(f)) = its first vertex in the file)
+std::array<double, 3> input_order_barycentric(const Surface_mesh& m, const Locator& loc, const Locator::Location& l)
+{
+  std::array<double, 3> b{{0, 0, 0}};
+  int j = 0;
+  for(SM_halfedge h : halfedges_around_face(prev(halfedge(l.face, m), m), m)) {
+    const std::size_t v = target(h, m).idx();
+    for(int c = 0; c < 3; ++c)
+      if(loc.corner_vertex_index(l.face_index, c) == v) b[j] = l.barycentric[c];
+    ++j;
+  }
+  return b;
+}
+
+int run_map(int argc, char** argv)
+{
+  const Options opt(argc, argv, 2, {"source", "source-cones", "target", "target-cones", "out", "colors-out"});
+  const std::string out = opt.get("out");
+  Embedded A, B;
+  read_and_check(opt.get("source"), opt.get("source-cones"), A);
+  read_and_check(opt.get("target"), opt.get("target-cones"), B);
+  if(A.type != B.type)
+    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, "the source is " + std::string(A.type == HOT::Sphere_type ? "closed" : "a disk") +
+                                           " but the target is " + (B.type == HOT::Sphere_type ? "closed" : "a disk")};
+  if(A.landmarks.size() != B.landmarks.size())
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the source has " + std::to_string(A.landmarks.size()) +
+                                              " landmarks and the target " + std::to_string(B.landmarks.size())};
+  // one cone order for both: the paper's tour on the source (sphere type), the given one (disk)
+  std::vector<std::size_t> order(A.landmarks.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if(A.type == HOT::Sphere_type) {
+    order = HOT::internal::compute_tsp_landmark_order(A.mesh, A.landmarks, get(CGAL::vertex_point, A.mesh));
+    if(order.size() != A.landmarks.size())
+      throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the source"};
+  }
+  embed_in_order(A, order, "source");
+  embed_in_order(B, order, "target");
+  const int k = static_cast<int>(order.size());
+  const Locator locB(B.mesh, B.uv, B.type, k, HOT::internal::Hyperboloid_linear);
+  const std::vector<Locator::Location> f = HOT::internal::map_vertices(A.mesh, A.uv, locB);
+  for(std::size_t i = 0; i < f.size(); ++i)
+    if(!f[i].success)
+      throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
+  std::vector<std::string> written;
+  try {
+    write_file_atomically(out, [&](std::ostream& os) {
+      os.precision(17);
+      for(const Locator::Location& l : f) {
+        const std::array<double, 3> b = input_order_barycentric(B.mesh, locB, l);
+        os << l.face_index << " " << b[0] << " " << b[1] << " " << b[2] << "\n";
+      }
+    });
+    written.push_back(out);
+    if(opt.has("colors-out")) {
+      // a smooth colouring of A (its bounding box mapped to RGB), carried to B by f_BA
+      const Locator locA(A.mesh, A.uv, A.type, k, HOT::internal::Hyperboloid_linear);
+      const std::vector<Locator::Location> g = HOT::internal::map_vertices(B.mesh, B.uv, locA);
+      const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(A.mesh);
+      auto colour = [&](const Kernel::Point_3& p) {
+        return Kernel::Vector_3((p.x() - bb.xmin()) / (bb.xmax() - bb.xmin() + 1e-300),
+                                (p.y() - bb.ymin()) / (bb.ymax() - bb.ymin() + 1e-300),
+                                (p.z() - bb.zmin()) / (bb.zmax() - bb.zmin() + 1e-300));
+      };
+      std::vector<Kernel::Vector_3> colA;
+      for(SM_vertex v : vertices(A.mesh)) colA.push_back(colour(A.mesh.point(v)));
+      const std::string path = opt.get("colors-out");
+      write_file_atomically(path, [&](std::ostream& os) {
+        os << "ply\nformat ascii 1.0\nelement vertex " << num_vertices(B.mesh)
+           << "\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+           << "element face " << num_faces(B.mesh) << "\nproperty list uchar int vertex_indices\nend_header\n";
+        os.precision(17);
+        std::size_t i = 0;
+        for(SM_vertex v : vertices(B.mesh)) {
+          const Locator::Location& l = g[i++];
+          Kernel::Vector_3 c(0.5, 0.5, 0.5);
+          if(l.success)
+            c = l.barycentric[0] * colA[locA.corner_vertex_index(l.face_index, 0)] +
+                l.barycentric[1] * colA[locA.corner_vertex_index(l.face_index, 1)] +
+                l.barycentric[2] * colA[locA.corner_vertex_index(l.face_index, 2)];
+          auto byte = [](double t) { return static_cast<int>(std::lround(255 * std::min(1.0, std::max(0.0, t)))); };
+          os << B.mesh.point(v) << " " << byte(c.x()) << " " << byte(c.y()) << " " << byte(c.z()) << "\n";
+        }
+        for(SM_face fc : faces(B.mesh)) {
+          os << "3";
+          for(SM_halfedge h : halfedges_around_face(prev(halfedge(fc, B.mesh), B.mesh), B.mesh))
+            os << " " << target(h, B.mesh).idx();
+          os << "\n";
+        }
+      });
+      written.push_back(path);
+    }
+  } catch(...) {
+    for(const std::string& w : written) std::remove(w.c_str());
+    throw;
+  }
+  std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << opt.get("source") << " onto "
+            << opt.get("target") << "; wrote " << out << std::endl;
+  return EXIT_SUCCESS;
+}
+
 int run_landmarks(int argc, char** argv)
 {
   const Options opt(argc, argv, 2, {"mesh", "count", "out"});
@@ -416,6 +558,8 @@ int main(int argc, char** argv)
       return run_embed(argc, argv);
     if(command == "landmarks")
       return run_landmarks(argc, argv);
+    if(command == "map")
+      return run_map(argc, argv);
     throw Usage_error{"unknown command '" + command + "'"};
   } catch(const Failure& e) {
     std::cerr << "hyperbolic_orbifold_tutte: " << HOT::error_message(e.code) << ": " << e.message << std::endl;
