@@ -132,5 +132,30 @@ case "$case_name" in
     expect_error "$tmp/x.map" map --source "$data/meshes/hand.off" --source-cones "$tmp/hand.cones" \
       --target "$data/meshes/hand.off" --target-cones "$tmp/six" --out "$tmp/x.map"
     echo ok ;;
+  collection)
+    # hand.off and two smooth deformations of it (same triangulation, same landmarks)
+    src="$data/meshes/hand.off"
+    nv=$(awk 'NR==2 {print $1}' "$src")
+    for d in a b c; do
+      awk -v n="$nv" -v d="$d" 'NR<=2 || NF==0 {print; next}
+        NF==3 && c<n { x=$1; y=$2; z=$3; c++;
+          if(d=="b") { x=x+0.1*sin(3*y); z=1.2*z } else if(d=="c") { x=0.9*x; y=y+0.05*cos(4*x) }
+          printf "%.9g %.9g %.9g\n", x, y, z; next } {print}' "$src" > "$tmp/hand_$d.off"
+    done
+    "$prog" landmarks --mesh "$tmp/hand_a.off" --count 9 --out "$tmp/cones.txt" >/dev/null || fail "landmarks"
+    printf '# a collection\nhand_a.off cones.txt\nhand_b.off cones.txt\nhand_c.off cones.txt\n' > "$tmp/list.txt"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/out" --all-pairs || fail "collection"
+    [ "$(ls "$tmp/out"/*.obj | wc -l)" -eq 3 ] || fail "3 embeddings"
+    [ "$(ls "$tmp/out"/*.map.txt | wc -l)" -eq 6 ] || fail "6 ordered pairs"
+    for f in "$tmp/out"/*.map.txt; do [ "$(wc -l < "$f")" -eq "$nv" ] || fail "$f lines"; done
+    cc=$(sed -n 's/.*"cycle_consistency_max_rel_error": \([^ ,}]*\).*/\1/p' "$tmp/out/report.json")
+    awk -v c="$cc" 'BEGIN { exit !(c != "" && c + 0 < 1e-8) }' || fail "cycle consistency $cc"
+    grep -q '"triples_checked": 6' "$tmp/out/report.json" || fail "triples"
+    # errors: a missing manifest, a mesh with another number of landmarks
+    expect_error "$tmp/o2/report.json" collection --manifest "$tmp/none.txt" --out "$tmp/o2"
+    echo "1 2 3 4 5" > "$tmp/five.txt"
+    printf 'hand_a.off cones.txt\nhand_b.off five.txt\n' > "$tmp/bad.txt"
+    expect_error "$tmp/o3/report.json" collection --manifest "$tmp/bad.txt" --out "$tmp/o3"
+    echo "ok (cycle consistency $cc)" ;;
   *) fail "unknown case $case_name" ;;
 esac

@@ -20,7 +20,13 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/svg_writer.h>
 
+#include <sys/stat.h>
+
+#include <atomic>
 #include <cerrno>
+#include <memory>
+#include <mutex>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -53,17 +59,24 @@ const char* const usage_text =
   "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
   "      bijective or the program fails. --order defaults to tsp for sphere type.\n";
 
-// --name value options; every option takes a value.
+// --name value options, and --flag options without value (listed in `flags`).
 class Options
 {
 public:
-  Options(int argc, char** argv, int first, const std::set<std::string>& known)
+  Options(int argc, char** argv, int first, const std::set<std::string>& known,
+          const std::set<std::string>& flags = std::set<std::string>())
   {
     for(int i = first; i < argc; ++i) {
       const std::string a = argv[i];
       if(a.size() < 3 || a.compare(0, 2, "--") != 0)
         throw Usage_error{"unexpected argument '" + a + "'"};
       const std::string name = a.substr(2);
+      if(flags.count(name)) {
+        if(values_.count(name))
+          throw Usage_error{"option '" + a + "' given twice"};
+        values_[name] = "1";
+        continue;
+      }
       if(!known.count(name))
         throw Usage_error{"unknown option '" + a + "'"};
       if(i + 1 >= argc)
@@ -231,6 +244,43 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
   svg.end(os);
 }
 
+// OUT.obj of `embed`: v = input vertices, vt = one Poincare point per cut-mesh vertex,
+// f = input faces in input order with their corners' vt
+void write_embedding_obj(std::ostream& os, const Surface_mesh& m,
+                         const Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2>& uv)
+{
+  std::vector<std::vector<std::pair<Kernel::Point_2, std::size_t> > > vts(num_vertices(m));
+  std::vector<Kernel::Point_2> vt_points;
+  std::vector<std::size_t> corner_vt(num_halfedges(m), 0);
+  for(SM_face f : faces(m))
+    for(SM_halfedge h : halfedges_around_face(halfedge(f, m), m)) {
+      const Kernel::Point_2 p = get(uv, h);
+      auto& list = vts[target(h, m).idx()];
+      std::size_t id = std::size_t(-1);
+      for(const auto& e : list)
+        if(e.first == p) { id = e.second; break; }
+      if(id == std::size_t(-1)) {
+        id = vt_points.size();
+        vt_points.push_back(p);
+        list.push_back(std::make_pair(p, id));
+      }
+      corner_vt[h.idx()] = id;
+    }
+  os.precision(17);
+  os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
+  for(SM_vertex v : vertices(m))
+    os << "v " << m.point(v) << "\n";
+  for(const auto& p : vt_points)
+    os << "vt " << p.x() << " " << p.y() << "\n";
+  for(SM_face f : faces(m)) {
+    os << "f";
+    // read_mesh() builds face f with source(halfedge(f)) = the file's first vertex of the face
+    for(SM_halfedge h : halfedges_around_face(prev(halfedge(f, m), m), m))
+      os << " " << target(h, m).idx() + 1 << "/" << corner_vt[h.idx()] + 1;
+    os << "\n";
+  }
+}
+
 int run_embed(int argc, char** argv)
 {
   const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report"});
@@ -287,42 +337,9 @@ int run_embed(int argc, char** argv)
   HOT::Orbifold_tile<> tile;
   HOT::make_orbifold_tile(type, static_cast<int>(landmarks.size()), tile);
 
-  // vt: one per cut-mesh vertex: corners of a vertex with the same point share it
-  std::vector<std::vector<std::pair<Kernel::Point_2, std::size_t> > > vts(num_vertices(m));
-  std::vector<Kernel::Point_2> vt_points;
-  std::map<SM_halfedge, std::size_t> corner_vt;
-  for(SM_face f : faces(m))
-    for(SM_halfedge h : halfedges_around_face(halfedge(f, m), m)) {
-      const Kernel::Point_2 p = get(uv, h);
-      auto& list = vts[target(h, m).idx()];
-      std::size_t id = std::size_t(-1);
-      for(const auto& e : list)
-        if(e.first == p) { id = e.second; break; }
-      if(id == std::size_t(-1)) {
-        id = vt_points.size();
-        vt_points.push_back(p);
-        list.push_back(std::make_pair(p, id));
-      }
-      corner_vt[h] = id;
-    }
-
   std::vector<std::string> written;
   try {
-    write_file_atomically(out_path, [&](std::ostream& os) {
-      os.precision(17);
-      os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
-      for(SM_vertex v : vertices(m))
-        os << "v " << m.point(v) << "\n";
-      for(const auto& p : vt_points)
-        os << "vt " << p.x() << " " << p.y() << "\n";
-      for(SM_face f : faces(m)) {
-        os << "f";
-        // read_mesh() builds face f with source(halfedge(f)) = the file's first vertex of the face
-        for(SM_halfedge h : halfedges_around_face(prev(halfedge(f, m), m), m))
-          os << " " << target(h, m).idx() + 1 << "/" << corner_vt[h] + 1;
-        os << "\n";
-      }
-    });
+    write_file_atomically(out_path, [&](std::ostream& os) { write_embedding_obj(os, m, uv); });
     written.push_back(out_path);
     if(opt.has("svg")) {
       const std::string svg = opt.get("svg");
@@ -515,6 +532,184 @@ int run_map(int argc, char** argv)
   return EXIT_SUCCESS;
 }
 
+int run_collection(int argc, char** argv)
+{
+  typedef std::chrono::steady_clock Clock;
+  const Options opt(argc, argv, 2, {"manifest", "out"}, {"all-pairs"});
+  const std::string manifest = opt.get("manifest"), dir = opt.get("out");
+  const bool all_pairs = opt.has("all-pairs");
+  std::ifstream in(manifest);
+  if(!in)
+    throw Failure{HOT::ERROR_READ_FAILED, "'" + manifest + "': cannot read"};
+  const std::string base = manifest.find('/') == std::string::npos ? std::string(".") : manifest.substr(0, manifest.find_last_of('/'));
+  auto resolve = [&](const std::string& f) { return (!f.empty() && f[0] == '/') ? f : base + "/" + f; };
+  std::vector<std::pair<std::string, std::string> > entries;
+  std::string line;
+  std::size_t line_no = 0;
+  while(std::getline(in, line)) {
+    ++line_no;
+    const std::size_t hash = line.find('#');
+    if(hash != std::string::npos) line = line.substr(0, hash);
+    std::istringstream ls(line);
+    std::string a, b, extra;
+    if(!(ls >> a)) continue;
+    if(!(ls >> b) || (ls >> extra))
+      throw Failure{HOT::ERROR_READ_FAILED, manifest + ": line " + std::to_string(line_no) + ": expected 'mesh_path cones_path'"};
+    entries.push_back(std::make_pair(resolve(a), resolve(b)));
+  }
+  if(entries.size() < 2)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, manifest + ": a collection needs at least 2 meshes"};
+  const std::size_t N = entries.size();
+  std::vector<Embedded> E(N);
+  for(std::size_t i = 0; i < N; ++i) {
+    read_and_check(entries[i].first, entries[i].second, E[i]);
+    if(E[i].type != E[0].type || E[i].landmarks.size() != E[0].landmarks.size())
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, entries[i].first + ": its topology or number of landmarks differs from the first mesh's"};
+  }
+  std::vector<std::size_t> order(E[0].landmarks.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if(E[0].type == HOT::Sphere_type) {
+    order = HOT::internal::compute_tsp_landmark_order(E[0].mesh, E[0].landmarks, get(CGAL::vertex_point, E[0].mesh));
+    if(order.size() != E[0].landmarks.size())
+      throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the first mesh"};
+  }
+  // embeddings, in parallel (each is independent: the result does not depend on the threads)
+  std::vector<double> embed_time(N, 0);
+  std::vector<std::string> errors(N);
+  std::vector<HOT::Error_code> codes(N, HOT::OK);
+  {
+    std::atomic<std::size_t> next(0), done(0);
+    std::mutex io;
+    auto worker = [&]() {
+      for(std::size_t i = next++; i < N; i = next++) {
+        const auto t = Clock::now();
+        try {
+          embed_in_order(E[i], order, entries[i].first);
+        } catch(const Failure& f) {
+          codes[i] = f.code;
+          errors[i] = f.message;
+        }
+        embed_time[i] = std::chrono::duration<double>(Clock::now() - t).count();
+        std::lock_guard<std::mutex> lock(io);
+        std::cerr << "  embedded " << ++done << "/" << N << ": " << entries[i].first << " (" << embed_time[i] << " s)" << std::endl;
+      }
+    };
+    const unsigned nt = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(N)));
+    std::vector<std::thread> threads;
+    for(unsigned t = 0; t < nt; ++t) threads.emplace_back(worker);
+    for(auto& t : threads) t.join();
+  }
+  for(std::size_t i = 0; i < N; ++i)
+    if(codes[i] != HOT::OK)
+      throw Failure{codes[i], errors[i]};
+  const int k = static_cast<int>(order.size());
+  std::vector<std::unique_ptr<Locator> > loc(N);
+  for(std::size_t i = 0; i < N; ++i)
+    loc[i].reset(new Locator(E[i].mesh, E[i].uv, E[i].type, k, HOT::internal::Hyperboloid_linear));
+  auto stem = [&](std::size_t i) {
+    std::string f = entries[i].first.substr(entries[i].first.find_last_of('/') + 1);
+    return std::to_string(i) + "_" + f.substr(0, f.find_last_of('.'));
+  };
+  // maps: f_ab for every ordered pair (needed for the files and for cycle consistency)
+  std::vector<std::vector<std::vector<Locator::Location> > > maps(N, std::vector<std::vector<Locator::Location> >(N));
+  std::vector<std::vector<double> > map_time(N, std::vector<double>(N, 0));
+  auto get_map = [&](std::size_t a, std::size_t b) -> const std::vector<Locator::Location>& {
+    if(maps[a][b].empty()) {
+      const auto t = Clock::now();
+      maps[a][b] = HOT::internal::map_vertices(E[a].mesh, E[a].uv, *loc[b]);
+      map_time[a][b] = std::chrono::duration<double>(Clock::now() - t).count();
+      for(std::size_t v = 0; v < maps[a][b].size(); ++v)
+        if(!maps[a][b][v].success)
+          throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(v) + " of mesh " + std::to_string(a) + " could not be located on mesh " + std::to_string(b)};
+    }
+    return maps[a][b];
+  };
+  // cycle consistency: f_bc(f_ab(x)) against f_ac(x), relative to c's bounding-box diagonal,
+  // over every triple (all of them up to 6 meshes, else N consecutive triples)
+  double cycle = 0;
+  std::size_t triples = 0;
+  auto check_triple = [&](std::size_t a, std::size_t b, std::size_t c) {
+    const auto& fab = get_map(a, b);
+    const auto& fac = get_map(a, c);
+    const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(E[c].mesh);
+    const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) + CGAL::square(bb.zmax() - bb.zmin()));
+    for(std::size_t v = 0; v < fab.size(); ++v) {
+      const Locator::Location lc = loc[c]->locate(loc[b]->disk_point(fab[v]));
+      if(!lc.success)
+        throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "a point of mesh " + std::to_string(b) + " could not be located on mesh " + std::to_string(c)};
+      const auto p1 = HOT::internal::surface_point(lc, *loc[c], get(CGAL::vertex_point, E[c].mesh));
+      const auto p2 = HOT::internal::surface_point(fac[v], *loc[c], get(CGAL::vertex_point, E[c].mesh));
+      cycle = std::max(cycle, std::sqrt(CGAL::squared_distance(p1, p2)) / diag);
+    }
+    ++triples;
+  };
+  if(N >= 3) {
+    if(N <= 6) {
+      for(std::size_t a = 0; a < N; ++a)
+        for(std::size_t b = 0; b < N; ++b)
+          for(std::size_t c = 0; c < N; ++c)
+            if(a != b && b != c && a != c) check_triple(a, b, c);
+    } else {
+      for(std::size_t a = 0; a < N; ++a) check_triple(a, (a + 1) % N, (a + 2) % N);
+    }
+  }
+  // files
+  if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
+    throw std::runtime_error("cannot create the folder '" + dir + "'");
+  std::vector<std::string> written;
+  try {
+    for(std::size_t i = 0; i < N; ++i) {
+      const std::string path = dir + "/" + stem(i) + ".obj";
+      write_file_atomically(path, [&](std::ostream& os) { write_embedding_obj(os, E[i].mesh, E[i].uv); });
+      written.push_back(path);
+    }
+    if(all_pairs)
+      for(std::size_t a = 0; a < N; ++a)
+        for(std::size_t b = 0; b < N; ++b) {
+          if(a == b) continue;
+          const auto& f = get_map(a, b);
+          const std::string path = dir + "/" + std::to_string(a) + "_to_" + std::to_string(b) + ".map.txt";
+          write_file_atomically(path, [&](std::ostream& os) {
+            os.precision(17);
+            for(const Locator::Location& l : f) {
+              const std::array<double, 3> bc = input_order_barycentric(E[b].mesh, *loc[b], l);
+              os << l.face_index << " " << bc[0] << " " << bc[1] << " " << bc[2] << "\n";
+            }
+          });
+          written.push_back(path);
+        }
+    const std::string rep = dir + "/report.json";
+    write_file_atomically(rep, [&](std::ostream& os) {
+      os.precision(17);
+      os << "{\n  \"meshes\": [\n";
+      for(std::size_t i = 0; i < N; ++i)
+        os << "    {\"index\": " << i << ", \"mesh\": \"" << json_escape(entries[i].first) << "\", \"vertices\": "
+           << num_vertices(E[i].mesh) << ", \"embedding_seconds\": " << embed_time[i] << ", \"iterations\": "
+           << E[i].stats.iterations << ", \"relative_gradient_norm\": " << E[i].stats.relative_gradient_norm
+           << ", \"bijective\": " << (E[i].stats.certificate.is_bijective() ? "true" : "false") << "}" << (i + 1 < N ? "," : "") << "\n";
+      os << "  ],\n  \"orbifold\": \"" << (E[0].type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << k
+         << ",\n  \"landmark_order_used\": [";
+      for(std::size_t i = 0; i < order.size(); ++i) os << (i ? ", " : "") << order[i];
+      os << "],\n  \"pairs\": [\n";
+      bool first = true;
+      for(std::size_t a = 0; a < N; ++a)
+        for(std::size_t b = 0; b < N; ++b)
+          if(!maps[a][b].empty()) {
+            os << (first ? "" : ",\n") << "    {\"source\": " << a << ", \"target\": " << b << ", \"map_seconds\": " << map_time[a][b] << "}";
+            first = false;
+          }
+      os << "\n  ],\n  \"triples_checked\": " << triples << ",\n  \"cycle_consistency_max_rel_error\": " << cycle << "\n}\n";
+    });
+    written.push_back(rep);
+  } catch(...) {
+    for(const std::string& w : written) std::remove(w.c_str());
+    throw;
+  }
+  std::cout << "collection of " << N << " meshes embedded" << (all_pairs ? " and mapped pairwise" : "") << "; "
+            << triples << " triples checked, cycle consistency " << cycle << "; wrote " << dir << std::endl;
+  return EXIT_SUCCESS;
+}
+
 int run_landmarks(int argc, char** argv)
 {
   const Options opt(argc, argv, 2, {"mesh", "count", "out"});
@@ -560,6 +755,8 @@ int main(int argc, char** argv)
       return run_landmarks(argc, argv);
     if(command == "map")
       return run_map(argc, argv);
+    if(command == "collection")
+      return run_collection(argc, argv);
     throw Usage_error{"unknown command '" + command + "'"};
   } catch(const Failure& e) {
     std::cerr << "hyperbolic_orbifold_tutte: " << HOT::error_message(e.code) << ": " << e.message << std::endl;
