@@ -127,6 +127,10 @@ case "$case_name" in
       [ "$(grep -c '' "$tmp/$mesh.ply")" -gt "$nv" ] || fail "ply content"
     done
     echo "1 2 3 4 5 6" > "$tmp/six"
+    # disk landmarks given the other way around the boundary: no orientation-preserving map
+    tac "$tmp/mushroom.cones" > "$tmp/mushroom.rev"
+    expect_error "$tmp/x.map" map --source "$data/meshes/mushroom.off" --source-cones "$tmp/mushroom.cones" \
+      --target "$data/meshes/mushroom.off" --target-cones "$tmp/mushroom.rev" --out "$tmp/x.map"
     expect_error "$tmp/x.map" map --source "$data/meshes/hand.off" --source-cones "$tmp/hand.cones" \
       --target "$data/meshes/mushroom.off" --target-cones "$tmp/mushroom.cones" --out "$tmp/x.map"
     expect_error "$tmp/x.map" map --source "$data/meshes/hand.off" --source-cones "$tmp/hand.cones" \

@@ -469,6 +469,9 @@ int run_map(int argc, char** argv)
   }
   embed_in_order(A, order, "source");
   embed_in_order(B, order, "target");
+  if(A.stats.landmark_order_reversed != B.stats.landmark_order_reversed)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
+                                              "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
   const Locator locB(B.mesh, B.uv, B.type, k, HOT::internal::Hyperboloid_linear);
   const std::vector<Locator::Location> f = HOT::internal::map_vertices(A.mesh, A.uv, locB);
@@ -602,6 +605,10 @@ int run_collection(int argc, char** argv)
   for(std::size_t i = 0; i < N; ++i)
     if(codes[i] != HOT::OK)
       throw Failure{codes[i], errors[i]};
+  for(std::size_t i = 1; i < N; ++i)
+    if(E[i].stats.landmark_order_reversed != E[0].stats.landmark_order_reversed)
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, entries[i].first + ": its landmarks run around the boundary the other way than the first mesh's: "
+                                                "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
   std::vector<std::unique_ptr<Locator> > loc(N);
   for(std::size_t i = 0; i < N; ++i)

@@ -73,6 +73,9 @@
 //     centroid, with a visited set. Before the triangle containing q is expanded only
 //     triangles closer than the farthest one along some path from the start to it can
 //     be expanded, a finite set (the group acts properly discontinuously), so it ends.
+//     (Capped at 64 x (number of faces) + 100000 expansions for input that is not an
+//     embedding; then the candidate with the largest smallest coordinate is returned,
+//     with success only if that coordinate is above -1e-9.)
 //
 // The reported element is g = h^{-1} r (g(z) is in the face); the barycentric coordinates
 // are those of g(z) = h^{-1}(q) w.r.t. the face's stored corners, in Klein coordinates of
@@ -194,7 +197,7 @@ public:
 
   /// builds the locator of the embedding `uv` of `tm` into the orbifold of `tile`
   Embedding_point_locator(const TriangleMesh& tm, HalfedgeUVMap uv, const Tile& tile,
-                          Interpolation_model model = Klein_linear)
+                          Interpolation_model model = Hyperboloid_linear)
     : model_(model)
   {
     build(tm, uv, tile);
@@ -202,7 +205,7 @@ public:
 
   /// builds the locator of the embedding `uv` of `tm` into the orbifold of the given type with `k` cones
   Embedding_point_locator(const TriangleMesh& tm, HalfedgeUVMap uv, Orbifold_type type, int k,
-                          Interpolation_model model = Klein_linear)
+                          Interpolation_model model = Hyperboloid_linear)
     : model_(model)
   {
     Tile tile;

@@ -1,0 +1,938 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Exact point location in an orbifold embedding and the surface-to-surface vertex maps
+// of the paper's section 7: identity maps, landmarks onto landmarks, maps between a mesh
+// and smooth deformations of it, round trips A -> B -> A, cycle consistency over three
+// meshes, location of hostile points (near the unit circle, tile corners, the cut), the
+// transfer matrix, and the time to map a 26K-vertex mesh.
+
+#include "test_harness.h"
+#include "test_common_meshes.h"
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
+#include <CGAL/Random.h>
+
+#include <chrono>
+#include <memory>
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+using namespace hot_test;
+typedef HOT::internal::Complex<double> C;
+typedef HOT::Hyperbolic_isometry_2<double> Isometry;
+typedef K::Point_2 Point_2;
+typedef K::Point_3 Point_3;
+typedef K::Vector_3 Vector_3;
+typedef Mesh::Property_map<halfedge_descriptor, Point_2> UV_map;
+typedef HOT::internal::Embedding_point_locator<Mesh, UV_map> Locator;
+typedef Locator::Location Location;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+typedef std::chrono::steady_clock Clock;
+
+static CGAL::Random rng(2026);
+
+static double seconds_since(const Clock::time_point& t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// A mesh embedded into an orbifold, its landmarks in cone order (landmark i at cone i).
+struct Embedded
+{
+  std::string name;
+  Mesh mesh;
+  UV_map uv;
+  std::vector<vertex_descriptor> landmarks; // in cone order
+  HOT::Embedding_statistics st;
+  HOT::Error_code ec = HOT::ERROR_WRONG_PARAMETER;
+  double diag = 1;
+  std::unique_ptr<Locator> locator;    // Klein_linear barycentric coordinates
+  std::unique_ptr<Locator> locator_h;  // Hyperboloid_linear
+  const Locator& loc(HOT::internal::Interpolation_model m) const { return m == HOT::internal::Klein_linear ? *locator : *locator_h; }
+};
+static const HOT::internal::Interpolation_model models[2] = {HOT::internal::Klein_linear, HOT::internal::Hyperboloid_linear};
+static const char* model_name(HOT::internal::Interpolation_model m) { return m == HOT::internal::Klein_linear ? "Klein" : "hyperboloid"; }
+typedef std::unique_ptr<Embedded> Embedded_ptr;
+
+static double bbox_diagonal(const Mesh& m)
+{
+  CGAL::Bbox_3 b;
+  for(vertex_descriptor v : vertices(m))
+    b += m.point(v).bbox();
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                   CGAL::square(b.zmax() - b.zmin()));
+}
+
+// embeds `m` with the landmarks `lm`; with Tsp_order the landmarks are reordered into the
+// order used (Embedding_statistics::landmark_order), so that landmark i is at cone i
+static Embedded_ptr embed(const std::string& name, const Mesh& m, const std::vector<vertex_descriptor>& lm,
+                          HOT::Landmark_order order = HOT::Given_order)
+{
+  Embedded_ptr e(new Embedded);
+  e->name = name;
+  e->mesh = m;
+  e->uv = e->mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+  e->ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    e->mesh, lm, e->uv, HOT::parameters::embedding_statistics(&e->st, HOT::parameters::landmark_order(order)));
+  CHECK_MSG(e->ec == HOT::OK, name << ": " << e->st.message);
+  CHECK_MSG(e->st.certificate.is_bijective(), name << ": " << e->st.certificate);
+  e->landmarks.clear();
+  for(std::size_t i : e->st.landmark_order)
+    e->landmarks.push_back(lm[i]);
+  e->diag = bbox_diagonal(e->mesh);
+  if(e->ec == HOT::OK) {
+    const HOT::Orbifold_type type = is_closed(e->mesh) ? HOT::Sphere_type : HOT::Disk_type;
+    e->locator.reset(new Locator(e->mesh, e->uv, type, static_cast<int>(lm.size())));
+    e->locator_h.reset(new Locator(e->mesh, e->uv, type, static_cast<int>(lm.size()), HOT::internal::Hyperboloid_linear));
+    CHECK_MSG(e->locator->is_valid() && e->locator_h->is_valid(), name << ": " << e->locator->message());
+    CHECK(e->locator->number_of_inverted_faces() == 0);
+    if(type == HOT::Sphere_type)
+      CHECK(e->locator->number_of_cut_edges() > 0 && e->locator->number_of_border_edges() == 0);
+    else
+      CHECK(e->locator->number_of_cut_edges() == 0 && e->locator->number_of_border_edges() > 0);
+  }
+  return e;
+}
+
+// a smooth deformation with the same triangulation (bend and stretch, relative to the
+// bbox, scaled by `amplitude`); variant 0: a similarity (rotation, uniform scaling,
+// translation), which leaves every cotangent weight, hence the embedding, unchanged
+static Mesh deform(const Mesh& m, int variant, double amplitude = 1.0)
+{
+  Mesh d = m;
+  CGAL::Bbox_3 b;
+  for(vertex_descriptor v : vertices(m))
+    b += m.point(v).bbox();
+  const double L = bbox_diagonal(m);
+  const double cx = (b.xmin() + b.xmax()) / 2, cy = (b.ymin() + b.ymax()) / 2, cz = (b.zmin() + b.zmax()) / 2;
+  for(vertex_descriptor v : vertices(d)) {
+    const Point_3& p = m.point(v);
+    const double x = (p.x() - cx) / L, y = (p.y() - cy) / L, z = (p.z() - cz) / L;
+    double X = x, Y = y, Z = z;
+    if(variant == 0) {
+      const double c = std::cos(0.7), s = std::sin(0.7), k = 1.7;
+      X = k * (c * x - s * z) + 0.3;
+      Y = k * y - 0.2;
+      Z = k * (s * x + c * z) + 0.1;
+    } else if(variant == 1) {
+      X += amplitude * (0.05 * std::sin(2 * y));
+      Y += amplitude * (0.15 * y + 0.03 * std::sin(3 * z));
+      Z += amplitude * (0.04 * std::cos(2 * x));
+    } else {
+      X += amplitude * (-0.1 * x + 0.03 * std::sin(4 * z));
+      Y += amplitude * (0.05 * std::sin(3 * x));
+      Z += amplitude * (0.1 * z + 0.03 * std::sin(2 * y));
+    }
+    d.point(v) = Point_3(cx + L * X, cy + L * Y, cz + L * Z);
+  }
+  return d;
+}
+
+static Point_3 surface_point(const Embedded& e, const Location& l)
+{
+  return HOT::internal::surface_point(l, *e.locator, get(CGAL::vertex_point, e.mesh));
+}
+
+// the image of a location of B on C: its disk point in B's fundamental domain, located in C
+static Location forward(const Embedded& b, const Location& l, const Embedded& c,
+                        HOT::internal::Interpolation_model m = HOT::internal::Klein_linear)
+{
+  return c.loc(m).locate(b.loc(m).disk_point(l));
+}
+
+static double hyperbolic_distance(const Point_2& a, const Point_2& b)
+{
+  return HOT::Poincare_disk_traits_2<>().compute_hyperbolic_distance_2_object()(a, b);
+}
+
+// the sphere-type meshes: hand (7 landmarks in TSP order), its deformations with the same
+// landmark indices (Given_order), homer (its own 7 landmarks in TSP order)
+struct Sphere_family
+{
+  Embedded_ptr hand, hand1, hand2, homer;
+};
+static Sphere_family& sphere_family()
+{
+  static Sphere_family f;
+  if(!f.hand) {
+    Mesh hand, homer;
+    CHECK_MSG(read_demo_mesh("hand", hand), "cannot read hand from " << data_dir());
+    CHECK(read_demo_mesh("homer", homer));
+    f.hand = embed("hand", hand, farthest_point_landmarks(hand, 7), HOT::Tsp_order);
+    f.hand1 = embed("hand-deformed-1", deform(hand, 1), f.hand->landmarks);
+    f.hand2 = embed("hand-deformed-2", deform(hand, 2), f.hand->landmarks);
+    f.homer = embed("homer", homer, farthest_point_landmarks(homer, 7), HOT::Tsp_order);
+  }
+  return f;
+}
+
+struct Disk_family
+{
+  Embedded_ptr mushroom, mushroom1, mushroom2;
+  std::vector<vertex_descriptor> landmarks;
+};
+static Disk_family& disk_family()
+{
+  static Disk_family f;
+  if(!f.mushroom) {
+    Mesh m;
+    CHECK(read_demo_mesh("mushroom", m));
+    f.landmarks = boundary_landmarks(m, 6, 0.3);
+    f.mushroom = embed("mushroom", m, f.landmarks);
+    f.mushroom1 = embed("mushroom-deformed-1", deform(m, 1), f.landmarks);
+    f.mushroom2 = embed("mushroom-deformed-2", deform(m, 2), f.landmarks);
+    // same boundary orientation in all three: landmark i is at corner i in each
+    CHECK(f.mushroom1->st.landmark_order_reversed == f.mushroom->st.landmark_order_reversed);
+    CHECK(f.mushroom2->st.landmark_order_reversed == f.mushroom->st.landmark_order_reversed);
+  }
+  return f;
+}
+
+static bool ready(std::initializer_list<const Embedded*> es)
+{
+  for(const Embedded* e : es)
+    if(!e || !e->locator || !e->locator->is_valid() || !e->locator_h || !e->locator_h->is_valid())
+      return false;
+  return true;
+}
+
+static double dist3(const Point_3& a, const Point_3& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
+
+static Location random_face_point(const Embedded& a)
+{
+  Location l0;
+  l0.face_index = static_cast<std::size_t>(rng.get_int(0, static_cast<int>(num_faces(a.mesh))));
+  double b0 = rng.get_double(), b1 = rng.get_double();
+  if(b0 + b1 > 1) { b0 = 1 - b0; b1 = 1 - b1; }
+  l0.barycentric = {{b0, b1, 1 - b0 - b1}};
+  l0.success = true;
+  return l0;
+}
+
+// ---- identity ------------------------------------------------------------------
+
+// A == B: every vertex maps to itself; random points of faces come back to themselves
+// through the disk (these go through the walk: they are no corner's point)
+static void check_identity(const Embedded& a, HOT::internal::Interpolation_model m)
+{
+  const Locator& L = a.loc(m);
+  const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, L);
+  CHECK(locs.size() == num_vertices(a.mesh));
+  double worst = 0;
+  std::size_t i = 0, failed = 0;
+  for(vertex_descriptor v : vertices(a.mesh)) {
+    const Location& l = locs[i++];
+    if(!l.success) { ++failed; continue; }
+    worst = std::max(worst, dist3(surface_point(a, l), a.mesh.point(v)) / a.diag);
+  }
+  CHECK_MSG(failed == 0, a.name << ": " << failed << " vertices not located");
+  CHECK_MSG(worst < 1e-9, a.name << ": identity map moves a vertex by " << worst << " x diagonal");
+
+  double worst_inner = 0, worst_bary = 0;
+  std::size_t searched = 0, other_face = 0;
+  for(int trial = 0; trial < 2000; ++trial) {
+    const Location l0 = random_face_point(a);
+    const Location l = L.locate(L.disk_point(l0));
+    CHECK(l.success);
+    if(!l.success) continue;
+    searched += l.used_search;
+    worst_inner = std::max(worst_inner, dist3(surface_point(a, l), surface_point(a, l0)) / a.diag);
+    if(l.face_index == l0.face_index) {
+      for(int j = 0; j < 3; ++j)
+        worst_bary = std::max(worst_bary, std::abs(l.barycentric[j] - l0.barycentric[j]));
+    } else {
+      ++other_face;
+    }
+  }
+  CHECK_MSG(worst_inner < 1e-9, a.name << ": face points come back moved by " << worst_inner << " x diagonal");
+  // (coordinates in a needle triangle are ill-conditioned: hand has one with an angle of pi - 5e-7)
+  CHECK_MSG(worst_bary < 1e-6, a.name << ": barycentric coordinates come back changed by " << worst_bary);
+  CHECK(other_face == 0); // random inner points are on no edge
+  std::cout << "  " << a.name << " (" << model_name(m) << "): identity on " << num_vertices(a.mesh)
+            << " vertices, worst " << worst << " x diag; 2000 face points, worst " << worst_inner
+            << " x diag, barycentric " << worst_bary << ", fallback searches " << searched << std::endl;
+}
+
+TEST_CASE(identity_map_sphere)
+{
+  Sphere_family& f = sphere_family();
+  for(auto m : models) {
+    if(ready({f.hand.get()})) check_identity(*f.hand, m);
+    if(ready({f.homer.get()})) check_identity(*f.homer, m);
+  }
+}
+
+TEST_CASE(identity_map_disk)
+{
+  Disk_family& f = disk_family();
+  for(auto m : models)
+    if(ready({f.mushroom.get()})) check_identity(*f.mushroom, m);
+}
+
+// ---- landmarks ---------------------------------------------------------------------
+
+static void check_landmarks(const Embedded& a, const Embedded& b, HOT::internal::Interpolation_model m)
+{
+  CHECK(a.landmarks.size() == b.landmarks.size());
+  const Locator& L = b.loc(m);
+  const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, L);
+  std::vector<std::size_t> index(num_vertices(a.mesh));
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(a.mesh)) index[v.idx()] = i++;
+  for(std::size_t c = 0; c < a.landmarks.size() && c < b.landmarks.size(); ++c) {
+    const Location& l = locs[index[a.landmarks[c].idx()]];
+    CHECK(l.success);
+    if(!l.success) continue;
+    // exactly at the corresponding landmark: weight exactly 1 on it
+    bool exact = false;
+    for(int j = 0; j < 3; ++j)
+      if(L.vertex(L.corner_vertex_index(l.face_index, j)) == b.landmarks[c] && l.barycentric[j] == 1.0)
+        exact = true;
+    CHECK_MSG(exact, a.name << " -> " << b.name << ": landmark " << c << " lands at barycentric (" << l.barycentric[0]
+                            << ", " << l.barycentric[1] << ", " << l.barycentric[2] << ")");
+    CHECK(surface_point(b, l) == b.mesh.point(b.landmarks[c]));
+  }
+}
+
+TEST_CASE(landmarks_map_onto_landmarks)
+{
+  Sphere_family& f = sphere_family();
+  Disk_family& d = disk_family();
+  for(auto m : models) {
+    if(ready({f.hand.get(), f.hand1.get(), f.homer.get()})) {
+      check_landmarks(*f.hand, *f.hand1, m);
+      check_landmarks(*f.hand1, *f.hand, m);
+      check_landmarks(*f.hand, *f.homer, m);
+      check_landmarks(*f.homer, *f.hand, m);
+    }
+    if(ready({d.mushroom.get(), d.mushroom1.get()})) {
+      check_landmarks(*d.mushroom, *d.mushroom1, m);
+      check_landmarks(*d.mushroom1, *d.mushroom, m);
+    }
+  }
+}
+
+// ---- a mesh and a deformation of it: close to the identity --------------------------
+
+struct Error_stats
+{
+  double max = 0, mean = 0;
+};
+
+// vertex v of A goes to a point of B; the identity would be vertex v of B (same triangulation)
+static Error_stats deformation_error(const Embedded& a, const Embedded& b,
+                                     HOT::internal::Interpolation_model m = HOT::internal::Klein_linear)
+{
+  const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, b.loc(m));
+  Error_stats s;
+  std::size_t i = 0, n = 0;
+  for(vertex_descriptor v : vertices(a.mesh)) {
+    const Location& l = locs[i++];
+    CHECK(l.success);
+    if(!l.success) continue;
+    const double e = dist3(surface_point(b, l), b.mesh.point(v)) / b.diag;
+    s.max = std::max(s.max, e);
+    s.mean += e;
+    ++n;
+  }
+  s.mean /= std::max<std::size_t>(n, 1);
+  return s;
+}
+
+// how far the deformation moves the vertices (B's vertex v vs A's, the bbox centres aligned)
+static Error_stats displacement(const Embedded& a, const Embedded& b)
+{
+  CGAL::Bbox_3 ba, bb;
+  for(vertex_descriptor v : vertices(a.mesh)) { ba += a.mesh.point(v).bbox(); bb += b.mesh.point(v).bbox(); }
+  const Vector_3 shift((bb.xmin() + bb.xmax() - ba.xmin() - ba.xmax()) / 2, (bb.ymin() + bb.ymax() - ba.ymin() - ba.ymax()) / 2,
+                       (bb.zmin() + bb.zmax() - ba.zmin() - ba.zmax()) / 2);
+  Error_stats s;
+  for(vertex_descriptor v : vertices(a.mesh)) {
+    const double e = dist3(a.mesh.point(v) + shift, b.mesh.point(v)) / b.diag;
+    s.max = std::max(s.max, e);
+    s.mean += e;
+  }
+  s.mean /= num_vertices(a.mesh);
+  return s;
+}
+
+// A similarity leaves the embedding unchanged (the same cotangent weights): the map is the
+// identity up to the solver's tolerance. A smooth deformation gives a map close to the
+// identity, whose error shrinks with the deformation (first order: by 4 when it is divided by 4).
+static void check_deformations(const Embedded& a, const std::vector<vertex_descriptor>& landmarks)
+{
+  Embedded_ptr sim = embed(a.name + "-similar", deform(a.mesh, 0), landmarks);
+  if(ready({sim.get()}))
+    for(auto m : models) {
+      const Error_stats s = deformation_error(a, *sim, m);
+      std::cout << "  " << a.name << " -> similarity (" << model_name(m) << "): vertex error max " << s.max << ", mean "
+                << s.mean << " x diagonal" << std::endl;
+      CHECK_MSG(s.max < 1e-6, a.name << " similarity: " << s.max);
+    }
+  for(int variant : {1, 2}) {
+    Error_stats e[2], d[2];
+    const double amplitude[2] = {1.0, 0.25};
+    for(int i = 0; i < 2; ++i) {
+      Embedded_ptr b = embed(a.name + "-deformed", deform(a.mesh, variant, amplitude[i]), landmarks);
+      if(!ready({b.get()})) return;
+      e[i] = deformation_error(a, *b);
+      const Error_stats eh = deformation_error(a, *b, HOT::internal::Hyperboloid_linear);
+      d[i] = displacement(a, *b);
+      std::cout << "  " << a.name << " -> deformation " << variant << " x " << amplitude[i] << " (displacement max "
+                << d[i].max << ", mean " << d[i].mean << "): vertex error max " << e[i].max << ", mean " << e[i].mean
+                << " x diagonal (hyperboloid coordinates: max " << eh.max << ", mean " << eh.mean << ")" << std::endl;
+    }
+    // the map moves vertices by about as much as the deformation moves them (tangential
+    // sliding of the same order), not more
+    for(int i = 0; i < 2; ++i)
+      CHECK_MSG(e[i].mean < 2 * d[i].mean && e[i].max < 4 * d[i].max,
+                a.name << " deformation " << variant << " x " << amplitude[i] << ": error max " << e[i].max << " mean "
+                       << e[i].mean << ", displacement max " << d[i].max << " mean " << d[i].mean);
+    CHECK_MSG(e[1].mean < 0.4 * e[0].mean, a.name << " deformation " << variant << ": error " << e[0].mean << " -> " << e[1].mean
+                                                << " when the deformation is divided by 4");
+  }
+}
+
+TEST_CASE(deformation_map_is_close_to_identity)
+{
+  Sphere_family& f = sphere_family();
+  Disk_family& d = disk_family();
+  if(ready({f.hand.get(), f.hand1.get()})) {
+    check_deformations(*f.hand, f.hand->landmarks);
+    // negative control: the same landmarks in reversed cone order (the same cut path, the
+    // cones swapped end for end) give a map that is far from the identity
+    std::vector<vertex_descriptor> rev(f.hand->landmarks.rbegin(), f.hand->landmarks.rend());
+    Embedded_ptr r = embed("hand-deformed-1-reversed", f.hand1->mesh, rev);
+    if(ready({r.get()})) {
+      const Error_stats s = deformation_error(*f.hand, *r);
+      std::cout << "  hand -> reversed landmarks: vertex error max " << s.max << ", mean " << s.mean << std::endl;
+      CHECK_MSG(s.mean > 0.05, "the reversed correspondence is not detected: mean " << s.mean);
+    }
+  }
+  if(ready({d.mushroom.get()}))
+    check_deformations(*d.mushroom, d.landmarks);
+}
+
+// ---- round trips and cycle consistency ------------------------------------------------
+
+// A -> B -> A: every vertex of A comes back to itself; also points inside A's faces
+static void check_round_trip(const Embedded& a, const Embedded& b, HOT::internal::Interpolation_model m)
+{
+  const std::vector<Location> ab = HOT::internal::map_vertices(a.mesh, a.uv, b.loc(m));
+  double worst = 0;
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(a.mesh)) {
+    const Location& l = ab[i++];
+    CHECK(l.success);
+    if(!l.success) continue;
+    const Location back = forward(b, l, a, m);
+    CHECK(back.success);
+    if(!back.success) continue;
+    worst = std::max(worst, dist3(surface_point(a, back), a.mesh.point(v)) / a.diag);
+  }
+  double worst_inner = 0;
+  for(int trial = 0; trial < 1000; ++trial) {
+    const Location l0 = random_face_point(a);
+    const Location there = forward(a, l0, b, m);
+    CHECK(there.success);
+    const Location back = forward(b, there, a, m);
+    CHECK(back.success);
+    worst_inner = std::max(worst_inner, dist3(surface_point(a, back), surface_point(a, l0)) / a.diag);
+  }
+  std::cout << "  " << a.name << " -> " << b.name << " -> " << a.name << " (" << model_name(m) << "): worst vertex "
+            << worst << ", worst face point " << worst_inner << " x diagonal" << std::endl;
+  CHECK_MSG(worst < 1e-8, "round trip " << a.name << " -> " << b.name << ": " << worst);
+  CHECK_MSG(worst_inner < 1e-8, "round trip " << a.name << " -> " << b.name << " (face points): " << worst_inner);
+}
+
+TEST_CASE(round_trip)
+{
+  Sphere_family& f = sphere_family();
+  Disk_family& d = disk_family();
+  for(auto m : models) {
+    if(ready({f.hand.get(), f.homer.get(), f.hand1.get()})) {
+      check_round_trip(*f.hand, *f.homer, m);
+      check_round_trip(*f.homer, *f.hand, m);
+      check_round_trip(*f.hand, *f.hand1, m);
+    }
+    if(ready({d.mushroom.get(), d.mushroom1.get()})) {
+      check_round_trip(*d.mushroom, *d.mushroom1, m);
+      check_round_trip(*d.mushroom1, *d.mushroom, m);
+    }
+  }
+}
+
+// f_BC(f_AB(x)) == f_AC(x) for every vertex x of A
+static void check_cycle(const Embedded& a, const Embedded& b, const Embedded& c, HOT::internal::Interpolation_model m)
+{
+  const std::vector<Location> ab = HOT::internal::map_vertices(a.mesh, a.uv, b.loc(m));
+  const std::vector<Location> ac = HOT::internal::map_vertices(a.mesh, a.uv, c.loc(m));
+  double worst = 0;
+  for(std::size_t i = 0; i < ab.size(); ++i) {
+    CHECK(ab[i].success && ac[i].success);
+    if(!ab[i].success || !ac[i].success) continue;
+    const Location abc = forward(b, ab[i], c, m);
+    CHECK(abc.success);
+    if(!abc.success) continue;
+    worst = std::max(worst, dist3(surface_point(c, abc), surface_point(c, ac[i])) / c.diag);
+  }
+  std::cout << "  cycle " << a.name << " -> " << b.name << " -> " << c.name << " vs " << a.name << " -> " << c.name
+            << " (" << model_name(m) << "): worst " << worst << " x diagonal of " << c.name << std::endl;
+  CHECK_MSG(worst < 1e-8, "cycle consistency " << a.name << ", " << b.name << ", " << c.name << ": " << worst);
+}
+
+TEST_CASE(cycle_consistency)
+{
+  Sphere_family& f = sphere_family();
+  Disk_family& d = disk_family();
+  for(auto m : models) {
+    if(ready({f.hand.get(), f.hand1.get(), f.hand2.get(), f.homer.get()})) {
+      check_cycle(*f.hand, *f.hand1, *f.hand2, m);
+      check_cycle(*f.hand, *f.homer, *f.hand2, m); // homer's landmarks do not correspond: still consistent
+      check_cycle(*f.homer, *f.hand1, *f.hand, m);
+    }
+    if(ready({d.mushroom.get(), d.mushroom1.get(), d.mushroom2.get()}))
+      check_cycle(*d.mushroom, *d.mushroom1, *d.mushroom2, m);
+  }
+}
+
+// ---- hostile points ---------------------------------------------------------------------
+
+// one located point: found, and consistent (g(z) is the location's disk point)
+struct Point_checker
+{
+  const Embedded& b;
+  const Locator& L;
+  std::size_t n = 0, failed = 0, searched = 0;
+  double worst_min_bary = 0, worst_consistency = 0, worst_consistency_inner = 0;
+  Point_checker(const Embedded& e, HOT::internal::Interpolation_model m) : b(e), L(e.loc(m)) {}
+  Location operator()(const Point_2& z)
+  {
+    ++n;
+    const Location l = L.locate(z);
+    if(!l.success) {
+      ++failed;
+      return l;
+    }
+    searched += l.used_search;
+    worst_min_bary = std::min(worst_min_bary, l.min_raw_barycentric);
+    // g(z) in long double (the element's coefficients are large near the unit circle)
+    const HOT::Hyperbolic_isometry_2<long double> g(l.element);
+    const auto w = g.apply(HOT::internal::Complex<long double>(z.x(), z.y()));
+    const double d = hyperbolic_distance(Point_2(double(w.re), double(w.im)), L.disk_point(l));
+    const double r2 = z.x() * z.x() + z.y() * z.y();
+    if(r2 < 0.81)
+      worst_consistency_inner = std::max(worst_consistency_inner, d);
+    else
+      worst_consistency = std::max(worst_consistency, d * (1 - r2)); // relative to what doubles resolve at z
+    return l;
+  }
+  void report(const std::string& what)
+  {
+    std::cout << "  " << b.name << " (" << model_name(L.interpolation_model()) << "), " << what << ": " << n
+              << " points, " << failed << " not located, " << searched << " by the fallback search, min raw barycentric "
+              << worst_min_bary << ", dist(g(z), point) " << worst_consistency_inner << " (|z| < 0.9), "
+              << worst_consistency << " x (1 - |z|^2) (|z| >= 0.9)" << std::endl;
+    CHECK_MSG(failed == 0, b.name << " " << what << ": " << failed << " points not located");
+    CHECK_MSG(worst_min_bary > -1e-9, b.name << " " << what << ": raw barycentric " << worst_min_bary);
+    CHECK_MSG(worst_consistency_inner < 1e-10, b.name << " " << what << ": " << worst_consistency_inner);
+    CHECK_MSG(worst_consistency < 1e-10, b.name << " " << what << ": " << worst_consistency);
+  }
+};
+
+static void check_hostile_points(const Embedded& b, HOT::internal::Interpolation_model m)
+{
+  const Locator& L = b.loc(m);
+  const HOT::Orbifold_tile<>& tile = L.tile();
+  // random points of the disk, up to |z| = 1 - 1e-9
+  {
+    Point_checker check(b, m);
+    for(int i = 0; i < 20000; ++i) {
+      const double t = rng.get_double(0, 2 * CGAL_PI);
+      const double r = (i % 2 == 0) ? std::sqrt(rng.get_double()) : 1 - std::pow(10.0, -rng.get_double(0, 9));
+      check(Point_2(r * std::cos(t), r * std::sin(t)));
+    }
+    for(int i = 0; i < 64; ++i) {
+      const double t = 2 * CGAL_PI * i / 64;
+      check(Point_2((1 - 1e-9) * std::cos(t), (1 - 1e-9) * std::sin(t)));
+    }
+    check(Point_2(0, 0));
+    check.report("random disk points");
+  }
+  // tile corners, and points around them at distances down to 1e-15
+  {
+    Point_checker check(b, m);
+    for(int c = 0; c < tile.number_of_corners(); ++c) {
+      const Point_2 p = tile.corner(c);
+      check(p);
+      for(double eps : {1e-3, 1e-6, 1e-9, 1e-12, 1e-15})
+        for(int a = 0; a < 16; ++a) {
+          const double t = 2 * CGAL_PI * a / 16 + 0.1;
+          check(Point_2(p.x() + eps * std::cos(t), p.y() + eps * std::sin(t)));
+        }
+    }
+    check.report("around tile corners");
+  }
+  // points on, and within rounding of, the edges of B's cut (sphere) or border (disk);
+  // B's corner points and their images by group elements
+  {
+    Point_checker check(b, m);
+    const std::vector<Isometry> group = tile.group_elements(2);
+    std::size_t boundary_edges = 0;
+    for(face_descriptor f : faces(b.mesh)) {
+      std::array<halfedge_descriptor, 3> hs = {{halfedge(f, b.mesh), next(halfedge(f, b.mesh), b.mesh),
+                                               next(next(halfedge(f, b.mesh), b.mesh), b.mesh)}};
+      for(int j = 0; j < 3; ++j) {
+        const halfedge_descriptor h = hs[(j + 1) % 3]; // from corner j to corner j+1
+        const halfedge_descriptor o = opposite(h, b.mesh);
+        const bool on_boundary = is_border(o, b.mesh) || get(b.uv, h) != get(b.uv, prev(o, b.mesh)) ||
+                                 get(b.uv, hs[j]) != get(b.uv, o);
+        if(!on_boundary) continue;
+        ++boundary_edges;
+        const Point_2 p = get(b.uv, hs[j]), q = get(b.uv, hs[(j + 1) % 3]);
+        const C kp = HOT::internal::poincare_to_klein(C(p.x(), p.y())), kq = HOT::internal::poincare_to_klein(C(q.x(), q.y()));
+        const C n = C(-(kq - kp).im, (kq - kp).re) / HOT::internal::abs(kq - kp);
+        for(double t : {0.5, 0.25, 1e-9}) {
+          const C km = kp + t * (kq - kp);
+          for(double eps : {0.0, 1e-15, -1e-15, 1e-11, -1e-11, 1e-7, -1e-7}) {
+            const C z = HOT::internal::klein_to_poincare(km + eps * n);
+            check(Point_2(z.re, z.im));
+          }
+        }
+      }
+    }
+    CHECK(boundary_edges > 0);
+    // corner points and their images: each must come back to its own vertex, as far as the
+    // image's coordinates resolve it (near the unit circle a double holds few digits of a
+    // hyperbolic position: only images with |w| < 1 - 1e-4 are compared)
+    double worst_vertex = 0;
+    std::size_t i = 0, compared = 0;
+    for(face_descriptor f : faces(b.mesh)) {
+      if(i++ % 7 != 0) continue;
+      const halfedge_descriptor h = halfedge(f, b.mesh);
+      const Point_2 p = get(b.uv, h);
+      const Point_3 x = b.mesh.point(target(h, b.mesh));
+      for(std::size_t e = 0; e < group.size(); e += 3) {
+        const Point_2 w = group[e](p);
+        const Location l = check(w);
+        if(l.success && std::sqrt(w.x() * w.x() + w.y() * w.y()) < 1 - 1e-4) {
+          worst_vertex = std::max(worst_vertex, dist3(surface_point(b, l), x) / b.diag);
+          ++compared;
+        }
+      }
+    }
+    std::cout << "  " << b.name << ": " << boundary_edges << " cut/border edge sides; " << compared
+              << " images of vertices come back to " << worst_vertex << " x diagonal" << std::endl;
+    CHECK_MSG(worst_vertex < 1e-8, b.name << ": images of vertices located " << worst_vertex << " away");
+    check.report("on and near the cut/border, and images of vertices");
+  }
+  // the fallback search agrees with the walk
+  {
+    double worst = 0;
+    std::size_t failed = 0;
+    for(int i = 0; i < 100; ++i) {
+      const double t = rng.get_double(0, 2 * CGAL_PI), r = 1 - std::pow(10.0, -rng.get_double(0, 6));
+      const Point_2 z(r * std::cos(t), r * std::sin(t));
+      const Location l1 = L.locate(z), l2 = L.locate_by_search(z);
+      if(!l1.success || !l2.success) { ++failed; continue; }
+      CHECK(l2.used_search);
+      worst = std::max(worst, dist3(surface_point(b, l1), surface_point(b, l2)) / b.diag);
+    }
+    std::cout << "  " << b.name << ": fallback search vs walk on 100 points: worst " << worst << " x diagonal" << std::endl;
+    CHECK(failed == 0);
+    CHECK_MSG(worst < 1e-9, "search and walk disagree by " << worst);
+  }
+}
+
+TEST_CASE(every_point_is_located)
+{
+  Sphere_family& f = sphere_family();
+  Disk_family& d = disk_family();
+  for(auto m : models) {
+    if(ready({f.homer.get()})) check_hostile_points(*f.homer, m);
+    if(ready({d.mushroom.get()})) check_hostile_points(*d.mushroom, m);
+  }
+  // more cones: a larger tile, more cut edges, corners closer to the unit circle
+  Mesh hand;
+  if(read_demo_mesh("hand", hand)) {
+    Embedded_ptr e = embed("hand-k23", hand, farthest_point_landmarks(hand, 23, 5), HOT::Tsp_order);
+    if(ready({e.get()})) check_hostile_points(*e, HOT::internal::Klein_linear);
+  }
+}
+
+// A surface point on an edge, given in one face, goes to the disk and is located again (in
+// either incident face, on either side of the cut): the same surface point? On inner edges
+// yes in both models; on cut edges only with hyperboloid coordinates (Klein coordinates of
+// the two sides are in frames related by a projective map: the map is not seamless there).
+TEST_CASE(points_on_edges_and_vertices)
+{
+  Sphere_family& f = sphere_family();
+  for(const Embedded* b : {f.hand.get(), f.homer.get()}) {
+    if(!ready({b})) continue;
+    for(auto m : models) {
+      const Locator& L = b->loc(m);
+      std::size_t n_inner = 0, n_cut = 0;
+      double worst_inner = 0, worst_cut = 0, worst_vertex = 0;
+      std::size_t fi = 0;
+      for(face_descriptor fd : faces(b->mesh)) {
+        std::array<halfedge_descriptor, 3> hs = {{halfedge(fd, b->mesh), next(halfedge(fd, b->mesh), b->mesh),
+                                                 next(next(halfedge(fd, b->mesh), b->mesh), b->mesh)}};
+        for(int j = 0; j < 3; ++j) {
+          const halfedge_descriptor h = hs[(j + 1) % 3];
+          const halfedge_descriptor o = opposite(h, b->mesh);
+          const bool cut = get(b->uv, h) != get(b->uv, prev(o, b->mesh)) || get(b->uv, hs[j]) != get(b->uv, o);
+          for(double t : {0.5, 0.3}) {
+            Location l0;
+            l0.face_index = fi;
+            l0.barycentric = {{0.0, 0.0, 0.0}};
+            l0.barycentric[j] = t;
+            l0.barycentric[(j + 1) % 3] = 1 - t;
+            const Location l = L.locate(L.disk_point(l0));
+            CHECK(l.success);
+            if(!l.success) continue;
+            const double e = dist3(surface_point(*b, l), surface_point(*b, l0)) / b->diag;
+            if(cut) { worst_cut = std::max(worst_cut, e); ++n_cut; }
+            else { worst_inner = std::max(worst_inner, e); ++n_inner; }
+          }
+          // the vertex itself
+          Location lv;
+          lv.face_index = fi;
+          lv.barycentric = {{0.0, 0.0, 0.0}};
+          lv.barycentric[j] = 1.0;
+          const Location l = L.locate(L.disk_point(lv));
+          CHECK(l.success && surface_point(*b, l) == b->mesh.point(target(hs[j], b->mesh)));
+          if(l.success)
+            worst_vertex = std::max(worst_vertex, dist3(surface_point(*b, l), b->mesh.point(target(hs[j], b->mesh))) / b->diag);
+        }
+        ++fi;
+      }
+      std::cout << "  " << b->name << " (" << model_name(m) << "): points on " << n_inner << " inner edges come back to "
+                << worst_inner << ", on " << n_cut << " cut edges to " << worst_cut << ", vertices to " << worst_vertex
+                << " x diagonal" << std::endl;
+      CHECK(n_cut > 0);
+      CHECK_MSG(worst_inner < 1e-9, b->name << " inner edges: " << worst_inner);
+      CHECK(worst_vertex == 0);
+      if(m == HOT::internal::Hyperboloid_linear)
+        CHECK_MSG(worst_cut < 1e-9, b->name << " cut edges (hyperboloid coordinates): " << worst_cut);
+    }
+  }
+}
+
+// ---- input that is not a bijective embedding: locate() still returns ------------------------
+
+TEST_CASE(folded_embedding_terminates)
+{
+  Sphere_family& f = sphere_family();
+  if(!ready({f.hand.get()})) return;
+  Mesh m = f.hand->mesh;
+  UV_map uv = m.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  // fold: move an interior vertex (all its corners) beyond a neighbour, as in the certificate test
+  vertex_descriptor v;
+  for(vertex_descriptor w : vertices(m)) {
+    bool single = std::find(f.hand->landmarks.begin(), f.hand->landmarks.end(), w) == f.hand->landmarks.end();
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(w, m), m))
+      single = single && get(uv, h) == get(uv, halfedge(w, m));
+    if(single && w.idx() > 100) { v = w; break; }
+  }
+  const Point_2 zv = get(uv, halfedge(v, m)), zn = get(uv, prev(halfedge(v, m), m));
+  const C far = Isometry::rotation_about(C(zn.x(), zn.y()), CGAL_PI).apply(C(zv.x(), zv.y()));
+  for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m))
+    put(uv, h, Point_2(far.re, far.im));
+  const Locator L(m, uv, HOT::Sphere_type, 7);
+  CHECK(L.is_valid());
+  CHECK(L.number_of_inverted_faces() > 0);
+  std::cout << "  folded hand: " << L.message() << std::endl;
+  std::size_t n = 0, failed = 0, searched = 0;
+  const Clock::time_point t0 = Clock::now();
+  for(int i = 0; i < 3000; ++i) {
+    const double t = rng.get_double(0, 2 * CGAL_PI), r = (i % 2) ? std::sqrt(rng.get_double()) : 1 - std::pow(10.0, -rng.get_double(0, 9));
+    const Location l = L.locate(Point_2(r * std::cos(t), r * std::sin(t)));
+    ++n;
+    failed += !l.success;
+    searched += l.used_search;
+  }
+  // the vertices' own points: found (at their corners) even around the fold
+  for(vertex_descriptor w : vertices(m)) {
+    const Location l = L.locate(get(uv, halfedge(w, m)));
+    CHECK(l.success && dist3(surface_point(*f.hand, l), m.point(w)) == 0);
+  }
+  std::cout << "  folded hand: " << n << " random points in " << seconds_since(t0) << " s, " << failed << " not located, "
+            << searched << " answered by the fallback search" << std::endl;
+  CHECK(failed < n / 100); // only points near the fold can miss
+}
+
+// ---- other mesh types ------------------------------------------------------------------------
+
+// the locator over a Polyhedron_3 with an unordered_map as corner map: hand -> the same hand
+// as a polyhedron, embedded with the same landmarks (the same critical point): the identity
+TEST_CASE(polyhedron_3_locator)
+{
+  typedef CGAL::Polyhedron_3<K> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor P_vertex;
+  typedef boost::graph_traits<Polyhedron>::halfedge_descriptor P_halfedge;
+  typedef std::unordered_map<P_halfedge, Point_2> P_uv_storage;
+  typedef boost::associative_property_map<P_uv_storage> P_uv;
+  typedef HOT::internal::Embedding_point_locator<Polyhedron, P_uv> P_locator;
+  Sphere_family& f = sphere_family();
+  if(!ready({f.hand.get()})) return;
+  Polyhedron poly;
+  std::ifstream in(data_dir() + "/meshes/hand.off");
+  CHECK(bool(in >> poly));
+  std::vector<P_vertex> pv(vertices(poly).begin(), vertices(poly).end());
+  CHECK(pv.size() == num_vertices(f.hand->mesh));
+  if(pv.size() != num_vertices(f.hand->mesh)) return;
+  std::vector<P_vertex> plm;
+  for(vertex_descriptor v : f.hand->landmarks) plm.push_back(pv[v.idx()]);
+  P_uv_storage storage;
+  HOT::Embedding_statistics st;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(poly, plm, P_uv(storage), HOT::parameters::embedding_statistics(&st)) == HOT::OK);
+  const P_locator L(poly, P_uv(storage), HOT::Sphere_type, 7);
+  CHECK_MSG(L.is_valid(), L.message());
+  CHECK(L.number_of_faces() == num_faces(f.hand->mesh) && L.number_of_cut_edges() > 0);
+  const std::vector<P_locator::Location> locs = HOT::internal::map_vertices(f.hand->mesh, f.hand->uv, L);
+  double worst = 0;
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(f.hand->mesh)) {
+    const P_locator::Location& l = locs[i++];
+    CHECK(l.success);
+    if(!l.success) continue;
+    const K::Point_3 p = HOT::internal::surface_point(l, L, get(CGAL::vertex_point, poly));
+    worst = std::max(worst, dist3(p, f.hand->mesh.point(v)) / f.hand->diag);
+  }
+  // and back: the polyhedron's vertices onto the surface mesh
+  const std::vector<Location> back = HOT::internal::map_vertices(poly, P_uv(storage), *f.hand->locator);
+  i = 0;
+  for(P_vertex v : vertices(poly)) {
+    const Location& l = back[i++];
+    CHECK(l.success);
+    if(l.success) worst = std::max(worst, dist3(surface_point(*f.hand, l), v->point()) / f.hand->diag);
+  }
+  // points inside faces (through the walk, not the corners' exact matches)
+  for(int trial = 0; trial < 500; ++trial) {
+    const Location l0 = random_face_point(*f.hand);
+    const P_locator::Location l = L.locate(f.hand->locator->disk_point(l0));
+    CHECK(l.success);
+    if(l.success)
+      worst = std::max(worst, dist3(HOT::internal::surface_point(l, L, get(CGAL::vertex_point, poly)),
+                                    surface_point(*f.hand, l0)) / f.hand->diag);
+  }
+  std::cout << "  hand (Surface_mesh) <-> hand (Polyhedron_3): worst " << worst << " x diagonal" << std::endl;
+  CHECK(worst < 1e-6);
+}
+
+// ---- transfer matrix ----------------------------------------------------------------------
+
+TEST_CASE(transfer_matrix)
+{
+  Sphere_family& f = sphere_family();
+  if(!ready({f.hand.get(), f.hand1.get(), f.homer.get()})) return;
+  for(const Embedded* b : {f.hand.get(), f.hand1.get(), f.homer.get()}) {
+    const Embedded& a = *f.hand;
+    const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, *b->locator);
+    const Eigen::SparseMatrix<double> T = HOT::internal::transfer_matrix(locs, *b->locator);
+    CHECK(T.rows() == Eigen::Index(num_vertices(a.mesh)) && T.cols() == Eigen::Index(num_vertices(b->mesh)));
+    // rows are convex combinations of at most 3 vertices of B
+    double worst_sum = 0;
+    bool at_most_3 = true, non_negative = true;
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> R = T;
+    for(Eigen::Index r = 0; r < R.rows(); ++r) {
+      double s = 0;
+      int nnz = 0;
+      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(R, r); it; ++it) {
+        s += it.value();
+        ++nnz;
+        non_negative = non_negative && it.value() >= 0;
+      }
+      worst_sum = std::max(worst_sum, std::abs(s - 1));
+      at_most_3 = at_most_3 && nnz <= 3 && nnz >= 1;
+    }
+    CHECK_MSG(worst_sum < 1e-12, "row sums differ from 1 by " << worst_sum);
+    CHECK(at_most_3 && non_negative);
+    // linear functions of B's coordinates transfer to their values at the mapped points;
+    // on the identity map (b == a) these are A's own coordinates
+    Eigen::MatrixXd XB(num_vertices(b->mesh), 4);
+    for(vertex_descriptor v : vertices(b->mesh)) {
+      const Point_3& p = b->mesh.point(v);
+      XB(v.idx(), 0) = p.x();
+      XB(v.idx(), 1) = p.y();
+      XB(v.idx(), 2) = p.z();
+      XB(v.idx(), 3) = 2 * p.x() - 3 * p.y() + 0.5 * p.z() + 7; // an affine function
+    }
+    const Eigen::MatrixXd XA = T * XB;
+    double worst = 0, worst_affine = 0;
+    std::size_t i = 0;
+    // the same transfer through the property-map helper, with Vector_3 values
+    Mesh& bm = const_cast<Mesh&>(b->mesh);
+    auto vb = bm.add_property_map<vertex_descriptor, Vector_3>("v:pos", CGAL::NULL_VECTOR).first;
+    for(vertex_descriptor v : vertices(b->mesh)) vb[v] = b->mesh.point(v) - CGAL::ORIGIN;
+    Mesh& am = const_cast<Mesh&>(a.mesh);
+    auto va = am.add_property_map<vertex_descriptor, Vector_3>("v:transferred", Vector_3(1e9, 1e9, 1e9)).first;
+    const std::size_t written = HOT::internal::transfer_vertex_property(a.mesh, locs, *b->locator, vb, va);
+    CHECK(written == num_vertices(a.mesh));
+    double worst_helper = 0;
+    for(vertex_descriptor v : vertices(a.mesh)) {
+      const Point_3 target = (b == &a) ? a.mesh.point(v) : surface_point(*b, locs[i]);
+      const Point_3 got(XA(i, 0), XA(i, 1), XA(i, 2));
+      worst = std::max(worst, dist3(got, target) / b->diag);
+      worst_affine = std::max(worst_affine, std::abs(XA(i, 3) - (2 * target.x() - 3 * target.y() + 0.5 * target.z() + 7)) / b->diag);
+      worst_helper = std::max(worst_helper, dist3(CGAL::ORIGIN + va[v], got) / b->diag);
+      ++i;
+    }
+    std::cout << "  transfer hand -> " << b->name << ": coordinates " << worst << ", affine " << worst_affine
+              << ", helper " << worst_helper << " x diagonal" << std::endl;
+    CHECK(worst < 1e-12 && worst_affine < 1e-12 && worst_helper < 1e-12);
+    am.remove_property_map(va);
+    bm.remove_property_map(vb);
+  }
+}
+
+// ---- timing on a 26K-vertex mesh --------------------------------------------------------------
+
+TEST_CASE(timing_armadillo_26k)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("armadillo", m));
+  if(num_vertices(m) == 0) return;
+  Clock::time_point t0 = Clock::now();
+  Embedded_ptr a = embed("armadillo", m, farthest_point_landmarks(m, 7), HOT::Tsp_order);
+  if(!ready({a.get()})) return;
+  Embedded_ptr b = embed("armadillo-deformed", deform(m, 1, 0.25), a->landmarks);
+  if(!ready({b.get()})) return;
+  const double t_embed = seconds_since(t0);
+  for(auto model : models) {
+    t0 = Clock::now();
+    const Locator L(b->mesh, b->uv, HOT::Sphere_type, 7, model);
+    const double t_build = seconds_since(t0);
+    double t_map = 1e300;
+    std::vector<Location> locs;
+    for(int rep = 0; rep < 3; ++rep) {
+      t0 = Clock::now();
+      locs = HOT::internal::map_vertices(a->mesh, a->uv, L);
+      t_map = std::min(t_map, seconds_since(t0));
+    }
+    std::size_t failed = 0, searched = 0, steps = 0, max_steps = 0;
+    for(const Location& l : locs) {
+      failed += !l.success;
+      searched += l.used_search;
+      steps += l.steps;
+      max_steps = std::max(max_steps, l.steps);
+    }
+    const Error_stats s = deformation_error(*a, *b, model);
+    const Error_stats d = displacement(*a, *b);
+    std::cout << "  armadillo (" << num_vertices(a->mesh) << " vertices) -> deformation (" << num_faces(b->mesh)
+              << " faces), " << model_name(model) << ": embeddings " << t_embed << " s, locator build " << t_build
+              << " s, mapping all vertices " << t_map << " s (" << failed << " failed, " << searched
+              << " fallback searches, mean walk " << double(steps) / locs.size() << " triangles, max " << max_steps
+              << "); vertex error max " << s.max << ", mean " << s.mean << " x diagonal (displacement max " << d.max
+              << ", mean " << d.mean << ")" << std::endl;
+    CHECK(failed == 0);
+    CHECK_MSG(t_map < 0.2, "mapping 26K vertices took " << t_map << " s");
+    CHECK_MSG(s.mean < 2 * d.mean && s.max < 4 * d.max, "armadillo deformation: max " << s.max << " mean " << s.mean);
+  }
+}
+
+HOT_TEST_MAIN
