@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/orbifold_shortest_path.h>
 
 #include <CGAL/hyperbolic_orbifold_Tutte.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <Eigen/SparseCholesky>
 
@@ -122,9 +123,9 @@ int main(int argc, char** argv)
     std::cerr << "usage: bench_parameterizer [--landmarks K] mesh.off [...]" << std::endl;
     return 1;
   }
-  std::printf("%-18s %8s %3s | %9s | %7s %7s %7s %7s %8s | %5s %9s | %7s %9s | %7s %s\n", "mesh", "vertices", "k",
+  std::printf("%-18s %8s %3s | %9s | %7s %7s %7s %7s %8s | %5s %9s | %7s %9s | %7s | %7s %s\n", "mesh", "vertices", "k",
               "Euclid(s)", "cut", "init", "optim", "cert", "total(s)", "iters", "imbalance", "ratio", "chol(s)",
-              "RSS(MB)", "certificate");
+              "map(s)", "RSS(MB)", "certificate");
   for(const std::string& f : files) {
     SM sm;
     if(!CGAL::IO::read_polygon_mesh(f, sm) || num_faces(sm) == 0) {
@@ -146,12 +147,36 @@ int main(int argc, char** argv)
     const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
       sm, landmarks, uv, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&st)));
     const double total = seconds_since(t);
+    // mapping: every vertex of a smooth deformation of the mesh (embedded with the same
+    // landmarks, in the same order) located on the mesh's embedding
+    double tmap = -1;
+    if(ec == HOT::OK) {
+      SM def = sm;
+      const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(sm);
+      const double s = bb.xmax() - bb.xmin() + bb.ymax() - bb.ymin();
+      for(SM_vertex v : vertices(def)) {
+        const K::Point_3 p = def.point(v);
+        def.point(v) = K::Point_3(p.x() + 0.05 * s * std::sin(3 * p.y() / s), p.y(), p.z() * 1.1);
+      }
+      std::vector<SM_vertex> ordered;
+      for(std::size_t i : st.landmark_order) ordered.push_back(landmarks[i]);
+      auto uvd = def.add_property_map<SM_halfedge, K::Point_2>("h:uvd").first;
+      if(HOT::hyperbolic_orbifold_Tutte_embedding(def, ordered, uvd) == HOT::OK) {
+        const auto tm0 = Clock::now();
+        const HOT::Embedding_locator<SM, decltype(uv)> loc(sm, uv, CGAL::is_closed(sm) ? HOT::Sphere_type : HOT::Disk_type,
+                                                           static_cast<int>(landmarks.size()));
+        const auto f = HOT::map_vertices(def, uvd, loc);
+        tmap = seconds_since(tm0);
+        for(const auto& l : f)
+          if(!l.success) tmap = -2;
+      }
+    }
     sm.remove_property_map(uv);
     const double tc = cholesky_floor_time(sm);
-    std::printf("%-18s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %5d %9.1e | %7.2f %9.3f | %7.0f %s\n",
+    std::printf("%-18s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %5d %9.1e | %7.2f %9.3f | %7.3f | %7.0f %s\n",
                 name.c_str(), static_cast<std::size_t>(num_vertices(sm)), landmarks.size(), eok ? te : -1.0,
                 st.time_setup, st.time_initialization, st.time_optimization, st.time_certificate, total, st.iterations,
-                st.relative_gradient_norm, (eok && te > 0) ? total / te : -1.0, tc, peak_rss_mb(),
+                st.relative_gradient_norm, (eok && te > 0) ? total / te : -1.0, tc, tmap, peak_rss_mb(),
                 ec == HOT::OK && st.certificate.is_bijective() ? "bijective" : HOT::error_message(ec));
     std::fflush(stdout);
   }

@@ -15,6 +15,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Random.h>
 
 #include <chrono>
@@ -933,6 +934,64 @@ TEST_CASE(timing_armadillo_26k)
     CHECK_MSG(t_map < 0.2, "mapping 26K vertices took " << t_map << " s");
     CHECK_MSG(s.mean < 2 * d.mean && s.max < 4 * d.max, "armadillo deformation: max " << s.max << " mean " << s.mean);
   }
+}
+
+// The public collection: class-wide landmark order, parallel and sequential embeddings give
+// the same result bit for bit, cycle consistency over every triple, maps cached.
+template <class Tag>
+static std::unique_ptr<HOT::Orbifold_collection<Mesh, Tag> > make_collection(const Mesh& base, const std::vector<vertex_descriptor>& lm)
+{
+  std::unique_ptr<HOT::Orbifold_collection<Mesh, Tag> > c(new HOT::Orbifold_collection<Mesh, Tag>());
+  for(int d = 0; d < 4; ++d) {
+    Mesh m = base;
+    for(vertex_descriptor v : vertices(m)) {
+      const K::Point_3 p = m.point(v);
+      m.point(v) = K::Point_3(p.x() + 0.02 * d * std::sin(3 * p.y()), p.y() * (1 + 0.1 * d), p.z() + 0.01 * d * std::cos(5 * p.x()));
+    }
+    c->add_mesh(m, lm);
+  }
+  return c;
+}
+
+TEST_CASE(collection_parallel_and_cycle_consistent)
+{
+  Mesh base;
+  CHECK(read_demo_mesh("hand", base));
+  // landmarks in a class-wide order (not the cutting order): the collection orders them once
+  std::vector<vertex_descriptor> lm = farthest_point_landmarks(base, 9);
+  std::swap(lm[1], lm[5]);
+  auto seq = make_collection<CGAL::Sequential_tag>(base, lm);
+  auto par = make_collection<CGAL::Parallel_tag>(base, lm);
+  CHECK_MSG(seq->embed() == HOT::OK, seq->message());
+  CHECK_MSG(par->embed() == HOT::OK, par->message());
+  CHECK(seq->order() == par->order());
+  for(std::size_t i = 0; i < seq->number_of_meshes(); ++i) {
+    CHECK(seq->statistics(i).certificate.is_bijective());
+    std::size_t differ = 0;
+    for(halfedge_descriptor h : halfedges(seq->mesh(i)))
+      if(!is_border(h, seq->mesh(i)) && get(seq->uv_map(i), h) != get(par->uv_map(i), h)) ++differ;
+    CHECK_MSG(differ == 0, "mesh " << i << ": " << differ << " corners differ between threads");
+  }
+  double worst = 0;
+  for(std::size_t a = 0; a < 4; ++a)
+    for(std::size_t b = 0; b < 4; ++b)
+      for(std::size_t c = 0; c < 4; ++c)
+        if(a != b && b != c && a != c) worst = std::max(worst, par->cycle_consistency_error(a, b, c));
+  std::cout << "  collection of 4: cycle consistency " << worst << " of the diagonal over 24 triples" << std::endl;
+  CHECK(worst < 1e-9);
+  // landmarks map onto landmarks, in the class-wide order given
+  const auto& f01 = par->map(0, 1);
+  for(std::size_t i = 0; i < lm.size(); ++i) {
+    const auto& l = f01[lm[i].idx()];
+    const auto p = HOT::surface_point(l, par->locator(1), get(CGAL::vertex_point, par->mesh(1)));
+    CHECK(CGAL::squared_distance(p, par->mesh(1).point(lm[i])) < 1e-20);
+  }
+  CHECK(&par->map(0, 1) == &f01); // cached
+  // a mesh with another number of landmarks is refused
+  HOT::Orbifold_collection<Mesh> bad;
+  bad.add_mesh(base, lm);
+  bad.add_mesh(base, std::vector<vertex_descriptor>(lm.begin(), lm.begin() + 6));
+  CHECK(bad.embed() == HOT::ERROR_WRONG_PARAMETER);
 }
 
 HOT_TEST_MAIN

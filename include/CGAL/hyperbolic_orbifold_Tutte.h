@@ -20,5 +20,6 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H
