@@ -5,7 +5,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
-"$root/scripts/build.sh" >/dev/null
+"$root/scripts/build.sh" bench_parameterizer bench_tiles >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
 meshes=()
 for m in hand homer triceratops camel bear diplodocus armadillo bunny00; do meshes+=("$build/data/meshes/$m.off"); done

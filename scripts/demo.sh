@@ -6,7 +6,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" hyperbolic_orbifold_tutte
 build="${HOT_BUILD_DIR:-$root/build}"
 bin="$build/bin/hyperbolic_orbifold_tutte"
 mesh="${1:-$build/data/meshes/bear.off}"
