@@ -12,6 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
 #include <CGAL/boost/graph/Seam_mesh.h>
@@ -100,18 +101,9 @@ Error_code certify_hyperbolic_orbifold_embedding(
     return fail(k < 5 ? ERROR_TOO_FEW_LANDMARKS : ERROR_NOT_HYPERBOLIC, "");
 
   // the cut: edges whose two sides disagree on a shared corner
-  typedef std::unordered_map<edge_descriptor, bool, boost::hash<edge_descriptor> > Edge_flags;
-  typedef std::unordered_map<vertex_descriptor, bool, boost::hash<vertex_descriptor> > Vertex_flags;
-  Edge_flags edge_flags;
-  Vertex_flags vertex_flags;
-  for(vertex_descriptor v : vertices(tm))
-    vertex_flags.emplace(v, false);
-  for(edge_descriptor e : edges(tm))
-    edge_flags.emplace(e, false);
-  typedef boost::associative_property_map<Edge_flags> SEM;
-  typedef boost::associative_property_map<Vertex_flags> SVM;
-  typedef CGAL::Seam_mesh<TriangleMesh, SEM, SVM> Mesh;
-  Mesh mesh(tm, SEM(edge_flags), SVM(vertex_flags));
+  internal::Seam_mesh_storage<TriangleMesh> seams(tm);
+  typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
+  Mesh& mesh = seams.mesh;
   for(edge_descriptor e : edges(tm)) {
     const halfedge_descriptor h = halfedge(e, tm), o = opposite(h, tm);
     if(is_border(h, tm) || is_border(o, tm))
@@ -122,14 +114,7 @@ Error_code certify_hyperbolic_orbifold_embedding(
       mesh.add_seam(source(h, tm), target(h, tm));
   }
   typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
-  bool found = false;
-  for(auto h : halfedges(mesh))
-    if(is_border(h, mesh)) {
-      bhd = h;
-      found = true;
-      break;
-    }
-  if(!found)
+  if(!seams.border_halfedge(bhd))
     return fail(ERROR_CUT_FAILED, "the map has no cut: a closed mesh must be cut open through the landmarks");
 
   internal::Flat_problem P;

@@ -10,6 +10,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
 #include <CGAL/boost/graph/Seam_mesh.h>
@@ -168,18 +169,9 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
 
   // 3. the cut and the seam mesh (seams on edges and vertices held in hash maps, so that
   //    the input mesh is not modified and may be const)
-  typedef std::unordered_map<edge_descriptor, bool, boost::hash<edge_descriptor> > Edge_flags;
-  typedef std::unordered_map<vertex_descriptor, bool, boost::hash<vertex_descriptor> > Vertex_flags;
-  Edge_flags edge_flags;
-  Vertex_flags vertex_flags;
-  typedef boost::associative_property_map<Edge_flags> SEM;
-  typedef boost::associative_property_map<Vertex_flags> SVM;
-  for(edge_descriptor e : edges(tm))
-    edge_flags.emplace(e, false);
-  for(vertex_descriptor v : vertices(tm))
-    vertex_flags.emplace(v, false);
-  typedef CGAL::Seam_mesh<TriangleMesh, SEM, SVM> Mesh;
-  Mesh mesh(tm, SEM(edge_flags), SVM(vertex_flags));
+  internal::Seam_mesh_storage<TriangleMesh> seams(tm);
+  typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
+  Mesh& mesh = seams.mesh;
   if(type == Sphere_type) {
     const internal::Cut_result<TriangleMesh> cut = internal::compute_cut_through_landmarks(tm, ordered, vpm);
     if(!cut.ok)
@@ -188,14 +180,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
       return fail(ERROR_CUT_FAILED, "the cut could not be marked on the seam mesh");
   }
   typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
-  bool found = false;
-  for(auto h : halfedges(mesh))
-    if(is_border(h, mesh)) {
-      bhd = h;
-      found = true;
-      break;
-    }
-  if(!found)
+  if(!seams.border_halfedge(bhd))
     return fail(ERROR_CUT_FAILED, "the cut mesh has no border");
   const double time_cut = std::chrono::duration<double>(Clock::now() - t0).count();
 
