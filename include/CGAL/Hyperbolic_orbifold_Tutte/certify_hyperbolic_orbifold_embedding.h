@@ -12,6 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
@@ -66,9 +67,6 @@ Error_code certify_hyperbolic_orbifold_embedding(
   std::string* message = nullptr,
   const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef typename GT::edge_descriptor edge_descriptor;
@@ -86,12 +84,8 @@ Error_code certify_hyperbolic_orbifold_embedding(
   };
 
   Orbifold_type type = Sphere_type;
-  if(is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value) {
-    if(!internal::detect_orbifold_type(tm, type))
-      return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk");
-  } else {
-    type = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
-  }
+  if(!internal::orbifold_type_parameter(tm, np, type))
+    return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk");
   internal::Check_result r = internal::check_mesh(tm, type);
   if(!r)
     return fail(r.code, r.message);

@@ -10,6 +10,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
@@ -136,12 +137,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
 
   // 1. the mesh and the orbifold type
   Orbifold_type type = Sphere_type;
-  if(is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value) {
-    if(!internal::detect_orbifold_type(tm, type))
-      return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk (it has more than one boundary loop)");
-  } else {
-    type = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
-  }
+  if(!internal::orbifold_type_parameter(tm, np, type))
+    return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk (it has more than one boundary loop)");
   {
     const internal::Check_result r = internal::check_mesh(tm, vpm, type);
     if(!r)
