@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <complex>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
@@ -243,6 +244,10 @@ struct Solver_options
 {
   double gradient_tolerance = 1e-10; // force imbalance (relative hyperbolic gradient norm)
   int max_iterations = 200;
+  int max_cg_iterations = 400;       // per Newton step
+  int refactor_cg_iterations = 25;   // refactor the preconditioner after a Newton step that needed more
+  double newton_threshold = 1e-2;    // relative gradient norm below which Newton takes over
+  bool direct_solver = false;        // factor every Newton system instead of conjugate gradients
   bool verbose = false;
 };
 
@@ -252,6 +257,7 @@ struct Solver_statistics
   double initial_energy = 0, energy = 0;
   double initial_gradient = 0, gradient = 0, relative_gradient = 0;
   double time_assemble = 0, time_factor = 0, time_line_search = 0;
+  int cg_iterations = 0, cg_failures = 0, preconditioner_factorizations = 0;
   bool converged = false;
 };
 
@@ -260,7 +266,12 @@ class Energy_evaluator
 {
 public:
   typedef Complex<double> C;
-  explicit Energy_evaluator(const Flat_problem& P) : P_(P) {}
+  explicit Energy_evaluator(const Flat_problem& P) : P_(P) { build_pattern(); }
+
+  // The Hessian's sparsity pattern (every entry any edge can touch, symmetric, compressed
+  // column storage) and, per edge, the positions of its local block's entries in it: the
+  // values are accumulated in place, no triplets, no sorting per iteration.
+  const Eigen::SparseMatrix<double>& hessian_pattern() const { return pattern_; }
 
   // returns +infinity for infeasible x (a point on or outside the unit circle)
   double energy(const std::vector<double>& x) const
@@ -296,12 +307,17 @@ public:
   // gradient g (size n_vars) and, if H != nullptr, the Hessian with each edge's block
   // projected onto the positive semi-definite cone
   double evaluate(const std::vector<double>& x, std::vector<double>& g,
-                  std::vector<Eigen::Triplet<double> >* H, bool project = true) const
+                  Eigen::SparseMatrix<double>* H, bool project = true) const
   {
     g.assign(P_.n_vars, 0.0);
     g_abs_.assign(P_.n_vars, 0.0);
-    if(H)
-      H->clear();
+    double* hv = nullptr;
+    if(H) {
+      if(H->nonZeros() != pattern_.nonZeros() || H->rows() != pattern_.rows())
+        *H = pattern_;
+      hv = H->valuePtr();
+      std::fill(hv, hv + H->nonZeros(), 0.0);
+    }
     double E = 0;
     Position_jet ja, jb;
     Squared_distance_derivatives sd;
@@ -336,7 +352,7 @@ public:
         g[gi[i]] += lg[i];
         g_abs_[gi[i]] += std::abs(lg[i]);
       }
-      if(!H)
+      if(!hv)
         continue;
       Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
       for(int i = 0; i < n; ++i)
@@ -355,11 +371,10 @@ public:
         }
       if(project)
         project_psd(M, n);
-      // every entry, zero or not: the sparsity pattern must not change between iterations,
-      // since the symbolic factorisation is computed once
+      const int* slot = &slots_[slot_begin_[e]];
       for(int i = 0; i < n; ++i)
         for(int j = 0; j < n; ++j)
-          H->emplace_back(gi[i], gi[j], M(i, j));
+          hv[slot[i * n + j]] += M(i, j);
     }
     return E;
   }
@@ -393,11 +408,64 @@ public:
   }
 
 private:
+  // local variables of edge e: those of its first end, then those of its second
+  int local_variables(std::size_t e, int* gi) const
+  {
+    int n = 0;
+    for(int s = 0; s < 2; ++s) {
+      const int v = P_.edges[e][s];
+      const int o = variable_owner(P_, v);
+      const int dim = P_.kind[v] == Fixed ? 0 : (P_.kind[v] == On_line ? 1 : 2);
+      for(int i = 0; i < dim; ++i)
+        gi[n++] = o + i;
+    }
+    return n;
+  }
+
+  void build_pattern()
+  {
+    std::vector<Eigen::Triplet<double> > trip;
+    trip.reserve(16 * P_.edges.size());
+    slot_begin_.assign(P_.edges.size() + 1, 0);
+    int gi[4];
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int n = local_variables(e, gi);
+      slot_begin_[e + 1] = slot_begin_[e] + n * n;
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+          trip.emplace_back(gi[i], gi[j], 1.0);
+    }
+    for(int i = 0; i < P_.n_vars; ++i) // the diagonal, always (shifts)
+      trip.emplace_back(i, i, 1.0);
+    pattern_.resize(P_.n_vars, P_.n_vars);
+    pattern_.setFromTriplets(trip.begin(), trip.end());
+    pattern_.makeCompressed();
+    slots_.resize(slot_begin_.back());
+    const int* outer = pattern_.outerIndexPtr();
+    const int* inner = pattern_.innerIndexPtr();
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int n = local_variables(e, gi);
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j) {
+          // entry (row gi[i], column gi[j])
+          const int* first = inner + outer[gi[j]];
+          const int* last = inner + outer[gi[j] + 1];
+          slots_[slot_begin_[e] + i * n + j] = static_cast<int>(std::lower_bound(first, last, gi[i]) - inner);
+        }
+    }
+    std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
+  }
+
   static void project_psd(Eigen::Matrix4d& M, int n)
   {
     if(n == 1) {
       if(M(0, 0) < 0) M(0, 0) = 0;
       return;
+    }
+    if(n == 4) { // most blocks are definite already: a Cholesky attempt is much cheaper than eigenvalues
+      Eigen::LLT<Eigen::Matrix4d> llt(M);
+      if(llt.info() == Eigen::Success)
+        return;
     }
     if(n == 2) {
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(M.topLeftCorner<2, 2>());
@@ -421,85 +489,356 @@ private:
 
   const Flat_problem& P_;
   mutable std::vector<double> g_abs_;
+  Eigen::SparseMatrix<double> pattern_;
+  std::vector<int> slot_begin_, slots_;
 };
 
-// Projected Newton with backtracking line search; the symbolic factorisation is computed once.
+// Preconditioner of the Newton systems: the Hessian of E = (1/2) sum w d^2 is, for short
+// edges, close to the Hermitian form sum_e w |xi_a - xi_b|^2 of the tangent vectors
+// xi = lambda(z) dz measured in the hyperbolic metric (lambda = 2 / (1 - |z|^2)); a seam
+// copy z' = m(z) moves by m'(z) dz, i.e. by the same hyperbolic length turned by
+// rho = m'/|m'|, and a disk-border vertex moves along its side, xi = lambda z'(t) dt.
+// So H ~ S^T A S, with S the diagonal metric scaling and A the complex "connection
+// Laplacian" (one complex unknown per vertex owning variables; entries -w conj(rho_a) rho_b).
+// A is factored once (complex LDL^T, n x n: the size of the scalar Laplacian) and applied as
+// S^-1 A^-1 S^-T, the scaling at the current iterate. A one-dimensional border variable
+// takes the real part of its solution (the preconditioner stays symmetric positive definite).
+class Connection_laplacian_preconditioner
+{
+public:
+  typedef std::complex<double> Cd;
+  typedef Eigen::SparseMatrix<Cd> CMat;
+
+  explicit Connection_laplacian_preconditioner(const Flat_problem& P) : P_(P)
+  {
+    node_.assign(P.n, -1);
+    for(int v = 0; v < P.n; ++v)
+      if(P.kind[v] == Free || P.kind[v] == On_line) {
+        node_[v] = n_nodes_++;
+        owner_.push_back(v);
+      }
+  }
+
+  // assembles A with the seam rotations at x and factors it (symbolic analysis once)
+  bool factor(const std::vector<double>& x)
+  {
+    std::vector<Eigen::Triplet<Cd> > trip;
+    trip.reserve(4 * P_.edges.size() + n_nodes_);
+    std::vector<double> diag(n_nodes_, 0.0);
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int a = P_.edges[e][0], b = P_.edges[e][1];
+      const int na = node_of(a), nb = node_of(b);
+      const double w = P_.edge_weight[e];
+      const Cd ra = rotation(a, x), rb = rotation(b, x);
+      if(na >= 0 && nb >= 0 && na == nb) {
+        diag[na] += w * std::norm(ra - rb);
+        continue;
+      }
+      if(na >= 0) diag[na] += w;
+      if(nb >= 0) diag[nb] += w;
+      if(na >= 0 && nb >= 0) {
+        const Cd v = -w * std::conj(ra) * rb;
+        trip.emplace_back(na, nb, v);
+        trip.emplace_back(nb, na, std::conj(v));
+      }
+    }
+    for(int i = 0; i < n_nodes_; ++i)
+      trip.emplace_back(i, i, Cd(diag[i], 0.0));
+    CMat A(n_nodes_, n_nodes_);
+    A.setFromTriplets(trip.begin(), trip.end());
+    if(!analyzed_) {
+      solver_.analyzePattern(A);
+      analyzed_ = true;
+      // the real Laplacian (no rotations) for the gauge
+      Eigen::SparseMatrix<double> L = A.real();
+      for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+        const int a = P_.edges[e][0], b = P_.edges[e][1];
+        const int na = node_of(a), nb = node_of(b);
+        if(na >= 0 && na == nb) L.coeffRef(na, na) -= P_.edge_weight[e] * std::norm(rotation(a, x) - rotation(b, x));
+        else if(na >= 0 && nb >= 0) L.coeffRef(na, nb) = L.coeffRef(nb, na) = 0.0;
+      }
+      for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+        const int na = node_of(P_.edges[e][0]), nb = node_of(P_.edges[e][1]);
+        if(na >= 0 && nb >= 0 && na != nb) { L.coeffRef(na, nb) -= P_.edge_weight[e]; L.coeffRef(nb, na) -= P_.edge_weight[e]; }
+      }
+      gauge_solver_.compute(L);
+    }
+    solver_.factorize(A);
+    rho0_.assign(P_.n, Cd(1.0, 0.0));
+    for(int v = 0; v < P_.n; ++v)
+      if(P_.kind[v] == Transformed)
+        rho0_[v] = rotation(v, x);
+    return solver_.info() == Eigen::Success && (solver_.vectorD().array().real() > 0).all();
+  }
+
+  // the metric scaling at x
+  void set_scaling(const std::vector<double>& x)
+  {
+    scale_.resize(n_nodes_);
+    Position_jet j;
+    for(int i = 0; i < n_nodes_; ++i) {
+      const int v = owner_[i];
+      if(P_.kind[v] == Free) {
+        const double r2 = x[P_.var[v]] * x[P_.var[v]] + x[P_.var[v] + 1] * x[P_.var[v] + 1];
+        scale_[i] = Cd(2.0 / (1.0 - r2), 0.0);
+      } else {
+        position_jet(P_, x, v, j);
+        const double lambda = 2.0 / (1.0 - norm(j.z));
+        scale_[i] = Cd(lambda * j.dz[0].re, lambda * j.dz[0].im);
+      }
+    }
+    // gauge: the seam rotations have turned by delta since the factorisation; spread the
+    // turn smoothly over the mesh (least squares: L psi = div delta)
+    gauge_.assign(n_nodes_, Cd(1.0, 0.0));
+    std::vector<double> delta(P_.n, 0.0);
+    bool any = false;
+    for(int v = 0; v < P_.n; ++v)
+      if(P_.kind[v] == Transformed) {
+        delta[v] = std::arg(rotation(v, x) / rho0_[v]);
+        any = any || delta[v] != 0;
+      }
+    if(!any) return;
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_nodes_);
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int a = P_.edges[e][0], b = P_.edges[e][1];
+      const int na = node_of(a), nb = node_of(b);
+      if(na < 0 || nb < 0 || na == nb) continue;
+      const double D = P_.edge_weight[e] * (delta[b] - delta[a]);
+      rhs[nb] += D;
+      rhs[na] -= D;
+    }
+    const Eigen::VectorXd psi = gauge_solver_.solve(rhs);
+    for(int i = 0; i < n_nodes_; ++i)
+      gauge_[i] = std::polar(1.0, psi[i]);
+  }
+
+  // z = S^-1 A^-1 S^-T r
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const
+  {
+    Eigen::VectorXcd b(n_nodes_);
+    for(int i = 0; i < n_nodes_; ++i) {
+      const int v = owner_[i], k = P_.var[v];
+      if(P_.kind[v] == Free)
+        b[i] = Cd(r[k], r[k + 1]) / scale_[i].real();
+      else
+        b[i] = scale_[i] * (r[k] / std::norm(scale_[i]));
+    }
+    for(int i = 0; i < n_nodes_; ++i)
+      b[i] *= gauge_[i];
+    Eigen::VectorXcd xi = solver_.solve(b);
+    for(int i = 0; i < n_nodes_; ++i)
+      xi[i] *= std::conj(gauge_[i]);
+    z.resize(r.size());
+    for(int i = 0; i < n_nodes_; ++i) {
+      const int v = owner_[i], k = P_.var[v];
+      if(P_.kind[v] == Free) {
+        z[k] = xi[i].real() / scale_[i].real();
+        z[k + 1] = xi[i].imag() / scale_[i].real();
+      } else {
+        z[k] = std::real(std::conj(scale_[i]) * xi[i]) / std::norm(scale_[i]);
+      }
+    }
+  }
+
+private:
+  int node_of(int v) const { return P_.kind[v] == Transformed ? node_[P_.twin[v]] : node_[v]; }
+
+  // how a tangent vector of the owner turns on its way to this copy
+  Cd rotation(int v, const std::vector<double>& x) const
+  {
+    if(P_.kind[v] != Transformed)
+      return Cd(1.0, 0.0);
+    Position_jet j;
+    position_jet(P_, x, v, j);
+    const double m = abs(j.dz[0]);
+    return Cd(j.dz[0].re / m, j.dz[0].im / m);
+  }
+
+  const Flat_problem& P_;
+  std::vector<int> node_, owner_;
+  int n_nodes_ = 0;
+  std::vector<Cd> scale_, gauge_, rho0_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > gauge_solver_;
+  Eigen::SimplicialLDLT<CMat, Eigen::Lower, Eigen::AMDOrdering<int> > solver_;
+  bool analyzed_ = false;
+};
+
+// Minimises the energy in two phases, both with a backtracking (Armijo) line search.
+//  1. Preconditioned gradient steps p = -M^-1 g with the connection Laplacian M at the
+//     current scaling: no Hessian, one triangular solve per step. M is so close to the
+//     Hessian that these steps converge fast while the energy is far from its minimum.
+//  2. Newton's method with the exact Hessian, its systems solved by conjugate gradients
+//     preconditioned by M, refactored at the start of the phase and when it no longer fits
+//     (truncated Newton, relative tolerance min(1/2, sqrt(force imbalance)): superlinear).
+// Where the exact Hessian is not definite (negative curvature met by CG), the Hessian
+// projected edge by edge onto the positive semi-definite cone is used instead. Should the
+// iterative solves stall, or the connection Laplacian not factor, the Hessian is factored
+// directly (sparse LDL^T, symbolic analysis once): the former, slower, solver.
 inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const Solver_options& opt,
                                   Solver_statistics& st)
 {
   typedef Eigen::SparseMatrix<double> SpMat;
   typedef std::chrono::steady_clock Clock;
+  auto seconds = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   Energy_evaluator ev(P);
   st = Solver_statistics();
   if(P.n_vars == 0) {
     st.converged = true;
     return OK;
   }
-  std::vector<double> g, xn(P.n_vars), gn;
-  std::vector<Eigen::Triplet<double> > trip;
-  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int> > solver;
-  bool analyzed = false;
-  SpMat H(P.n_vars, P.n_vars);
-
-  // Projected Newton far from the solution; the exact Hessian (quadratic convergence)
-  // once the gradient is small, falling back to the projection if it is not definite.
-  bool exact = false;
+  const int nv = P.n_vars;
+  std::vector<double> g, xn(nv), gn;
+  SpMat H;
+  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int> > direct;
+  bool direct_analyzed = false;
+  Connection_laplacian_preconditioner pre(P);
+  bool use_direct = opt.direct_solver;
   auto t0 = Clock::now();
-  double E = ev.evaluate(x, g, &trip, true);
-  st.time_assemble += std::chrono::duration<double>(Clock::now() - t0).count();
+  if(!use_direct && !pre.factor(x))
+    use_direct = true;
+  st.time_factor += seconds(t0);
+
+  // per-variable weights of the hyperbolic norm of a gradient (or residual)
+  Eigen::VectorXd hw(nv);
+  auto set_norm_weights = [&]() {
+    Position_jet j;
+    for(int v = 0; v < P.n; ++v) {
+      if(P.kind[v] == Free) {
+        const int i = P.var[v];
+        hw[i] = hw[i + 1] = (1 - (x[i] * x[i] + x[i + 1] * x[i + 1])) / 2;
+      } else if(P.kind[v] == On_line) {
+        position_jet(P, x, v, j);
+        hw[P.var[v]] = (1 - norm(j.z)) / (2 * abs(j.dz[0]));
+      }
+    }
+  };
+
+  enum Phase { Model, Projected, Exact };
+  Phase phase = use_direct ? Projected : Model;
+  auto assemble = [&]() { // gradient, and the Hessian the phase needs
+    auto t = Clock::now();
+    const double e = ev.evaluate(x, g, phase == Model ? nullptr : &H, phase == Projected);
+    st.time_assemble += seconds(t);
+    return e;
+  };
+  double E = assemble();
   st.initial_energy = E;
   st.initial_gradient = ev.hyperbolic_gradient_norm(x, g);
   const double g0 = st.initial_gradient > 0 ? st.initial_gradient : 1.0;
   double gnorm = st.initial_gradient;
   double grel = ev.hyperbolic_gradient_norm(x, g, true);
-  int stalls = 0;
+  int stalls = 0, last_cg = 0, slow_steps = 0;
   double best_grel = grel;
   int since_best = 0;
+  Eigen::VectorXd p(nv), r(nv), zv(nv), d(nv), Hd(nv);
   for(int it = 0; it < opt.max_iterations; ++it) {
     if(grel <= opt.gradient_tolerance)
       break;
     // Newton with the exact Hessian halves the imbalance at least every few steps until
     // rounding stops it: ten steps without that mean the floor of double precision
-    if(grel < 0.5 * best_grel || !exact) {
+    if(grel < 0.5 * best_grel || phase != Exact) {
       best_grel = std::min(best_grel, grel);
       since_best = 0;
     } else if(++since_best > 10) {
       break;
     }
     auto t1 = Clock::now();
-    H.setFromTriplets(trip.begin(), trip.end());
-    double maxd = 0;
-    for(int i = 0; i < P.n_vars; ++i)
-      maxd = std::max(maxd, H.coeff(i, i));
-    if(!exact) {
-      // a tiny diagonal shift keeps the factorisation definite where a projected block is singular
-      for(int i = 0; i < P.n_vars; ++i)
-        H.coeffRef(i, i) += 1e-12 * maxd + 1e-300;
-    }
-    if(!analyzed) {
-      solver.analyzePattern(H);
-      analyzed = true;
-    }
-    solver.factorize(H);
-    bool ok = solver.info() == Eigen::Success;
-    if(ok && exact) // LDLT of an indefinite matrix "succeeds": check the pivots
-      ok = (solver.vectorD().array() > 0).all();
-    Eigen::Map<const Eigen::VectorXd> gv(g.data(), P.n_vars);
-    Eigen::VectorXd p;
-    if(ok) {
-      p = solver.solve(-gv);
-      if(exact && solver.info() == Eigen::Success) {
-        // one step of iterative refinement: the exact Hessian can be badly conditioned
-        const Eigen::VectorXd r = -gv - H * p;
-        p += solver.solve(r);
+    Eigen::Map<const Eigen::VectorXd> gv(g.data(), nv);
+    bool ok = false;
+    if(phase == Model) {
+      pre.set_scaling(x);
+      r = -gv;
+      pre.apply(r, p);
+      ok = p.allFinite() && gv.dot(p) < 0;
+    } else if(!use_direct) {
+      if(phase == Projected) {
+        // a tiny diagonal shift keeps the system definite where a projected block is singular
+        double maxd = 0;
+        for(int i = 0; i < nv; ++i)
+          maxd = std::max(maxd, H.coeff(i, i));
+        for(int i = 0; i < nv; ++i)
+          H.coeffRef(i, i) += 1e-12 * maxd + 1e-300;
       }
-      ok = solver.info() == Eigen::Success && p.allFinite() && gv.dot(p) < 0;
+      if(last_cg > opt.refactor_cg_iterations) { // the preconditioner has drifted away
+        if(!pre.factor(x)) {
+          use_direct = true;
+          st.time_factor += seconds(t1);
+          continue;
+        }
+        ++st.preconditioner_factorizations;
+      }
+      // preconditioned conjugate gradients on H p = -g, residual in the hyperbolic norm;
+      // superlinear tolerance (sqrt), but no more accurate than the stopping test needs
+      set_norm_weights();
+      pre.set_scaling(x);
+      const double eta = std::max(std::min(0.5, std::sqrt(grel)), std::min(0.5, 0.25 * opt.gradient_tolerance / grel));
+      const double target = eta * (gv.cwiseProduct(hw)).norm();
+      p.setZero();
+      r = -gv;
+      pre.apply(r, zv);
+      d = zv;
+      double rz = r.dot(zv);
+      bool negative_curvature = false, reached = false;
+      int k = 0;
+      for(; k < opt.max_cg_iterations; ++k) {
+        Hd.noalias() = H * d;
+        const double dHd = d.dot(Hd);
+        if(!(dHd > 0)) {
+          negative_curvature = true;
+          break;
+        }
+        const double alpha = rz / dHd;
+        p += alpha * d;
+        r -= alpha * Hd;
+        if(r.cwiseProduct(hw).norm() <= target) {
+          reached = true;
+          ++k;
+          break;
+        }
+        pre.apply(r, zv);
+        const double rz_new = r.dot(zv);
+        d = zv + (rz_new / rz) * d;
+        rz = rz_new;
+      }
+      st.cg_iterations += k;
+      last_cg = k;
+      if(negative_curvature && phase == Exact) { // back to the projected Hessian
+        st.time_factor += seconds(t1);
+        phase = Projected;
+        last_cg = 0;
+        E = assemble();
+        continue;
+      }
+      if(k == 0) // negative curvature along the first direction: the preconditioned gradient
+        p = zv;
+      ok = p.allFinite() && gv.dot(p) < 0;
+      if(!reached && !negative_curvature && ++st.cg_failures > 2)
+        use_direct = true; // the preconditioner does not fit this problem
     }
-    st.time_factor += std::chrono::duration<double>(Clock::now() - t1).count();
+    if(use_direct && phase != Model) {
+      if(!direct_analyzed) {
+        direct.analyzePattern(H);
+        direct_analyzed = true;
+      }
+      direct.factorize(H);
+      ok = direct.info() == Eigen::Success;
+      if(ok && phase == Exact) // LDLT of an indefinite matrix "succeeds": check the pivots
+        ok = (direct.vectorD().array() > 0).all();
+      if(ok) {
+        p = direct.solve(-gv);
+        if(phase == Exact && direct.info() == Eigen::Success) {
+          // one step of iterative refinement: the exact Hessian can be badly conditioned
+          const Eigen::VectorXd res = -gv - H * p;
+          p += direct.solve(res);
+        }
+        ok = direct.info() == Eigen::Success && p.allFinite() && gv.dot(p) < 0;
+      }
+    }
+    st.time_factor += seconds(t1);
     if(!ok) {
-      if(exact) { // back to the projected Hessian
-        exact = false;
-        E = ev.evaluate(x, g, &trip, true);
+      if(phase != Projected) { // to the projected Hessian
+        phase = Projected;
+        E = assemble();
         continue;
       }
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
@@ -510,7 +849,7 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     bool accepted = false;
     double gnorm_new = gnorm;
     for(int ls = 0; ls < 60; ++ls) {
-      for(int i = 0; i < P.n_vars; ++i)
+      for(int i = 0; i < nv; ++i)
         xn[i] = x[i] + alpha * p[i];
       if(ev.feasible(xn)) {
         En = ev.energy(xn);
@@ -531,31 +870,33 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
       }
       alpha *= 0.5;
     }
-    st.time_line_search += std::chrono::duration<double>(Clock::now() - t2).count();
+    st.time_line_search += seconds(t2);
     st.iterations = it + 1;
     if(!accepted) {
       if(++stalls > 2)
         break; // no progress possible at this precision: let the tolerance decide
-      exact = !exact;
-      E = ev.evaluate(x, g, &trip, !exact);
+      phase = phase == Projected ? Exact : Projected;
+      E = assemble();
       continue;
     }
     stalls = 0;
     x.swap(xn);
-    auto t3 = Clock::now();
-    const double gprev = gnorm;
-    E = ev.evaluate(x, g, nullptr);
+    const double grel_prev = grel;
+    E = assemble();
     gnorm = ev.hyperbolic_gradient_norm(x, g);
     grel = ev.hyperbolic_gradient_norm(x, g, true);
-    // switch to the exact Hessian near the solution
-    if(!exact && gnorm / g0 < 1e-2 && alpha == 1.0)
-      exact = true;
-    E = ev.evaluate(x, g, &trip, !exact);
-    st.time_assemble += std::chrono::duration<double>(Clock::now() - t3).count();
-    (void)gprev;
     if(opt.verbose)
-      std::cerr << "  newton " << it + 1 << (exact ? " (exact)" : " (projected)") << ": E = " << E
-                << "  |grad|/|grad0| = " << gnorm / g0 << "  force imbalance " << grel << "  step " << alpha << std::endl;
+      std::cerr << "  step " << it + 1 << (phase == Model ? " (preconditioned gradient)" : phase == Exact ? " (Newton)" : " (projected Newton)")
+                << ": E = " << E << "  |grad|/|grad0| = " << gnorm / g0 << "  force imbalance " << grel << "  step " << alpha
+                << "  cg " << st.cg_iterations << std::endl;
+    // to Newton with the exact Hessian near the solution, or when gradient steps slow down
+    if(phase == Model && grel > 0.8 * grel_prev)
+      ++slow_steps;
+    if(phase != Exact && grel > opt.gradient_tolerance &&
+       ((gnorm / g0 < opt.newton_threshold && alpha == 1.0) || (phase == Model && slow_steps >= 3))) {
+      phase = Exact;
+      E = assemble();
+    }
   }
   st.energy = E;
   st.gradient = gnorm;
