@@ -972,6 +972,20 @@ TEST_CASE(collection_parallel_and_cycle_consistent)
       if(!is_border(h, seq->mesh(i)) && get(seq->uv_map(i), h) != get(par->uv_map(i), h)) ++differ;
     CHECK_MSG(differ == 0, "mesh " << i << ": " << differ << " corners differ between threads");
   }
+  // all maps at once (in parallel) are the maps computed one by one (sequentially), bit for bit
+  par->compute_all_maps();
+  std::size_t map_differ = 0;
+  for(std::size_t a = 0; a < 4; ++a)
+    for(std::size_t b = 0; b < 4; ++b)
+      if(a != b) {
+        const auto& fp = par->map(a, b);
+        const auto& fs = seq->map(a, b);
+        CHECK(fp.size() == num_vertices(par->mesh(a)) && fs.size() == fp.size());
+        for(std::size_t v = 0; v < fp.size(); ++v)
+          map_differ += !(fp[v].success && fs[v].success && fp[v].face_index == fs[v].face_index &&
+                          fp[v].barycentric == fs[v].barycentric);
+      }
+  CHECK_MSG(map_differ == 0, map_differ << " vertex locations differ between compute_all_maps() and map()");
   double worst = 0;
   for(std::size_t a = 0; a < 4; ++a)
     for(std::size_t b = 0; b < 4; ++b)

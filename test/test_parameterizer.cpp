@@ -17,6 +17,9 @@
 #include <CGAL/Random.h>
 
 #include <map>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 using namespace hot_test;
@@ -666,11 +669,10 @@ static void check_energy_derivatives(const HOT::internal::Flat_problem& P, std::
     if(round == 1) // move every variable a little: away from the initialisation's structure
       for(double& xi : x) xi += 1e-3 * rng.get_double(-1, 1);
     std::vector<double> g, g2;
-    std::vector<Eigen::Triplet<double> > trip;
-    const double E = ev.evaluate(x, g, &trip, false);
+    Eigen::SparseMatrix<double> H;
+    const double E = ev.evaluate(x, g, &H, false);
     CHECK_NEAR(E, ev.energy(x), 1e-12 * E);
-    Eigen::SparseMatrix<double> H(P.n_vars, P.n_vars);
-    H.setFromTriplets(trip.begin(), trip.end());
+    CHECK(H.rows() == P.n_vars && H.cols() == P.n_vars);
     int checked = 0;
     for(int i = 0; i < P.n_vars; i += std::max(1, P.n_vars / 60)) {
       const double h = 1e-6;
@@ -695,38 +697,51 @@ static void check_energy_derivatives(const HOT::internal::Flat_problem& P, std::
   }
 }
 
+// the flat problem of a closed mesh cut through k farthest-point landmarks (TSP order), with
+// cotangent weights and the Klein Tutte initialisation
+struct Sphere_problem
+{
+  Mesh m;
+  HOT::internal::Flat_problem P;
+  std::vector<double> x;
+};
+
+static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& S)
+{
+  if(!read_demo_mesh(name, S.m)) return false;
+  Mesh& m = S.m;
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, k);
+  auto sem = m.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:s", false).first;
+  auto svm = m.add_property_map<vertex_descriptor, bool>("v:s", false).first;
+  Disk_problem::SMesh sm(m, sem, svm);
+  std::vector<vertex_descriptor> ordered;
+  for(std::size_t i : HOT::internal::compute_tsp_landmark_order(m, lm, get(CGAL::vertex_point, m))) ordered.push_back(lm[i]);
+  const auto cut = HOT::internal::compute_cut_through_landmarks(m, ordered, get(CGAL::vertex_point, m));
+  if(!cut.ok || !HOT::internal::add_cut_to_seam_mesh(sm, m, cut)) return false;
+  boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
+  for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
+  HOT::Orbifold_tile<> tile;
+  HOT::make_orbifold_tile(HOT::Sphere_type, k, tile);
+  std::unordered_map<vertex_descriptor, int> bi;
+  std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
+  std::string msg;
+  if(HOT::internal::build_flat_topology(sm, bhd, ordered, tile, S.P, bi, cv, msg) != HOT::OK) return false;
+  std::vector<K::Point_3> pts(S.P.n_base);
+  for(auto& e : bi) pts[e.second] = m.point(e.first);
+  HOT::internal::compute_edge_weights(S.P, pts, HOT::Cotangent, 1e-6);
+  return HOT::internal::initialize_embedding(S.P, tile, pts, S.x) == HOT::OK;
+}
+
 TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
 {
   // sphere type: hand, cut through 7 landmarks (seam twins)
   {
-    Mesh m;
-    CHECK(read_demo_mesh("hand", m));
-    const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 7);
-    auto sem = m.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:s", false).first;
-    auto svm = m.add_property_map<vertex_descriptor, bool>("v:s", false).first;
-    Disk_problem::SMesh sm(m, sem, svm);
-    std::vector<vertex_descriptor> ordered;
-    for(std::size_t i : HOT::internal::compute_tsp_landmark_order(m, lm, get(CGAL::vertex_point, m))) ordered.push_back(lm[i]);
-    const auto cut = HOT::internal::compute_cut_through_landmarks(m, ordered, get(CGAL::vertex_point, m));
-    CHECK(cut.ok && HOT::internal::add_cut_to_seam_mesh(sm, m, cut));
-    boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
-    for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
-    HOT::Orbifold_tile<> tile;
-    HOT::make_orbifold_tile(HOT::Sphere_type, 7, tile);
-    HOT::internal::Flat_problem P;
-    std::unordered_map<vertex_descriptor, int> bi;
-    std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
-    std::string msg;
-    CHECK(HOT::internal::build_flat_topology(sm, bhd, ordered, tile, P, bi, cv, msg) == HOT::OK);
+    Sphere_problem S;
+    CHECK(make_sphere_problem("hand", 7, S));
     int twins = 0;
-    for(int v = 0; v < P.n; ++v) twins += (P.kind[v] == HOT::internal::Transformed);
+    for(int v = 0; v < S.P.n; ++v) twins += (S.P.kind[v] == HOT::internal::Transformed);
     CHECK(twins > 10);
-    std::vector<K::Point_3> pts(P.n_base);
-    for(auto& e : bi) pts[e.second] = m.point(e.first);
-    HOT::internal::compute_edge_weights(P, pts, HOT::Cotangent, 1e-6);
-    std::vector<double> x;
-    CHECK(HOT::internal::initialize_embedding(P, tile, pts, x) == HOT::OK);
-    check_energy_derivatives(P, x, "sphere");
+    check_energy_derivatives(S.P, S.x, "sphere");
   }
   // disk type: mushroom (boundary parameters)
   {
@@ -740,5 +755,70 @@ TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
     check_energy_derivatives(D.P, D.x, "disk");
   }
 }
+
+// The energy has one minimiser (it is geodesically convex): the preconditioned solver (gradient
+// steps and Newton-CG with the connection Laplacian) and the direct one (the Hessian factored
+// at every Newton step) must reach the same embedding, vertex by vertex.
+static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std::vector<double>& x0, const std::string& what)
+{
+  HOT::internal::Solver_options fast, direct;
+  direct.direct_solver = true;
+  fast.verbose = getenv("HOT_VERBOSE") != nullptr;
+  std::vector<double> xf = x0, xd = x0;
+  HOT::internal::Solver_statistics sf, sd;
+  CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf) == HOT::OK, what << ": preconditioned solver");
+  CHECK_MSG(HOT::internal::minimize_energy(P, xd, direct, sd) == HOT::OK, what << ": direct solver");
+  double worst = 0;
+  for(int v = 0; v < P.n; ++v) {
+    const C a = HOT::internal::position(P, xf, v), b = HOT::internal::position(P, xd, v);
+    const double dd = norm(a - b) / ((1 - norm(a)) * (1 - norm(b)));
+    worst = std::max(worst, 2 * std::asinh(std::sqrt(dd))); // hyperbolic distance
+  }
+  std::cout << "  " << what << ": preconditioned " << sf.iterations << " steps (" << sf.cg_iterations << " CG, "
+            << sf.preconditioner_factorizations << " refactorisations), direct " << sd.iterations
+            << " steps; largest hyperbolic distance between the two " << worst << std::endl;
+  CHECK(sf.cg_failures == 0);
+  CHECK_MSG(worst < 1e-7, what << ": the two solvers differ by " << worst);
+  CHECK(std::abs(sf.energy - sd.energy) <= 1e-12 * sd.energy);
+}
+
+TEST_CASE(preconditioned_and_direct_solvers_agree)
+{
+  for(const auto& c : std::vector<std::pair<std::string, int> >{{"hand", 7}, {"hand", 23}, {"bear", 7}}) {
+    Sphere_problem S;
+    CHECK(make_sphere_problem(c.first, c.second, S));
+    check_solvers_agree(S.P, S.x, c.first + " k=" + std::to_string(c.second));
+  }
+  Mesh m;
+  CHECK(read_demo_mesh("mushroom", m));
+  Disk_problem D;
+  CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
+  check_solvers_agree(D.P, D.x, "mushroom (disk)");
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+// The energy, gradient and Hessian are summed in a fixed order: one thread or many give the
+// same embedding bit for bit (bear: 41K edges, above the size where the sums run in parallel).
+TEST_CASE(same_embedding_whatever_the_number_of_threads)
+{
+  Mesh m1, m2;
+  CHECK(read_demo_mesh("bear", m1));
+  m2 = m1;
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m1, 7);
+  Embedding_run r1, r2;
+  tbb::task_arena one(1);
+  one.execute([&] { r1 = embed(m1, lm, HOT::Cotangent, HOT::Tsp_order); });
+  tbb::task_arena many(std::max(2, tbb::this_task_arena::max_concurrency()));
+  many.execute([&] { r2 = embed(m2, lm, HOT::Cotangent, HOT::Tsp_order); });
+  CHECK(r1.ec == HOT::OK && r2.ec == HOT::OK);
+  const UV_map uv1 = m1.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const UV_map uv2 = m2.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  std::size_t differ = 0;
+  for(halfedge_descriptor h : halfedges(m1))
+    if(!is_border(h, m1) && get(uv1, h) != get(uv2, h)) ++differ;
+  CHECK_MSG(differ == 0, differ << " corners differ between 1 and several threads");
+  CHECK(r1.st.iterations == r2.st.iterations);
+}
+#endif
 
 HOT_TEST_MAIN

@@ -190,6 +190,46 @@ public:
     return it->second;
   }
 
+  /// computes the maps between all ordered pairs of distinct meshes (and every locator), in
+  /// parallel with `CGAL::Parallel_tag`; afterwards `map()` only reads its cache. The maps are
+  /// the same, bit for bit, whatever the number of threads.
+  /// \pre `embed()` returned `OK`
+  void compute_all_maps()
+  {
+    const std::size_t N = items_.size();
+    std::vector<std::unique_ptr<Locator> > locs(N);
+    std::vector<std::pair<std::size_t, std::size_t> > pairs;
+    for(std::size_t a = 0; a < N; ++a)
+      for(std::size_t b = 0; b < N; ++b)
+        if(a != b && maps_.find(std::make_pair(a, b)) == maps_.end())
+          pairs.emplace_back(a, b);
+    std::vector<std::vector<Location> > results(pairs.size());
+    auto build = [&](std::size_t i) {
+      if(locators_.find(i) == locators_.end())
+        locs[i].reset(new Locator(*items_[i].mesh, items_[i].uv, type_, static_cast<int>(order_.size())));
+    };
+    auto locator_of = [&](std::size_t i) -> const Locator& {
+      return locs[i] ? *locs[i] : *locators_.find(i)->second;
+    };
+    auto run = [&](std::size_t p) {
+      results[p] = map_vertices(*items_[pairs[p].first].mesh, items_[pairs[p].first].uv, locator_of(pairs[p].second));
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value) {
+      tbb::parallel_for(std::size_t(0), N, [&](std::size_t i) { build(i); });
+      tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t p) { run(p); });
+    } else
+#endif
+    {
+      for(std::size_t i = 0; i < N; ++i) build(i);
+      for(std::size_t p = 0; p < pairs.size(); ++p) run(p);
+    }
+    for(std::size_t i = 0; i < N; ++i)
+      if(locs[i]) locators_.emplace(i, std::move(locs[i]));
+    for(std::size_t p = 0; p < pairs.size(); ++p)
+      maps_.emplace(pairs[p], std::move(results[p]));
+  }
+
   /// the largest distance, over the vertices `x` of `a`, between `f_bc(f_ab(x))` and `f_ac(x)` on
   /// mesh `c`, relative to `c`'s bounding-box diagonal (0 up to rounding: the maps are cycle consistent)
   double cycle_consistency_error(std::size_t a, std::size_t b, std::size_t c)

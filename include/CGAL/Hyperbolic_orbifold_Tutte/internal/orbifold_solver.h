@@ -12,6 +12,11 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -34,11 +39,29 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
 {
   const std::size_t m = P.edges.size();
   P.edge_weight.assign(m, 0.0);
-  std::unordered_map<long long, int> edge_id;
-  edge_id.reserve(2 * m);
+  // edge ids by vertex pair: per vertex, its edges (compressed rows; valences are small)
+  std::vector<int> first(P.n + 1, 0), other(2 * m), id(2 * m);
+  for(const auto& e : P.edges) { ++first[e[0] + 1]; ++first[e[1] + 1]; }
+  for(int v = 0; v < P.n; ++v) first[v + 1] += first[v];
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for(std::size_t e = 0; e < m; ++e) {
+      const int a = P.edges[e][0], b = P.edges[e][1];
+      other[fill[a]] = b; id[fill[a]++] = static_cast<int>(e);
+      other[fill[b]] = a; id[fill[b]++] = static_cast<int>(e);
+    }
+  }
+  auto edge_id = [&](int a, int b) {
+    for(int k = first[a]; k < first[a + 1]; ++k)
+      if(other[k] == b) return id[k];
+    return -1;
+  };
+  // the copies of each base edge (two along a seam, one elsewhere): edges sorted by base pair
   auto key = [](int a, int b) { return (static_cast<long long>(std::min(a, b)) << 32) | static_cast<long long>(std::max(a, b)); };
+  std::vector<std::pair<long long, int> > by_base(m);
   for(std::size_t e = 0; e < m; ++e)
-    edge_id.emplace(key(P.edges[e][0], P.edges[e][1]), static_cast<int>(e));
+    by_base[e] = std::make_pair(key(P.base[P.edges[e][0]], P.base[P.edges[e][1]]), static_cast<int>(e));
+  std::sort(by_base.begin(), by_base.end());
 
   for(const auto& t : P.faces) {
     const Point3* p[3];
@@ -81,36 +104,33 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
           break;
         }
       }
-      P.edge_weight[edge_id.at(key(a, b))] += w;
+      const int e = edge_id(a, b);
+      if(e >= 0)
+        P.edge_weight[e] += w;
     }
   }
-  // Per base edge: the total over its copies (two for a seam edge, one otherwise).
-  std::unordered_map<long long, std::pair<double, int> > base_sum;
-  base_sum.reserve(2 * m);
-  for(std::size_t e = 0; e < m; ++e) {
-    auto& s = base_sum[key(P.base[P.edges[e][0]], P.base[P.edges[e][1]])];
-    s.first += P.edge_weight[e];
-    s.second += 1;
-  }
-  for(std::size_t e = 0; e < m; ++e) {
-    const auto& s = base_sum[key(P.base[P.edges[e][0]], P.base[P.edges[e][1]])];
-    if(type == Uniform)
-      P.edge_weight[e] = 1.0 / s.second;              // 1 per base edge
-    else if(!(s.first >= epsilon))
-      P.edge_weight[e] = epsilon / s.second;          // clamp (cotangent; degenerate geometry)
-    else if(!(P.edge_weight[e] > 0))
-      P.edge_weight[e] = s.first / s.second;          // a seam copy with a negative half: share the total
-  }
-  // keep the total of the copies of each base edge where a copy was rebalanced
-  std::unordered_map<long long, double> total;
-  total.reserve(2 * m);
-  for(std::size_t e = 0; e < m; ++e)
-    total[key(P.base[P.edges[e][0]], P.base[P.edges[e][1]])] += P.edge_weight[e];
-  for(std::size_t e = 0; e < m; ++e) {
-    const long long kk = key(P.base[P.edges[e][0]], P.base[P.edges[e][1]]);
-    const auto& s = base_sum[kk];
-    if(type != Uniform && s.first >= epsilon)
-      P.edge_weight[e] *= s.first / total[kk];
+  // Per base edge (a run of by_base): the total over its copies. Uniform: 1 per base edge;
+  // cotangent sums below epsilon are clamped (degenerate geometry); a seam copy with a
+  // negative half shares the total with its twin copy.
+  for(std::size_t i = 0; i < m;) {
+    std::size_t j = i;
+    double sum = 0;
+    while(j < m && by_base[j].first == by_base[i].first)
+      sum += P.edge_weight[by_base[j++].second];
+    const double copies = static_cast<double>(j - i);
+    bool rebalanced = false;
+    for(std::size_t k = i; k < j; ++k) {
+      double& w = P.edge_weight[by_base[k].second];
+      if(type == Uniform) w = 1.0 / copies;
+      else if(!(sum >= epsilon)) w = epsilon / copies;
+      else if(!(w > 0)) { w = sum / copies; rebalanced = true; }
+    }
+    if(rebalanced) { // keep the total of the copies
+      double total = 0;
+      for(std::size_t k = i; k < j; ++k) total += P.edge_weight[by_base[k].second];
+      for(std::size_t k = i; k < j; ++k) P.edge_weight[by_base[k].second] *= sum / total;
+    }
+    i = j;
   }
 }
 
@@ -247,6 +267,8 @@ struct Solver_options
   int max_cg_iterations = 400;       // per Newton step
   int refactor_cg_iterations = 25;   // refactor the preconditioner after a Newton step that needed more
   double newton_threshold = 1e-2;    // relative gradient norm below which Newton takes over
+  int max_model_refactorizations = 8; // preconditioner refactorisations during the gradient steps
+  bool geodesic_steps = true;        // far from the solution, move free vertices along geodesics
   bool direct_solver = false;        // factor every Newton system instead of conjugate gradients
   bool verbose = false;
 };
@@ -276,16 +298,22 @@ public:
   // returns +infinity for infeasible x (a point on or outside the unit circle)
   double energy(const std::vector<double>& x) const
   {
-    double E = 0;
-    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+    const std::size_t m = P_.edges.size();
+    edge_energy_.resize(m);
+    for_each_edge([&](std::size_t e) {
       const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
       const double A = 1 - norm(a), B = 1 - norm(b);
-      if(!(A > 0 && B > 0))
-        return std::numeric_limits<double>::infinity();
+      if(!(A > 0 && B > 0)) {
+        edge_energy_[e] = std::numeric_limits<double>::infinity();
+        return;
+      }
       const double dx = a.re - b.re, dy = a.im - b.im;
       const double d = 2.0 * std::asinh(std::sqrt((dx * dx + dy * dy) / (A * B)));
-      E += 0.5 * P_.edge_weight[e] * d * d;
-    }
+      edge_energy_[e] = 0.5 * P_.edge_weight[e] * d * d;
+    });
+    double E = 0;
+    for(std::size_t e = 0; e < m; ++e)
+      E += edge_energy_[e];
     return E;
   }
 
@@ -309,72 +337,33 @@ public:
   double evaluate(const std::vector<double>& x, std::vector<double>& g,
                   Eigen::SparseMatrix<double>* H, bool project = true) const
   {
+    const std::size_t m = P_.edges.size();
+    edge_energy_.resize(m);
+    edge_gradient_.resize(4 * m);
+    if(H)
+      edge_hessian_.resize(slots_.size());
+    // each edge's terms independently (in parallel where TBB is available)...
+    for_each_edge([&](std::size_t e) { edge_terms(x, e, H != nullptr, project); });
+    // ...then summed in edge order: the same result bit for bit whatever the number of threads
     g.assign(P_.n_vars, 0.0);
     g_abs_.assign(P_.n_vars, 0.0);
-    double* hv = nullptr;
+    double E = 0;
+    int gi[4];
+    for(std::size_t e = 0; e < m; ++e) {
+      E += edge_energy_[e];
+      const int n = local_variables(e, gi);
+      for(int i = 0; i < n; ++i) {
+        g[gi[i]] += edge_gradient_[4 * e + i];
+        g_abs_[gi[i]] += std::abs(edge_gradient_[4 * e + i]);
+      }
+    }
     if(H) {
       if(H->nonZeros() != pattern_.nonZeros() || H->rows() != pattern_.rows())
         *H = pattern_;
-      hv = H->valuePtr();
+      double* hv = H->valuePtr();
       std::fill(hv, hv + H->nonZeros(), 0.0);
-    }
-    double E = 0;
-    Position_jet ja, jb;
-    Squared_distance_derivatives sd;
-    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
-      const int a = P_.edges[e][0], b = P_.edges[e][1];
-      position_jet(P_, x, a, ja);
-      position_jet(P_, x, b, jb);
-      const double hw = 0.5 * P_.edge_weight[e];
-      if(ja.dim == 0 && jb.dim == 0) { // constant, but part of the energy that energy() returns
-        squared_hyperbolic_distance(ja.z, jb.z, sd, false);
-        E += hw * sd.f;
-        continue;
-      }
-      squared_hyperbolic_distance(ja.z, jb.z, sd, H != nullptr);
-      E += hw * sd.f;
-      const int oa = variable_owner(P_, a), ob = variable_owner(P_, b);
-      // local variables: first ja.dim of a, then jb.dim of b
-      const int n = ja.dim + jb.dim;
-      double lg[4];
-      int gi[4];
-      // dz_i as real 2-vectors, per local variable, with its offset in the 4-vector (0: z, 2: w)
-      double J[4][2];
-      int off[4];
-      for(int i = 0; i < ja.dim; ++i) {
-        J[i][0] = ja.dz[i].re; J[i][1] = ja.dz[i].im; off[i] = 0; gi[i] = oa + i;
-      }
-      for(int i = 0; i < jb.dim; ++i) {
-        J[ja.dim + i][0] = jb.dz[i].re; J[ja.dim + i][1] = jb.dz[i].im; off[ja.dim + i] = 2; gi[ja.dim + i] = ob + i;
-      }
-      for(int i = 0; i < n; ++i) {
-        lg[i] = hw * (sd.g[off[i]] * J[i][0] + sd.g[off[i] + 1] * J[i][1]);
-        g[gi[i]] += lg[i];
-        g_abs_[gi[i]] += std::abs(lg[i]);
-      }
-      if(!hv)
-        continue;
-      Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
-      for(int i = 0; i < n; ++i)
-        for(int j = i; j < n; ++j) {
-          double h = 0;
-          for(int p = 0; p < 2; ++p)
-            for(int q = 0; q < 2; ++q)
-              h += J[i][p] * sd.H[off[i] + p][off[j] + q] * J[j][q];
-          // second derivatives of the position (same vertex only)
-          if(off[i] == off[j]) {
-            const Position_jet& jj = (off[i] == 0) ? ja : jb;
-            const int ii = (off[i] == 0) ? i : i - ja.dim, kk = (off[j] == 0) ? j : j - ja.dim;
-            h += sd.g[off[i]] * jj.ddz[ii][kk].re + sd.g[off[i] + 1] * jj.ddz[ii][kk].im;
-          }
-          M(i, j) = M(j, i) = hw * h;
-        }
-      if(project)
-        project_psd(M, n);
-      const int* slot = &slots_[slot_begin_[e]];
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j)
-          hv[slot[i * n + j]] += M(i, j);
+      for(std::size_t k = 0; k < slots_.size(); ++k)
+        hv[slots_[k]] += edge_hessian_[k];
     }
     return E;
   }
@@ -408,6 +397,74 @@ public:
   }
 
 private:
+  template <class F>
+  void for_each_edge(const F& f) const
+  {
+    const std::size_t m = P_.edges.size();
+#ifdef CGAL_LINKED_WITH_TBB
+    if(m > 20000) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t e = r.begin(); e != r.end(); ++e)
+          f(e);
+      });
+      return;
+    }
+#endif
+    for(std::size_t e = 0; e < m; ++e)
+      f(e);
+  }
+
+  // energy, gradient and (projected) Hessian block of edge e, into the per-edge buffers
+  void edge_terms(const std::vector<double>& x, std::size_t e, bool want_hessian, bool project) const
+  {
+    Position_jet ja, jb;
+    Squared_distance_derivatives sd;
+    const int a = P_.edges[e][0], b = P_.edges[e][1];
+    position_jet(P_, x, a, ja);
+    position_jet(P_, x, b, jb);
+    const double hw = 0.5 * P_.edge_weight[e];
+    const int n = ja.dim + jb.dim;
+    squared_hyperbolic_distance(ja.z, jb.z, sd, want_hessian && n > 0);
+    edge_energy_[e] = hw * sd.f; // constant when n == 0, but part of the energy that energy() returns
+    if(n == 0)
+      return;
+    // local variables: first ja.dim of a, then jb.dim of b;
+    // dz_i as real 2-vectors, per local variable, with its offset in the 4-vector (0: z, 2: w)
+    double J[4][2];
+    int off[4];
+    for(int i = 0; i < ja.dim; ++i) {
+      J[i][0] = ja.dz[i].re; J[i][1] = ja.dz[i].im; off[i] = 0;
+    }
+    for(int i = 0; i < jb.dim; ++i) {
+      J[ja.dim + i][0] = jb.dz[i].re; J[ja.dim + i][1] = jb.dz[i].im; off[ja.dim + i] = 2;
+    }
+    for(int i = 0; i < n; ++i)
+      edge_gradient_[4 * e + i] = hw * (sd.g[off[i]] * J[i][0] + sd.g[off[i] + 1] * J[i][1]);
+    if(!want_hessian)
+      return;
+    Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
+    for(int i = 0; i < n; ++i)
+      for(int j = i; j < n; ++j) {
+        double h = 0;
+        for(int p = 0; p < 2; ++p)
+          for(int q = 0; q < 2; ++q)
+            h += J[i][p] * sd.H[off[i] + p][off[j] + q] * J[j][q];
+        // second derivatives of the position (same vertex only)
+        if(off[i] == off[j]) {
+          const Position_jet& jj = (off[i] == 0) ? ja : jb;
+          const int ii = (off[i] == 0) ? i : i - ja.dim, kk = (off[j] == 0) ? j : j - ja.dim;
+          h += sd.g[off[i]] * jj.ddz[ii][kk].re + sd.g[off[i] + 1] * jj.ddz[ii][kk].im;
+        }
+        M(i, j) = M(j, i) = hw * h;
+      }
+    if(project)
+      project_psd(M, n);
+    double* out = &edge_hessian_[slot_begin_[e]];
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+        out[i * n + j] = M(i, j);
+  }
+
   // local variables of edge e: those of its first end, then those of its second
   int local_variables(std::size_t e, int* gi) const
   {
@@ -491,6 +548,7 @@ private:
   mutable std::vector<double> g_abs_;
   Eigen::SparseMatrix<double> pattern_;
   std::vector<int> slot_begin_, slots_;
+  mutable std::vector<double> edge_energy_, edge_gradient_, edge_hessian_;
 };
 
 // Preconditioner of the Newton systems: the Hessian of E = (1/2) sum w d^2 is, for short
@@ -677,6 +735,7 @@ private:
 inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const Solver_options& opt,
                                   Solver_statistics& st)
 {
+  typedef Complex<double> C;
   typedef Eigen::SparseMatrix<double> SpMat;
   typedef std::chrono::steady_clock Clock;
   auto seconds = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -727,7 +786,7 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   const double g0 = st.initial_gradient > 0 ? st.initial_gradient : 1.0;
   double gnorm = st.initial_gradient;
   double grel = ev.hyperbolic_gradient_norm(x, g, true);
-  int stalls = 0, last_cg = 0, slow_steps = 0;
+  int stalls = 0, last_cg = 0, slow_steps = 0, refactorings = 0;
   double best_grel = grel;
   int since_best = 0;
   Eigen::VectorXd p(nv), r(nv), zv(nv), d(nv), Hd(nv);
@@ -851,6 +910,26 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     for(int ls = 0; ls < 60; ++ls) {
       for(int i = 0; i < nv; ++i)
         xn[i] = x[i] + alpha * p[i];
+      if(phase == Model && opt.geodesic_steps) {
+        // gradient steps: free vertices move along the geodesic of their step, by its
+        // hyperbolic length (the exponential map): a long step near the circle then bends
+        // instead of leaving the disk, and the line search need not shorten every vertex's
+        // step for it. Same first-order step, so the Armijo test is unchanged.
+        for(int v = 0; v < P.n; ++v) {
+          if(P.kind[v] != Free)
+            continue;
+          const int i = P.var[v];
+          const C z(x[i], x[i + 1]), d(alpha * p[i], alpha * p[i + 1]);
+          const double len = abs(d);
+          if(!(len > 0))
+            continue;
+          const double L = 2 * len / (1 - norm(z));
+          const C w = d * (std::tanh(L / 2) / len);
+          const C y = (w + z) / (C(1.0) + conj(z) * w);
+          xn[i] = y.re;
+          xn[i + 1] = y.im;
+        }
+      }
       if(ev.feasible(xn)) {
         En = ev.energy(xn);
         if(En <= E + 1e-4 * alpha * slope) {
@@ -889,9 +968,23 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
       std::cerr << "  step " << it + 1 << (phase == Model ? " (preconditioned gradient)" : phase == Exact ? " (Newton)" : " (projected Newton)")
                 << ": E = " << E << "  |grad|/|grad0| = " << gnorm / g0 << "  force imbalance " << grel << "  step " << alpha
                 << "  cg " << st.cg_iterations << std::endl;
-    // to Newton with the exact Hessian near the solution, or when gradient steps slow down
-    if(phase == Model && grel > 0.8 * grel_prev)
+    // a gradient step the line search had to shorten: the embedding has moved far from where
+    // the preconditioner was factored (seam rotations, long edges): factor it anew, at most
+    // a few times; when gradient steps keep being slow, Newton takes over
+    if(phase == Model && alpha < 0.3 && refactorings < opt.max_model_refactorizations) {
+      auto t4 = Clock::now();
+      if(pre.factor(x)) {
+        ++st.preconditioner_factorizations;
+        ++refactorings;
+      } else {
+        use_direct = true;
+        phase = Projected;
+      }
+      st.time_factor += seconds(t4);
+    }
+    if(phase == Model && (alpha < 1.0 || grel > 0.8 * grel_prev))
       ++slow_steps;
+    // to Newton with the exact Hessian near the solution
     if(phase != Exact && grel > opt.gradient_tolerance &&
        ((gnorm / g0 < opt.newton_threshold && alpha == 1.0) || (phase == Model && slow_steps >= 3))) {
       phase = Exact;
