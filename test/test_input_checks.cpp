@@ -14,6 +14,8 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
 
@@ -24,6 +26,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -419,13 +422,16 @@ TEST_CASE(inconsistent_orientation)
   SM sm;
   const std::string flipped = std::string("OFF\n4 4 0\n") + tetra_vertices + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 3 2\n";
   CHECK_RESULT(read_text("flipped.off", flipped, sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
-  // a duplicated face
+  // a duplicated face (see also the test case duplicated_faces)
   const std::string dup = "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n";
   CHECK_RESULT(read_text("dup_face.off", dup, sm), HOT::ERROR_NON_MANIFOLD,
-               "inconsistent face orientation: face 0 (line 6) and face 1 (line 7) both traverse the edge");
-  // a duplicated face on a closed mesh: three faces on its edges
+               "duplicated face: face 1 (line 7) repeats face 0 (line 6) (the same vertices in the same order)");
+  // a duplicated face on a closed mesh (it would also put three faces on its edges)
   const std::string dup3 = std::string("OFF\n4 5 0\n") + tetra_vertices + tetra_faces + "3 0 2 1\n";
-  CHECK_RESULT(read_text("dup_face3.off", dup3, sm), HOT::ERROR_NON_MANIFOLD, "face 0 (line 7), face 1 (line 8), face 4 (line 11)");
+  CHECK_RESULT(read_text("dup_face3.off", dup3, sm), HOT::ERROR_NON_MANIFOLD, "face 4 (line 11) repeats face 0 (line 7)");
+  // the same face with the other orientation is not a repetition: three faces on its edges
+  const std::string flip3 = std::string("OFF\n4 5 0\n") + tetra_vertices + tetra_faces + "3 1 2 0\n";
+  CHECK_RESULT(read_text("flip_face3.off", flip3, sm), HOT::ERROR_NON_MANIFOLD, "the edge (0, 1) is shared by 3 faces (face 0 (line 7), face 1 (line 8), face 4 (line 11))");
   // CGAL's own shuffled test meshes are not consistently oriented
   CHECK_RESULT(HI::read_mesh(mesh_path("tet-shuffled.off"), sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
 }
@@ -516,9 +522,11 @@ TEST_CASE(non_finite_coordinates)
     const std::string off = std::string("OFF\n4 4 0\n0 0 0\n1 ") + bad + " 0\n0 1 0\n0 0 1\n" + tetra_faces;
     CHECK_RESULT(read_text("nan.off", off, sm), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 1 (line 4)");
   }
-  // huge but finite coordinates are fine, and the exact predicates still work
+  // huge but finite coordinates: the exact predicates still work (big_flat below), but the
+  // squared edge lengths overflow (see the test case coordinate_range)
   const std::string big = "OFF\n4 4 0\n0 0 0\n1e308 0 0\n0 1e308 0\n0 0 1e308\n" + std::string(tetra_faces);
-  CHECK_RESULT(read_and_check(write_file("big.off", big), sm, HOT::Sphere_type), HOT::OK, "");
+  CHECK_RESULT(read_and_check(write_file("big.off", big), sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES,
+               "face 0 is out of the range of double-precision geometry: its squared edge lengths overflow");
   const std::string big_flat = "OFF\n4 4 0\n0 0 0\n1e308 0 0\n-1e308 0 0\n0 0 1e308\n" + std::string(tetra_faces);
   CHECK_RESULT(read_and_check(write_file("big_flat.off", big_flat), sm, HOT::Sphere_type), HOT::ERROR_DEGENERATE_FACE,
                "face 0 has zero area");
@@ -749,8 +757,12 @@ TEST_CASE(obj_reader)
   CHECK(num_vertices(sm) == 4 && vertex_point(sm, 3) == Point(0, 0, 1));
   const std::string v4 = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
   CHECK_RESULT(read_text("zero.obj", v4 + "f 0 1 2\n", sm), HOT::ERROR_READ_FAILED, "line 5: face 0: vertex index 0 is invalid");
+  // the index as written in the file (1-based)
   CHECK_RESULT(read_text("range.obj", v4 + "f 1 3 2\nf 1 2 5\n", sm), HOT::ERROR_READ_FAILED,
-               "face 1 (line 6): vertex index 4 is out of range (the file has 4 vertices)");
+               "line 6: face 1: vertex index 5 is out of range (the file has 4 vertices)");
+  CHECK_RESULT(read_text("forward.obj", "f 1 2 3\n" + v4, sm), HOT::OK, ""); // forward references
+  CHECK_RESULT(read_text("forward_range.obj", "f 1 2 7\n" + v4, sm), HOT::ERROR_READ_FAILED,
+               "line 1: face 0: vertex index 7 is out of range (the file has 4 vertices)");
   CHECK_RESULT(read_text("rel.obj", v4 + "f -1 -2 -5\n", sm), HOT::ERROR_READ_FAILED, "refers to a vertex before the first");
   CHECK_RESULT(read_text("unknown.obj", v4 + "frobnicate 1 2\n", sm), HOT::ERROR_READ_FAILED, "line 5: unknown OBJ statement 'frobnicate'");
   CHECK_RESULT(read_text("badref.obj", v4 + "f 1 2 3x\n", sm), HOT::ERROR_READ_FAILED, "'3x' is not a vertex reference");
@@ -790,8 +802,9 @@ TEST_CASE(ply_reader)
   CHECK(vertex_point(sm, 3) == Point(0, 0, 1));
   const auto t0 = std::chrono::steady_clock::now();
   CHECK_RESULT(read_text("biglist.ply", binary_ply(true, 0x7fffffffu, false), sm), HOT::ERROR_READ_FAILED,
-               "face 0: the list size 2147483647 is negative or larger than the rest of the file");
-  CHECK_RESULT(read_text("neglist.ply", binary_ply(true, 0xffffffffu, false), sm), HOT::ERROR_READ_FAILED, "list size -1");
+               "face 0: the list size 2147483647 is larger than the rest of the file holds (only 60 bytes left: truncated file?)");
+  CHECK_RESULT(read_text("neglist.ply", binary_ply(true, 0xffffffffu, false), sm), HOT::ERROR_READ_FAILED,
+               "face 0: negative list size -1");
   CHECK_RESULT(read_text("nan.ply", binary_ply(true, 3, true), sm), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2");
   std::string trunc = binary_ply(true, 3, false);
   trunc.resize(trunc.size() - 5);
@@ -846,7 +859,7 @@ TEST_CASE(stl_reader)
 
 TEST_CASE(gocad_reader)
 {
-  // .ts files go through CGAL::IO::read_GOCAD(), then our validation
+  // .ts files: our GOCAD TSurf parser, then our validation
   const std::string ts = "GOCAD TSurf 1\nHEADER {\nname:tetra\n}\nTFACE\nVRTX 0 0 0 0\nVRTX 1 1 0 0\nVRTX 2 0 1 0\n"
                          "VRTX 3 0 0 1\nTRGL 0 2 1\nTRGL 0 1 3\nTRGL 0 3 2\nTRGL 1 2 3\nEND\n";
   SM sm;
@@ -854,8 +867,9 @@ TEST_CASE(gocad_reader)
   CHECK(num_vertices(sm) == 4 && vertex_point(sm, 1) == Point(1, 0, 0));
   std::string bad = ts;
   bad.replace(bad.find("TRGL 1 2 3"), 10, "TRGL 1 2 9");
-  CHECK_RESULT(read_text("range.ts", bad, sm), HOT::ERROR_READ_FAILED, "range.ts: face 3: vertex index 9 is out of range");
-  CHECK_RESULT(read_text("garbage.ts", garbage(500, 3), sm), HOT::ERROR_READ_FAILED, "read_GOCAD() cannot read");
+  CHECK_RESULT(read_text("range.ts", bad, sm), HOT::ERROR_READ_FAILED,
+               "range.ts: line 13: triangle 3: vertex id 9 is not defined (no VRTX, PVRTX or ATOM with that id)");
+  CHECK_RESULT(read_text("garbage.ts", garbage(500, 3), sm), HOT::ERROR_READ_FAILED, "no TFACE line: not a GOCAD TSurf file");
 }
 
 // ===========================================================================
@@ -1147,6 +1161,282 @@ TEST_CASE(performance)
   const double hub = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "  fan of " << k << " triangles around one vertex: " << hub << " s" << std::endl;
   CHECK_MSG(hub < 2.0, "fan too slow: " << hub << " s");
+}
+
+// ===========================================================================
+// regressions of the hostile-input corpus (test/test_hostile_inputs.sh) and of the
+// fuzz target (fuzz/fuzz_mesh_reader.cpp)
+// ===========================================================================
+
+// GOCAD TSurf: our parser (CGAL::IO::read_GOCAD() computed indices as int offsets from
+// the file's ids: signed overflow, i.e. undefined behaviour, on the id -2147483648)
+TEST_CASE(gocad_parser)
+{
+  SM sm;
+  const std::string head = "GOCAD TSurf 1\nHEADER {\nname:t\n}\nTFACE\n";
+  // the ids that overflowed in CGAL's reader
+  CHECK_RESULT(read_text("int_min.ts", head + "VRTX -2147483648 0 0 0\nVRTX -2147483647 1 0 0\nVRTX -2147483646 0 1 0\n"
+                                              "TRGL -2147483648 -2147483647 -2147483646\nEND\n", sm), HOT::OK, "");
+  CHECK(num_vertices(sm) == 3 && num_faces(sm) == 1 && vertex_point(sm, 1) == Point(1, 0, 0));
+  // ids are ids: not consecutive, triangles before vertices, PVRTX with properties, ATOM
+  const std::string ids = head + "TRGL 10 30 20\nVRTX 10 0 0 0\nPVRTX 20 1 0 0 7.5 8\nVRTX 30 0 1 0\nVRTX 40 0 0 1\n"
+                                 "ATOM 41 40\nTRGL 10 20 41\nTRGL 10 40 30\nTFACE\nTRGL 20 30 40\nBSTONE 10\nEND\nanything\n";
+  HI::Mesh_info info;
+  CHECK_RESULT(read_and_check(write_file("ids.ts", ids), sm, HOT::Sphere_type, &info), HOT::OK, "");
+  CHECK(num_vertices(sm) == 4 && vertex_point(sm, 3) == Point(0, 0, 1));
+  std::vector<Point> pts;
+  std::vector<std::vector<std::size_t> > fcs;
+  mesh_to_soup(sm, pts, fcs);
+  CHECK((fcs == std::vector<std::vector<std::size_t> >{ { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } }));
+  // errors, each with its reason and line
+  CHECK_RESULT(read_text("noend.ts", head + "VRTX 1 0 0 0\n", sm), HOT::ERROR_READ_FAILED, "the file ends without END (truncated file?)");
+  CHECK_RESULT(read_text("twice.ts", head + "VRTX 1 0 0 0\nVRTX 1 1 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED,
+               "line 7: vertex id 1 is defined twice");
+  CHECK_RESULT(read_text("undef.ts", head + "VRTX 1 0 0 0\nTRGL 1 2 3\nEND\n", sm), HOT::ERROR_READ_FAILED,
+               "line 7: triangle 0: vertex id 2 is not defined");
+  CHECK_RESULT(read_text("atom.ts", head + "ATOM 2 1\nEND\n", sm), HOT::ERROR_READ_FAILED,
+               "line 6: ATOM 2 refers to vertex id 1, which is not defined before it");
+  CHECK_RESULT(read_text("bigid.ts", head + "VRTX 99999999999999999999 0 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED,
+               "line 6: vertex id '99999999999999999999' is too large");
+  CHECK_RESULT(read_text("badid.ts", head + "VRTX one 0 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED, "line 6: 'one' is not a vertex id");
+  CHECK_RESULT(read_text("short.ts", head + "VRTX 1 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED,
+               "line 6: vertex 0: 'VRTX id x y z' expected, 3 fields found");
+  CHECK_RESULT(read_text("coord.ts", head + "VRTX 1 0 zero 0\nEND\n", sm), HOT::ERROR_READ_FAILED, "coordinate 'zero' is not a number");
+  CHECK_RESULT(read_text("trgl.ts", head + "TRGL 1 2\nEND\n", sm), HOT::ERROR_READ_FAILED, "line 6: triangle 0: 'TRGL a b c' expected");
+  CHECK_RESULT(read_text("kw.ts", head + "FROB 1\nEND\n", sm), HOT::ERROR_READ_FAILED, "line 6: unknown GOCAD TSurf keyword 'FROB'");
+  CHECK_RESULT(read_text("nan.ts", head + "VRTX 1 0 0 0\nVRTX 2 nan 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n", sm),
+               HOT::ERROR_NON_FINITE_COORDINATES, "vertex 1 (line 7) has a non-finite coordinate");
+  CHECK_RESULT(read_text("notface.ts", "GOCAD PLine 1\nVRTX 1 0 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED, "no TFACE line");
+  // every prefix of a valid file that stops before END is an error
+  const std::string full = head + "VRTX 0 0 0 0\nVRTX 1 1 0 0\nVRTX 2 0 1 0\nVRTX 3 0 0 1\n"
+                                  "TRGL 0 2 1\nTRGL 0 1 3\nTRGL 0 3 2\nTRGL 1 2 3\nEND\n";
+  CHECK_RESULT(read_and_check(write_file("full.ts", full), sm, HOT::Sphere_type), HOT::OK, "");
+  int not_failed = 0;
+  for(std::size_t n = 0; n < full.rfind("END"); ++n)
+    if(read_text("prefix.ts", full.substr(0, n), sm).code != HOT::ERROR_READ_FAILED)
+      ++not_failed;
+  CHECK_MSG(not_failed == 0, not_failed << " prefixes of a valid GOCAD file were not READ_FAILED");
+}
+
+// a face repeated with the same cyclic order: its own reason (it used to be reported as a
+// non-manifold edge or an inconsistent orientation)
+TEST_CASE(duplicated_faces)
+{
+  SM sm;
+  const std::string v = "OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n";
+  CHECK_RESULT(read_text("rot.off", v + "3 0 1 4\n3 1 2 4\n3 4 0 1\n3 2 3 4\n", sm), HOT::ERROR_NON_MANIFOLD,
+               "duplicated face: face 2 (line 10) repeats face 0 (line 8) (the same vertices in the same order)");
+  CHECK(num_vertices(sm) == 0);
+  CHECK_RESULT(read_text("quad.off", v + "4 0 1 2 3\n3 0 1 4\n4 2 3 0 1\n3 2 3 4\n", sm), HOT::ERROR_NON_MANIFOLD,
+               "face 2 (line 10) repeats face 0 (line 8)");
+  // the same vertices in another order are not a repetition
+  std::string other = v + "4 0 1 2 3\n4 0 2 1 3\n";
+  other.replace(other.find("5 4 0"), 5, "5 2 0");
+  CHECK_RESULT(read_text("other.off", other, sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
+  CHECK_RESULT(read_text("fan.off", v + "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n", sm), HOT::OK, "");
+  // binary STL: a triangle written twice
+  std::string stl = binary_stl_tetra(5);
+  stl += stl.substr(84, 50);
+  CHECK_RESULT(read_text("twice.stl", stl, sm), HOT::ERROR_NON_MANIFOLD, "duplicated face: face 4 repeats face 0");
+  // many faces (hash chains): a closed mesh has no false positive
+  CHECK_RESULT(read_and_check(write_file("torus_dup.off", torus_off(40)), sm, std::nullopt), HOT::ERROR_WRONG_TOPOLOGY, "genus 1");
+}
+
+// ASCII PLY: the line of a vertex or a face is the line where the record starts (it was
+// the line of the previous record)
+TEST_CASE(ply_record_lines)
+{
+  SM sm;
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                           "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  // line 10: vertex 0, ..., line 14: face 0
+  CHECK_RESULT(read_text("range.ply", head + tetra_vertices + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 9\n", sm),
+               HOT::ERROR_READ_FAILED, "face 3 (line 17): vertex index 9 is out of range (the file has 4 vertices)");
+  CHECK_RESULT(read_text("nan.ply", head + "0 0 0\n1 0 0\n\n\n0 nan 0\n0 0 1\n" + tetra_faces, sm),
+               HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2 (line 14) has a non-finite coordinate");
+  CHECK_RESULT(read_text("rep.ply", head + tetra_vertices + "3 0 2 1\n3 0 1 3\n\n3 0 3 3\n3 1 2 3\n", sm),
+               HOT::ERROR_DEGENERATE_FACE, "face 2 (line 17) is degenerate: it uses vertex 3 more than once");
+}
+
+// coordinates so large or so small that squared lengths or areas overflow or underflow in
+// double precision: their own reason (the embedding used to fail with "the landmark tour
+// could not be computed" or "a sparse linear system could not be solved")
+TEST_CASE(coordinate_range)
+{
+  auto scaled_octa = [](double s, int far_vertex = -1, double far = 0) {
+    std::ostringstream os;
+    os.precision(17);
+    os << "OFF\n6 8 0\n";
+    const double c[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+    for(int i = 0; i < 6; ++i) {
+      const double f = (i == far_vertex) ? far : s;
+      os << c[i][0] * f << " " << c[i][1] * f << " " << c[i][2] * f << "\n";
+    }
+    for(const std::string& f : octa_faces)
+      os << f << "\n";
+    return os.str();
+  };
+  SM sm;
+  CHECK_RESULT(read_and_check(write_file("s1e308.off", scaled_octa(1e308)), sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES,
+               "face 0 is out of the range of double-precision geometry: its squared edge lengths overflow (coordinates too large");
+  CHECK_RESULT(read_and_check(write_file("s1e100.off", scaled_octa(1e100)), sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES,
+               "its longest edge has length 1.41e+100, so its squared area overflows (coordinates too large: rescale the mesh)");
+  CHECK_RESULT(read_and_check(write_file("s1e-100.off", scaled_octa(1e-100)), sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES,
+               "its longest edge has length 1.41e-100, so its squared area underflows (coordinates too small: rescale the mesh)");
+  CHECK_RESULT(read_and_check(write_file("s1e-310.off", scaled_octa(1e-310)), sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES,
+               "its longest edge has length 1.41e-310, so its squared area underflows");
+  // one far vertex in a normal mesh: the faces around it
+  CHECK_RESULT(read_and_check(write_file("far.off", scaled_octa(1, 5, 1e100)), sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES,
+               "face 4 is out of the range of double-precision geometry: its longest edge has length 1e+100, so its squared area overflows");
+  CHECK_RESULT(read_and_check(write_file("far2.off", scaled_octa(1, 5, 1e200)), sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES,
+               "face 4 is out of the range of double-precision geometry: its squared edge lengths overflow");
+  // within the range: fine
+  for(double s : { 1e76, 1e-76, 1e-30, 1e30 })
+    CHECK_RESULT(read_and_check(write_file("s_ok.off", scaled_octa(s)), sm, HOT::Sphere_type), HOT::OK, "");
+  // a thin face of normal size is not a range problem
+  CHECK_RESULT(read_and_check(write_file("thin2.off", std::string("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n2 1e-300 0\n") + tetra_faces),
+                              sm, HOT::Sphere_type), HOT::OK, "");
+  // Polyhedron_3 and the error message's code
+  Poly poly;
+  CHECK_RESULT(read_and_check(write_file("p1e100.off", scaled_octa(1e100)), poly, HOT::Sphere_type),
+               HOT::ERROR_NON_FINITE_COORDINATES, "squared area overflows");
+  CHECK(contains(HOT::error_message(HOT::ERROR_NON_FINITE_COORDINATES), "too large or too small for double precision"));
+}
+
+// a sphere-type mesh cut open by an unwelded duplicate vertex: the topology message names it
+TEST_CASE(coincident_border_vertices)
+{
+  // octahedron; vertex 6 repeats vertex 0 in faces 0 and 4 (adjacent around vertex 0)
+  std::string seam = "OFF\n7 8 0\n" + std::string(octa_vertices) + "1 0 0\n";
+  for(std::size_t i = 0; i < octa_faces.size(); ++i) {
+    std::string f = octa_faces[i];
+    if(i == 0 || i == 4)
+      f = (i == 0) ? "3 6 2 4" : "3 2 6 5";
+    seam += f + "\n";
+  }
+  SM sm;
+  CHECK_RESULT(read_and_check(write_file("seam.off", seam), sm, HOT::Sphere_type), HOT::ERROR_WRONG_TOPOLOGY,
+               "but the mesh has 1 boundary loop (border vertices 0 and 6 have the same coordinates: duplicated vertices that should be one?)");
+  // as a disk it is a valid mesh (a surface cut open, as duplicate_points_allowed)
+  HI::Mesh_info info;
+  CHECK_RESULT(HI::check_mesh(sm, std::nullopt, &info), HOT::OK, "");
+  CHECK(info.type == HOT::Disk_type);
+  // boundary loops without coincident vertices: no such hint
+  const HI::Check_result r = read_and_check(write_file("annulus_h.off", octa_off({ 0, 6 })), sm, std::nullopt);
+  CHECK(r.code == HOT::ERROR_WRONG_TOPOLOGY && !contains(r.message, "same coordinates"));
+  // two disks touching at duplicated border points
+  const std::string two = "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 3 5 4\n";
+  CHECK_RESULT(read_and_check(write_file("two_tris.off", two), sm, std::nullopt), HOT::ERROR_SEVERAL_COMPONENTS, "2 connected components");
+}
+
+// the reading + checking path of the command-line program (and of the fuzz target)
+TEST_CASE(read_and_check_path)
+{
+  SM sm;
+  HI::Mesh_info info;
+  // no face, automatic type: "no face" (it used to be "neither closed nor a disk")
+  const std::string nofaces = write_file("rc_nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  CHECK_RESULT(HI::read_and_check_mesh(nofaces, std::nullopt, sm, &info), HOT::ERROR_EMPTY_MESH,
+               nofaces + ": the mesh has no face (it has 3 vertices but no face)");
+  // two disks: several components, not "neither closed nor a disk"
+  const std::string two = write_file("rc_two.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n");
+  CHECK_RESULT(HI::read_and_check_mesh(two, std::nullopt, sm, &info), HOT::ERROR_SEVERAL_COMPONENTS, "rc_two.off: the mesh has 2");
+  // reading errors keep their own prefix; the type is detected or required
+  CHECK_RESULT(HI::read_and_check_mesh(tmp_dir() + "/rc_none.off", std::nullopt, sm), HOT::ERROR_READ_FAILED, "rc_none.off': no such file");
+  const std::string fan = write_file("rc_fan.off", hexagon_fan_off());
+  CHECK_RESULT(HI::read_and_check_mesh(fan, std::nullopt, sm, &info), HOT::OK, "");
+  CHECK(info.type_known && info.type == HOT::Disk_type);
+  CHECK_RESULT(HI::read_and_check_mesh(fan, HOT::Sphere_type, sm, &info), HOT::ERROR_WRONG_TOPOLOGY, "rc_fan.off: the sphere-type");
+  CHECK_RESULT(HI::read_and_check_mesh(fan, HOT::Disk_type, sm, &info), HOT::OK, "");
+  // landmarks: the file name, then the reason; refused landmarks are not returned
+  std::vector<SM::Vertex_index> lm;
+  const std::string inner = write_file("rc_inner.txt", "1 2 0 4 5\n");
+  CHECK_RESULT(HI::read_and_check_landmarks(inner, sm, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
+               inner + ": landmark 2 (vertex 0) is not on the boundary loop");
+  CHECK(lm.empty());
+  CHECK_RESULT(HI::read_and_check_landmarks(write_file("rc_ok.txt", "6\n2\n3\n4\n5\n"), sm, HOT::Disk_type, lm), HOT::OK, "");
+  CHECK(lm.size() == 5 && lm[0] == SM::Vertex_index(6));
+  // a bad token is reported before the layout (binary garbage used to be an "ambiguous layout")
+  CHECK_RESULT(HI::read_and_check_landmarks(write_file("rc_tok.txt", "1 2 x\n3 4\n"), sm, HOT::Disk_type, lm),
+               HOT::ERROR_READ_FAILED, "line 1: 'x' is not a vertex index");
+  const HI::Check_result g = HI::read_and_check_landmarks(write_file("rc_bin.txt", garbage(500, 3)), sm, HOT::Disk_type, lm);
+  CHECK_MSG(g.code == HOT::ERROR_READ_FAILED && !contains(g.message, "ambiguous") && one_line(g), g.message);
+  CHECK_RESULT(HI::read_and_check_landmarks(write_file("rc_amb.txt", "1 2 3\n4 5\n"), sm, HOT::Disk_type, lm),
+               HOT::ERROR_READ_FAILED, "line 1: ambiguous layout");
+
+  // the one-call embedding of the library gives check_mesh()'s reason too when the type
+  // cannot be detected (it used to say "neither closed nor a disk" for an empty mesh)
+  SM empty;
+  auto uv = empty.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
+  HOT::Embedding_statistics st;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(empty, std::vector<SM::Vertex_index>(), uv,
+                                                 HOT::parameters::embedding_statistics(&st)) == HOT::ERROR_EMPTY_MESH);
+  CHECK_MSG(contains(st.message, "the mesh has no face"), st.message);
+  SM disks;
+  CHECK(HI::read_mesh(two, disks));
+  auto uv2 = disks.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(disks, std::vector<SM::Vertex_index>(), uv2,
+                                                 HOT::parameters::embedding_statistics(&st)) == HOT::ERROR_SEVERAL_COMPONENTS);
+  SM annulus;
+  CHECK(HI::read_mesh(write_file("rc_annulus.off", octa_off({ 0, 6 })), annulus));
+  auto uv3 = annulus.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(annulus, std::vector<SM::Vertex_index>(), uv3,
+                                                 HOT::parameters::embedding_statistics(&st)) == HOT::ERROR_WRONG_TOPOLOGY);
+  CHECK_MSG(contains(st.message, "2 boundary loops"), st.message);
+  // and so does the certificate
+  HOT::Embedding_certificate cert;
+  std::string msg;
+  CHECK(HOT::certify_hyperbolic_orbifold_embedding(empty, std::vector<SM::Vertex_index>(), uv, cert, &msg) == HOT::ERROR_EMPTY_MESH);
+  CHECK_MSG(contains(msg, "the mesh has no face"), msg);
+  CHECK(HOT::certify_hyperbolic_orbifold_embedding(disks, std::vector<SM::Vertex_index>(), uv2, cert, &msg)
+        == HOT::ERROR_SEVERAL_COMPONENTS);
+}
+
+// Inputs for the fuzz target, in its layout (byte 0: selector, bytes 1-2: landmark length,
+// mesh file, landmark file), run through the same calls and contract checks: every input
+// that made the target crash, leak, hit undefined behaviour or break the contract.
+namespace {
+
+void run_fuzz_input(const std::string& name, const std::string& input)
+{
+  if(input.size() < 3)
+    return;
+  static const char* const extensions[] = { "off", "obj", "ply", "stl", "ts" };
+  const unsigned s = static_cast<unsigned char>(input[0]);
+  std::optional<HOT::Orbifold_type> type;
+  if((s / 5) % 3 == 1) type = HOT::Sphere_type;
+  if((s / 5) % 3 == 2) type = HOT::Disk_type;
+  const std::size_t rest = input.size() - 3;
+  const std::size_t L = (std::min)(std::size_t(static_cast<unsigned char>(input[1]))
+                                   | (std::size_t(static_cast<unsigned char>(input[2])) << 8), rest);
+  const std::string mesh = write_file(name + "." + extensions[s % 5], input.substr(3, rest - L));
+  const std::string cones = write_file(name + ((s / 15) % 2 ? ".selection.txt" : ".txt"), input.substr(3 + rest - L));
+  SM sm;
+  HI::Mesh_info info;
+  const HI::Check_result r = HI::read_and_check_mesh(mesh, type, sm, &info);
+  CHECK_MSG(r.code >= 0 && r.code < HOT::number_of_error_codes && one_line(r) && (r || !r.message.empty()), name << ": " << r.message);
+  if(!r)
+    return;
+  CHECK_MSG(info.type_known && CGAL::is_valid_polygon_mesh(sm), name);
+  std::vector<SM::Vertex_index> lm;
+  const HI::Check_result rl = HI::read_and_check_landmarks(cones, sm, info.type, lm);
+  CHECK_MSG(one_line(rl) && (rl || (!rl.message.empty() && lm.empty())), name << ": " << rl.message);
+  CHECK_MSG(!rl || std::set<SM::Vertex_index>(lm.begin(), lm.end()).size() == lm.size(), name);
+}
+
+} // namespace
+
+TEST_CASE(fuzz_regressions)
+{
+  // UndefinedBehaviorSanitizer in CGAL::IO::read_GOCAD() (GOCAD.h:123, "signed integer
+  // overflow: 0 - -2147483648 cannot be represented in type 'int'"), through the .ts path of
+  // read_mesh(); fixed by our GOCAD parser
+  const std::string gocad = "GOCAD TSurf 1\nHEADER {\nname:x\n}\nTFACE\nVRTX -2147483648 0 0 0\nVRTX -2147483647 1 0 0\n"
+                            "VRTX -2147483646 0 1 0\nTRGL -2147483648 -2147483647 -2147483646\nEND\n";
+  run_fuzz_input("fuzz_gocad_int_min", std::string("\x04\x09\x00", 3) + gocad + "0 1 2 3 4");
+  SM sm;
+  CHECK_RESULT(HI::read_mesh(tmp_dir() + "/fuzz_gocad_int_min.ts", sm), HOT::OK, "");
+  CHECK(num_vertices(sm) == 3 && num_faces(sm) == 1);
 }
 
 HOT_TEST_MAIN

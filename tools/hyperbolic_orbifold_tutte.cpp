@@ -33,6 +33,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -298,30 +299,26 @@ int run_embed(int argc, char** argv)
   if(!order_name.empty() && order_name != "given" && order_name != "tsp")
     throw Usage_error{"--order must be given or tsp, got '" + order_name + "'"};
 
+  std::optional<HOT::Orbifold_type> required_type;
+  if(opt.has("orbifold"))
+    required_type = parse_orbifold(opt.get("orbifold"));
+
+  // reading and checking: the same calls as the fuzz target (fuzz/fuzz_mesh_reader.cpp)
   Surface_mesh m;
-  HOT::internal::Check_result r = HOT::internal::read_mesh(mesh_path, m);
+  HOT::internal::Mesh_info info;
+  HOT::internal::Check_result r = HOT::internal::read_and_check_mesh(mesh_path, required_type, m, &info);
+  if(!r)
+    throw Failure{r.code, r.message};
+  const HOT::Orbifold_type type = info.type;
+  if(order_name.empty())
+    order_name = (type == HOT::Sphere_type) ? "tsp" : "given";
+  std::vector<SM_vertex> landmarks;
+  r = HOT::internal::read_and_check_landmarks(cones_path, m, type, landmarks);
   if(!r)
     throw Failure{r.code, r.message};
   std::vector<std::size_t> cone_indices;
-  r = HOT::internal::read_landmarks(cones_path, cone_indices);
-  if(!r)
-    throw Failure{r.code, r.message};
-
-  HOT::Orbifold_type type = HOT::Sphere_type;
-  if(opt.has("orbifold")) {
-    type = parse_orbifold(opt.get("orbifold"));
-  } else if(!HOT::internal::detect_orbifold_type(m, type)) {
-    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk; give --orbifold"};
-  }
-  if(order_name.empty())
-    order_name = (type == HOT::Sphere_type) ? "tsp" : "given";
-  r = HOT::internal::check_mesh(m, type);
-  if(!r)
-    throw Failure{r.code, r.message};
-  std::vector<SM_vertex> landmarks;
-  r = HOT::internal::check_landmarks(m, cone_indices, type, landmarks);
-  if(!r)
-    throw Failure{r.code, r.message};
+  for(SM_vertex v : landmarks)
+    cone_indices.push_back(v.idx()); // read_mesh() keeps the file's vertex order: idx() is the file's index
 
   Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> uv =
     m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
@@ -405,17 +402,12 @@ struct Embedded
 
 void read_and_check(const std::string& mesh_path, const std::string& cones_path, Embedded& e)
 {
-  HOT::internal::Check_result r = HOT::internal::read_mesh(mesh_path, e.mesh);
+  HOT::internal::Mesh_info info;
+  HOT::internal::Check_result r = HOT::internal::read_and_check_mesh(mesh_path, std::nullopt, e.mesh, &info);
   if(!r) throw Failure{r.code, r.message};
-  std::vector<std::size_t> ids;
-  r = HOT::internal::read_landmarks(cones_path, ids);
+  e.type = info.type;
+  r = HOT::internal::read_and_check_landmarks(cones_path, e.mesh, e.type, e.landmarks);
   if(!r) throw Failure{r.code, r.message};
-  if(!HOT::internal::detect_orbifold_type(e.mesh, e.type))
-    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, mesh_path + ": the mesh is neither closed nor a disk"};
-  r = HOT::internal::check_mesh(e.mesh, e.type);
-  if(!r) throw Failure{r.code, mesh_path + ": " + r.message};
-  r = HOT::internal::check_landmarks(e.mesh, ids, e.type, e.landmarks);
-  if(!r) throw Failure{r.code, cones_path + ": " + r.message};
 }
 
 void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::string& name)
@@ -541,9 +533,11 @@ int run_collection(int argc, char** argv)
   const Options opt(argc, argv, 2, {"manifest", "out"}, {"all-pairs"});
   const std::string manifest = opt.get("manifest"), dir = opt.get("out");
   const bool all_pairs = opt.has("all-pairs");
-  std::ifstream in(manifest);
-  if(!in)
-    throw Failure{HOT::ERROR_READ_FAILED, "'" + manifest + "': cannot read"};
+  std::string manifest_text; // a missing file, a directory etc. get their own reason
+  const HOT::internal::Check_result mr = HOT::internal::io_impl::read_file_contents(manifest, manifest_text);
+  if(!mr)
+    throw Failure{mr.code, mr.message};
+  std::istringstream in(manifest_text);
   const std::string base = manifest.find('/') == std::string::npos ? std::string(".") : manifest.substr(0, manifest.find_last_of('/'));
   auto resolve = [&](const std::string& f) { return (!f.empty() && f[0] == '/') ? f : base + "/" + f; };
   std::vector<std::pair<std::string, std::string> > entries;
@@ -554,14 +548,18 @@ int run_collection(int argc, char** argv)
     const std::size_t hash = line.find('#');
     if(hash != std::string::npos) line = line.substr(0, hash);
     std::istringstream ls(line);
-    std::string a, b, extra;
-    if(!(ls >> a)) continue;
-    if(!(ls >> b) || (ls >> extra))
-      throw Failure{HOT::ERROR_READ_FAILED, manifest + ": line " + std::to_string(line_no) + ": expected 'mesh_path cones_path'"};
-    entries.push_back(std::make_pair(resolve(a), resolve(b)));
+    std::vector<std::string> fields;
+    for(std::string f; ls >> f;)
+      fields.push_back(f);
+    if(fields.empty()) continue;
+    if(fields.size() != 2)
+      throw Failure{HOT::ERROR_READ_FAILED, manifest + ": line " + std::to_string(line_no) + ": expected 'mesh_path cones_path', found " +
+                                            std::to_string(fields.size()) + (fields.size() == 1 ? " field" : " fields")};
+    entries.push_back(std::make_pair(resolve(fields[0]), resolve(fields[1])));
   }
   if(entries.size() < 2)
-    throw Failure{HOT::ERROR_WRONG_PARAMETER, manifest + ": a collection needs at least 2 meshes"};
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, manifest + ": the manifest lists " + std::to_string(entries.size()) +
+                                              " mesh" + (entries.size() == 1 ? "" : "es") + ", a collection needs at least 2"};
   const std::size_t N = entries.size();
   std::vector<Embedded> E(N);
   for(std::size_t i = 0; i < N; ++i) {
@@ -723,10 +721,7 @@ int run_landmarks(int argc, char** argv)
   const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
   const long k = opt.get_int("count", 1, 100000);
   Surface_mesh m;
-  HOT::internal::Check_result r = HOT::internal::read_mesh(mesh_path, m);
-  if(!r)
-    throw Failure{r.code, r.message};
-  r = HOT::internal::check_mesh(m);
+  const HOT::internal::Check_result r = HOT::internal::read_and_check_mesh(mesh_path, std::nullopt, m);
   if(!r)
     throw Failure{r.code, r.message};
   if(static_cast<std::size_t>(k) > num_vertices(m))

@@ -84,8 +84,11 @@ Error_code certify_hyperbolic_orbifold_embedding(
   };
 
   Orbifold_type type = Sphere_type;
-  if(!internal::orbifold_type_parameter(tm, np, type))
-    return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk");
+  if(!internal::orbifold_type_parameter(tm, np, type)) {
+    // no face, or several boundary loops: check_mesh() says which check fails first
+    const internal::Check_result r = internal::check_mesh(tm, std::nullopt);
+    return fail(r ? ERROR_WRONG_TOPOLOGY : r.code, r ? "the mesh is neither closed nor a disk" : r.message);
+  }
   internal::Check_result r = internal::check_mesh(tm, type);
   if(!r)
     return fail(r.code, r.message);

@@ -35,7 +35,7 @@ enum Error_code
   ERROR_LANDMARK_OUT_OF_RANGE,   ///< a landmark index is not a vertex of the mesh
   ERROR_LANDMARK_NOT_ON_BORDER,  ///< a disk-type landmark is not on the boundary loop
   ERROR_DEGENERATE_FACE,         ///< a face has zero area or repeated vertices
-  ERROR_NON_FINITE_COORDINATES,  ///< a coordinate is NaN or infinite
+  ERROR_NON_FINITE_COORDINATES,  ///< a coordinate is NaN or infinite, or a face's lengths or area overflow or underflow in double precision
   ERROR_CUT_FAILED,              ///< the mesh could not be cut open through the landmarks
   ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, ///< a sparse linear solve failed
   ERROR_NOT_CONVERGED,           ///< the nonlinear solver did not reach its tolerance
@@ -71,7 +71,7 @@ inline const char* error_message(Error_code code)
     "A landmark index is not a vertex of the mesh",
     "A disk-type landmark is not on the boundary loop",
     "The mesh has a degenerate face",
-    "The mesh has a NaN or infinite coordinate",
+    "The mesh has a NaN or infinite coordinate, or coordinates too large or too small for double precision",
     "The mesh could not be cut open through the landmarks",
     "A sparse linear system could not be solved",
     "The nonlinear solver did not converge",

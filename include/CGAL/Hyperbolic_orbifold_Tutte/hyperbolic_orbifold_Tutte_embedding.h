@@ -137,8 +137,13 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
 
   // 1. the mesh and the orbifold type
   Orbifold_type type = Sphere_type;
-  if(!internal::orbifold_type_parameter(tm, np, type))
-    return fail(ERROR_WRONG_TOPOLOGY, "the mesh is neither closed nor a disk (it has more than one boundary loop)");
+  if(!internal::orbifold_type_parameter(tm, np, type)) {
+    // no face, or several boundary loops: check_mesh() says which check fails first
+    // (empty, non-manifold, several components, ..., or the boundary loops)
+    const internal::Check_result r = internal::check_mesh(tm, vpm, std::nullopt);
+    return fail(r ? ERROR_WRONG_TOPOLOGY : r.code,
+                r ? "the mesh is neither closed nor a disk (it has more than one boundary loop)" : r.message);
+  }
   {
     const internal::Check_result r = internal::check_mesh(tm, vpm, type);
     if(!r)

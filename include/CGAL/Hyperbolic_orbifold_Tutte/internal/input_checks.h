@@ -36,11 +36,22 @@
 //   6. ERROR_DEGENERATE_FACE       a face has two vertices at the same position or
 //                                  three collinear vertices (exact `collinear` test of
 //                                  the point type's kernel: exact with Epick)
+//      ERROR_NON_FINITE_COORDINATES a face is out of the range of double-precision
+//                                  geometry: its squared edge lengths or squared area
+//                                  (the 4th power of its size, as the edge weights
+//                                  compute it) overflow, or its size is so small that
+//                                  the squared area of a well-shaped face of that size
+//                                  underflows (edges longer than about 1e77 or all
+//                                  shorter than about 1e-77: rescale the mesh); the
+//                                  solver would otherwise fail with a misleading reason
 //   7. ERROR_SEVERAL_COMPONENTS    the faces form more than one connected component
 //   8. ERROR_WRONG_TOPOLOGY        sphere type: not closed, or V-E+F != 2 (genus > 0);
 //                                  disk type: not exactly one boundary loop, or
 //                                  V-E+F != 1; automatic type: neither closed nor one
-//                                  boundary loop, or wrong genus for the detected type.
+//                                  boundary loop, or wrong genus for the detected type;
+//                                  when there are boundary loops too many, the message
+//                                  names two border vertices with equal coordinates if
+//                                  there are some (unwelded duplicates, e.g. from STL).
 //
 // Distinct vertices with equal coordinates are accepted as long as the mesh is a valid
 // manifold and no face gets degenerate (e.g. a surface cut open along a seam).
@@ -57,11 +68,13 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -374,6 +387,93 @@ bool is_finite_number(const FT& x)
   return std::isfinite(CGAL::to_double(x));
 }
 
+// The face's size is in the range of double-precision geometry: its squared edge lengths
+// and the squared norm of its cross product (computed in double, as the edge weights
+// are) are finite, and the squared area of a well-shaped face of its size (the squared
+// longest edge, squared) does not underflow. On failure, `why` says which.
+template <class Point>
+bool face_in_double_range(const Point& p0, const Point& p1, const Point& p2, std::string& why)
+{
+  const Point* p[3] = { &p0, &p1, &p2 };
+  double d[3][3]; // d[i]: p[i+1] - p[i]
+  double longest2 = 0;
+  for(int i = 0; i < 3; ++i) {
+    const Point& a = *p[i];
+    const Point& b = *p[(i + 1) % 3];
+    d[i][0] = CGAL::to_double(b.x()) - CGAL::to_double(a.x());
+    d[i][1] = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
+    d[i][2] = CGAL::to_double(b.z()) - CGAL::to_double(a.z());
+    const double e2 = d[i][0] * d[i][0] + d[i][1] * d[i][1] + d[i][2] * d[i][2];
+    if(!std::isfinite(e2)) {
+      why = "its squared edge lengths overflow (coordinates too large: rescale the mesh)";
+      return false;
+    }
+    longest2 = (std::max)(longest2, e2);
+  }
+  const double cx = d[0][1] * d[2][2] - d[0][2] * d[2][1];
+  const double cy = d[0][2] * d[2][0] - d[0][0] * d[2][2];
+  const double cz = d[0][0] * d[2][1] - d[0][1] * d[2][0];
+  const double c2 = cx * cx + cy * cy + cz * cz;
+  const bool too_large = !std::isfinite(c2) || !std::isfinite(longest2 * longest2);
+  const bool too_small = longest2 * longest2 < (std::numeric_limits<double>::min)();
+  if(!too_large && !too_small)
+    return true;
+  // for the message: the longest edge's length, computed without overflow or underflow
+  double longest = 0;
+  for(int i = 0; i < 3; ++i) {
+    const double m = (std::max)((std::max)(std::abs(d[i][0]), std::abs(d[i][1])), std::abs(d[i][2]));
+    if(m > 0)
+      longest = (std::max)(longest, m * std::sqrt((d[i][0] / m) * (d[i][0] / m) + (d[i][1] / m) * (d[i][1] / m)
+                                                  + (d[i][2] / m) * (d[i][2] / m)));
+  }
+  std::ostringstream os;
+  os.precision(3);
+  if(too_large) {
+    os << "its longest edge has length " << longest
+       << ", so its squared area overflows (coordinates too large: rescale the mesh)";
+    why = os.str();
+    return false;
+  }
+  os << "its longest edge has length " << longest
+     << ", so its squared area underflows (coordinates too small: rescale the mesh)";
+  why = os.str();
+  return false;
+}
+
+// Two border vertices with the same coordinates (the first pair found), if any.
+template <class TriangleMesh, class VertexPointMap, class VertexIndex>
+bool coincident_border_vertices(const TriangleMesh& tm, VertexPointMap vpm, const VertexIndex& vindex,
+                                std::size_t& a, std::size_t& b)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  struct Key_hash
+  {
+    std::size_t operator()(const std::array<double, 3>& k) const
+    {
+      std::size_t h = 0;
+      for(double x : k)
+        h = h * 1000003u ^ std::hash<double>()(x);
+      return h;
+    }
+  };
+  std::unordered_map<std::array<double, 3>, std::size_t, Key_hash> first;
+  for(halfedge_descriptor h : halfedges(tm)) {
+    if(!is_border(h, tm))
+      continue;
+    const auto& p = get(vpm, target(h, tm));
+    const std::array<double, 3> key = { { CGAL::to_double(p.x()) + 0.0, CGAL::to_double(p.y()) + 0.0,
+                                          CGAL::to_double(p.z()) + 0.0 } }; // -0 -> +0
+    const std::size_t vi = vindex(target(h, tm));
+    auto ins = first.emplace(key, vi);
+    if(!ins.second && ins.first->second != vi) {
+      a = (std::min)(ins.first->second, vi);
+      b = (std::max)(ins.first->second, vi);
+      return true;
+    }
+  }
+  return false;
+}
+
 } // namespace check_mesh_impl
 
 /*!
@@ -509,6 +609,20 @@ Check_result check_mesh(const TriangleMesh& tm,
     }
   }
 
+  // 6b. faces out of the range of double-precision geometry (too large or too small)
+  {
+    std::string why;
+    for(face_descriptor f : faces(tm)) {
+      const halfedge_descriptor h = halfedge(f, tm);
+      if(check_mesh_impl::face_in_double_range(get(vpm, source(h, tm)), get(vpm, target(h, tm)),
+                                               get(vpm, target(next(h, tm), tm)), why))
+        continue;
+      std::ostringstream os;
+      os << "face " << findex(f) << " is out of the range of double-precision geometry: " << why;
+      return make_check_result(ERROR_NON_FINITE_COORDINATES, os.str());
+    }
+  }
+
   // 7. connected components (faces connected through edges; a vertex-only contact
   //    would be a non-manifold vertex, rejected above): union-find over the edges
   {
@@ -576,6 +690,10 @@ Check_result check_mesh(const TriangleMesh& tm,
     std::ostringstream os;
     os << "the mesh has " << b << " boundary loops: sphere-type orbifolds need a closed mesh"
        << " and disk-type orbifolds a mesh with one boundary loop";
+    std::size_t da = 0, db = 0;
+    if(check_mesh_impl::coincident_border_vertices(tm, vpm, vindex, da, db))
+      os << " (border vertices " << da << " and " << db << " have the same coordinates:"
+         << " duplicated vertices that should be one?)";
     return make_check_result(ERROR_WRONG_TOPOLOGY, os.str());
   }
   mi.type = type;
@@ -598,8 +716,13 @@ Check_result check_mesh(const TriangleMesh& tm,
       os << "the disk-type orbifold needs a topological disk, but the mesh has genus " << mi.genus
          << " (V-E+F = " << mi.euler_characteristic << ")";
   }
-  if(!os.str().empty())
+  if(!os.str().empty()) {
+    std::size_t da = 0, db = 0;
+    if(b > (type == Sphere_type ? 0u : 1u) && check_mesh_impl::coincident_border_vertices(tm, vpm, vindex, da, db))
+      os << " (border vertices " << da << " and " << db << " have the same coordinates:"
+         << " duplicated vertices that should be one?)";
     return make_check_result(ERROR_WRONG_TOPOLOGY, os.str());
+  }
 
   mi.type_known = true;
   return Check_result();

@@ -32,7 +32,11 @@
 //   saying why, and the PMP variant silently repairs them (merges points, removes faces,
 //   reorients and duplicates vertices), which changes the vertex and face numbering that
 //   the landmark files refer to.
-//   GOCAD (.ts) files are still read with `CGAL::IO::read_GOCAD()` and then validated.
+//   GOCAD TSurf (.ts) files have their own parser too: `CGAL::IO::read_GOCAD()` (CGAL 5.5)
+//   computes vertex indices as `int` offsets from the file's ids (signed overflow, i.e.
+//   undefined behaviour, on an id such as -2147483648: found by UndefinedBehaviorSanitizer),
+//   ignores the VRTX ids after the first one (non-consecutive ids silently give wrong
+//   triangles), ignores ATOM vertices, and says nothing but "cannot read" on any error.
 // * Why our own soup-to-mesh builder rather than
 //   `CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh()`? The latter is given
 //   a valid soup only (precondition), builds the mesh face by face with `Euler::add_face()`,
@@ -52,6 +56,8 @@
 // Soup validation (`validate_polygon_soup()`), first failure wins:
 //   ERROR_READ_FAILED            a vertex index is out of range
 //   ERROR_DEGENERATE_FACE        a face has fewer than 3 vertices or uses a vertex twice
+//   ERROR_NON_MANIFOLD           a face is repeated (same vertices, same cyclic order;
+//                                reported instead of the edge errors below it causes)
 //   ERROR_NON_MANIFOLD           an edge is shared by more than two faces
 //   ERROR_NON_MANIFOLD           two faces traverse an edge in the same direction
 //                                ("inconsistent face orientation"; also duplicated faces)
@@ -68,8 +74,6 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
-#include <CGAL/IO/GOCAD.h>
-#include <CGAL/Simple_cartesian.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -656,7 +660,7 @@ inline Check_result parse_obj(const std::string& data, Polygon_soup& soup)
                              + quote(id_part) + " refers to a vertex before the first one");
           soup.face_vertices.push_back(static_cast<std::size_t>(soup.points.size() - back));
         } else {
-          // forward references are allowed; the range is checked by validate_polygon_soup()
+          // forward references are allowed; the range is checked at the end
           soup.face_vertices.push_back(static_cast<std::size_t>(id - 1));
         }
       }
@@ -667,6 +671,14 @@ inline Check_result parse_obj(const std::string& data, Polygon_soup& soup)
       return read_fail(at_line(line) + "unknown OBJ statement " + quote(kw));
     }
   }
+  // indices past the last vertex, reported as written in the file (1-based)
+  const std::size_t np = soup.points.size();
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+    for(std::size_t c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c)
+      if(soup.face_vertices[c] >= np)
+        return read_fail(at_line(soup.face_lines[f]) + "face " + std::to_string(f) + ": vertex index "
+                         + std::to_string(soup.face_vertices[c] + 1) + " is out of range (the file has "
+                         + std::to_string(np) + " vertices)");
   return Check_result();
 }
 
@@ -732,6 +744,15 @@ public:
     return format_ == 0 ? cur_.remaining() : static_cast<std::size_t>(end_ - p_);
   }
   std::size_t line() const { return format_ == 0 ? cur_.line() : 0; }
+
+  /// the line where the next value starts (ASCII; 0 for binary files)
+  std::size_t next_value_line()
+  {
+    if(format_ != 0)
+      return 0;
+    cur_.skip_space(false);
+    return cur_.line();
+  }
 
   // returns an empty string on success, else the reason
   std::string read(Ply_type t, double& d, std::int64_t& i)
@@ -895,7 +916,7 @@ inline Check_result parse_ply(const std::string& data, Polygon_soup& soup)
     }
 
     for(std::uint64_t item = 0; item < el.count; ++item) {
-      const std::size_t line = in.line();
+      const std::size_t line = in.next_value_line();
       std::array<double, 3> q = { { 0, 0, 0 } };
       auto where = [&]() {
         std::string s = format == 0 ? at_line(in.line()) : std::string();
@@ -919,9 +940,12 @@ inline Check_result parse_ply(const std::string& data, Polygon_soup& soup)
         if(!err.empty())
           return read_fail(where() + err);
         const std::size_t value_bytes = format == 0 ? 2 : ply_size(prop.value_type);
-        if(i < 0 || std::uint64_t(i) > in.remaining() / value_bytes + 1)
-          return read_fail(where() + "the list size " + std::to_string(i)
-                           + " is negative or larger than the rest of the file");
+        if(i < 0)
+          return read_fail(where() + "negative list size " + std::to_string(i));
+        if(std::uint64_t(i) > in.remaining() / value_bytes + 1)
+          return read_fail(where() + "the list size " + std::to_string(i) + " is larger than the rest of the file holds"
+                           + " (only " + std::to_string(in.remaining()) + (in.remaining() == 1 ? " byte" : " bytes")
+                           + " left: truncated file?)");
         const bool keep = is_face && int(k) == indices;
         for(std::int64_t m = 0; m < i; ++m) {
           std::int64_t id = 0;
@@ -1098,6 +1122,111 @@ inline Check_result parse_stl(const std::string& data, Polygon_soup& soup)
 }
 
 // ---------------------------------------------------------------------------
+// GOCAD TSurf
+// ---------------------------------------------------------------------------
+
+/// GOCAD TSurf (ASCII): everything before the first "TFACE" line is header (name, colour,
+/// coordinate system, ...; the "GOCAD TSurf" line itself is optional, as in CGAL); then
+/// "VRTX id x y z" / "PVRTX id x y z [properties]" define vertex `id` (file order = vertex
+/// order), "ATOM id v" / "PATOM id v [...]" give vertex `v` a second id (the same vertex),
+/// "TRGL a b c" is a triangle of ids (defined before or after it), "TFACE" starts another
+/// patch, "BSTONE" / "BORDER" / "SEG" are ignored, and the first "END" ends the object
+/// (what follows is ignored). Any other keyword after TFACE is an error.
+inline Check_result parse_gocad(const std::string& data, Polygon_soup& soup)
+{
+  Cursor cur(data.data(), data.data() + data.size());
+  std::vector<std::string_view> fields;
+  bool tface = false, end = false;
+  while(!cur.at_end() && !tface) {
+    split(cur.rest_of_line(false), fields);
+    tface = !fields.empty() && fields[0] == "TFACE";
+  }
+  if(!tface)
+    return read_fail("no TFACE line: not a GOCAD TSurf file (or it holds no triangle surface)");
+
+  std::unordered_map<std::int64_t, std::size_t> vertex_of_id;
+  std::vector<std::int64_t> triangle_ids; // 3 per triangle, resolved at the end
+  auto parse_id = [&](std::string_view t, std::size_t line, std::int64_t& id) -> Check_result {
+    switch(parse_signed(t, id)) {
+    case NUMBER_OK: return Check_result();
+    case NUMBER_TOO_LARGE: return read_fail(at_line(line) + "vertex id " + quote(t) + " is too large");
+    default: return read_fail(at_line(line) + quote(t) + " is not a vertex id (an integer)");
+    }
+  };
+  while(!cur.at_end()) {
+    const std::size_t line = cur.line();
+    split(cur.rest_of_line(false), fields);
+    if(fields.empty())
+      continue;
+    const std::string_view kw = fields[0];
+    Check_result r;
+    if(kw == "VRTX" || kw == "PVRTX") {
+      const std::size_t i = soup.points.size();
+      if(fields.size() < 5)
+        return read_fail(at_line(line) + "vertex " + std::to_string(i) + ": '" + std::string(kw)
+                         + " id x y z' expected, " + std::to_string(fields.size() - 1) + " fields found");
+      std::int64_t id = 0;
+      if(!(r = parse_id(fields[1], line, id)))
+        return r;
+      std::array<double, 3> q;
+      for(int k = 0; k < 3; ++k)
+        if(!parse_real(fields[std::size_t(k) + 2], q[std::size_t(k)]))
+          return read_fail(at_line(line) + "vertex " + std::to_string(i) + ": coordinate "
+                           + quote(fields[std::size_t(k) + 2]) + " is not a number");
+      if(!vertex_of_id.emplace(id, i).second)
+        return read_fail(at_line(line) + "vertex id " + std::to_string(id) + " is defined twice");
+      soup.points.push_back(q);
+      soup.point_lines.push_back(line);
+    } else if(kw == "ATOM" || kw == "PATOM") {
+      std::int64_t id = 0, target = 0;
+      if(fields.size() < 3)
+        return read_fail(at_line(line) + "'" + std::string(kw) + " id vertex_id' expected");
+      if(!(r = parse_id(fields[1], line, id)) || !(r = parse_id(fields[2], line, target)))
+        return r;
+      const auto it = vertex_of_id.find(target);
+      if(it == vertex_of_id.end())
+        return read_fail(at_line(line) + std::string(kw) + " " + std::to_string(id) + " refers to vertex id "
+                         + std::to_string(target) + ", which is not defined before it");
+      if(!vertex_of_id.emplace(id, it->second).second)
+        return read_fail(at_line(line) + "vertex id " + std::to_string(id) + " is defined twice");
+    } else if(kw == "TRGL") {
+      if(fields.size() < 4)
+        return read_fail(at_line(line) + "triangle " + std::to_string(soup.number_of_faces())
+                         + ": 'TRGL a b c' expected, " + std::to_string(fields.size() - 1) + " vertex ids found");
+      for(int k = 1; k <= 3; ++k) {
+        std::int64_t id = 0;
+        if(!(r = parse_id(fields[std::size_t(k)], line, id)))
+          return r;
+        triangle_ids.push_back(id);
+      }
+      soup.end_face(line); // its vertices are filled in below
+    } else if(kw == "END") {
+      end = true;
+      break;
+    } else if(kw == "TFACE" || kw == "BSTONE" || kw == "BORDER" || kw == "SEG") {
+      continue;
+    } else {
+      return read_fail(at_line(line) + "unknown GOCAD TSurf keyword " + quote(kw));
+    }
+  }
+  if(!end)
+    return read_fail("the file ends without END (truncated file?)");
+  // resolve the ids of the triangles
+  soup.face_begin.assign(1, 0);
+  soup.face_vertices.reserve(triangle_ids.size());
+  for(std::size_t t = 0; t < triangle_ids.size(); ++t) {
+    const auto it = vertex_of_id.find(triangle_ids[t]);
+    if(it == vertex_of_id.end())
+      return read_fail(at_line(soup.face_lines[t / 3]) + "triangle " + std::to_string(t / 3) + ": vertex id "
+                       + std::to_string(triangle_ids[t]) + " is not defined (no VRTX, PVRTX or ATOM with that id)");
+    soup.face_vertices.push_back(it->second);
+    if(t % 3 == 2)
+      soup.face_begin.push_back(soup.face_vertices.size());
+  }
+  return Check_result();
+}
+
+// ---------------------------------------------------------------------------
 // Files
 // ---------------------------------------------------------------------------
 
@@ -1157,7 +1286,7 @@ inline std::string file_extension(const std::string& path)
 /*!
 Reads the polygon soup of a mesh file, in the file's order. The format is chosen by the
 file extension (any case): .off (ASCII and Geomview binary), .obj, .ply (ASCII and
-binary), .stl (ASCII and binary), and .ts (GOCAD, read by `CGAL::IO::read_GOCAD()`).
+binary), .stl (ASCII and binary), and .ts (GOCAD TSurf).
 Messages start with the file name. Only parse errors are reported here
 (ERROR_READ_FAILED); see `validate_polygon_soup()` for the rest.
 */
@@ -1172,29 +1301,6 @@ inline Check_result read_polygon_soup_file(const std::string& path, Polygon_soup
     return read_fail("'" + path + "': unsupported file extension '" + ext + "' (supported: off, obj, ply, stl, ts)");
 
   Check_result r;
-  if(ext == "ts") {
-    if(!(r = check_readable_file(path)))
-      return r;
-    typedef CGAL::Simple_cartesian<double>::Point_3 P;
-    std::vector<P> points;
-    std::vector<std::vector<std::size_t> > polygons;
-    bool ok = false;
-    try {
-      ok = CGAL::IO::read_GOCAD(path, points, polygons);
-    } catch(...) {
-      ok = false;
-    }
-    if(!ok)
-      return read_fail("'" + path + "': CGAL::IO::read_GOCAD() cannot read the file");
-    for(const P& p : points)
-      soup.points.push_back({ { p.x(), p.y(), p.z() } });
-    for(const auto& poly : polygons) {
-      soup.face_vertices.insert(soup.face_vertices.end(), poly.begin(), poly.end());
-      soup.end_face();
-    }
-    return Check_result();
-  }
-
   std::string data;
   if(!(r = read_file_contents(path, data)))
     return r;
@@ -1208,8 +1314,10 @@ inline Check_result read_polygon_soup_file(const std::string& path, Polygon_soup
       r = parse_obj(data, soup);
     else if(ext == "ply")
       r = parse_ply(data, soup);
-    else
+    else if(ext == "stl")
       r = parse_stl(data, soup);
+    else
+      r = parse_gocad(data, soup);
   } catch(const std::exception&) { // bad_alloc, length_error: not expected, counts are bounded
     r = read_fail("out of memory");
   }
@@ -1284,6 +1392,57 @@ inline Check_result validate_polygon_soup(const Polygon_soup& soup, Soup_topolog
     return c + 1 < soup.face_begin[f + 1] ? c + 1 : soup.face_begin[f];
   };
 
+  // 1b. a face repeated (the same vertices in the same cyclic order): hash of each face
+  //     read from its smallest vertex, faces with equal hashes compared. A repeated face
+  //     makes two faces traverse an edge in the same direction, so this runs only when
+  //     step 2 finds such an edge (no cost for valid soups), to give the specific reason.
+  auto find_duplicated_face = [&]() -> Check_result {
+    auto smallest_corner = [&](std::size_t f) {
+      std::size_t best = soup.face_begin[f];
+      for(std::size_t c = best + 1; c < soup.face_begin[f + 1]; ++c)
+        if(fv[c] < fv[best])
+          best = c;
+      return best;
+    };
+    std::vector<std::size_t> first_corner(nf);
+    std::unordered_map<std::uint64_t, Id> first_with_hash;
+    std::vector<Id> next_with_hash(nf, none);
+    first_with_hash.reserve(nf);
+    for(std::size_t f = 0; f < nf; ++f) {
+      const std::size_t c0 = first_corner[f] = smallest_corner(f);
+      std::uint64_t h = soup.face_size(f);
+      std::size_t c = c0;
+      do {
+        h = (h ^ fv[c]) * 0x100000001b3ull + 0x9e3779b97f4a7c15ull;
+        h ^= h >> 29;
+        c = next_corner(c);
+      } while(c != c0);
+      auto ins = first_with_hash.emplace(h, static_cast<Id>(f));
+      if(ins.second)
+        continue;
+      for(Id g = ins.first->second; g != none; g = next_with_hash[g]) {
+        if(soup.face_size(g) != soup.face_size(f))
+          continue;
+        std::size_t a = first_corner[g], b = c0;
+        std::size_t k = 0;
+        while(k < soup.face_size(f) && fv[a] == fv[b]) {
+          a = next_corner(a);
+          b = next_corner(b);
+          ++k;
+        }
+        if(k == soup.face_size(f)) {
+          std::ostringstream os;
+          os << "duplicated face: " << soup.face_name(f) << " repeats " << soup.face_name(g)
+             << " (the same vertices in the same order)";
+          return io_impl::fail(ERROR_NON_MANIFOLD, os.str());
+        }
+      }
+      next_with_hash[f] = next_with_hash[ins.first->second]; // chain f after the first face with this hash
+      next_with_hash[ins.first->second] = static_cast<Id>(f);
+    }
+    return Check_result();
+  };
+
   // 2. edges: halfedges grouped by their smaller vertex (counting sort), then by the other
   struct Entry { Id other; Id corner; };
   std::vector<Id> start(np + 1, 0);
@@ -1346,10 +1505,12 @@ inline Check_result validate_polygon_soup(const Polygon_soup& soup, Soup_topolog
       g = h;
     }
   }
-  if(!non_manifold_edge.empty())
-    return io_impl::fail(ERROR_NON_MANIFOLD, non_manifold_edge);
-  if(!bad_orientation.empty())
-    return io_impl::fail(ERROR_NON_MANIFOLD, bad_orientation);
+  if(!non_manifold_edge.empty() || !bad_orientation.empty()) {
+    Check_result dup = find_duplicated_face();
+    if(!dup)
+      return dup;
+    return io_impl::fail(ERROR_NON_MANIFOLD, !non_manifold_edge.empty() ? non_manifold_edge : bad_orientation);
+  }
   { std::vector<Entry>().swap(entries); std::vector<Id>().swap(start); }
 
   // 3. vertices: the corners around a vertex must form a single fan (union-find of
@@ -1593,9 +1754,6 @@ inline Check_result read_landmarks(const std::string& path, std::vector<std::siz
     for(std::string_view f : fields)
       tokens.emplace_back(f, line);
   }
-  if(!selection && lines_with_tokens > 1 && lines_with_several > 0)
-    return read_fail(path + ": " + at_line(first_several_line)
-                     + "ambiguous layout: give all indices on one line, or one index per line");
   if(tokens.empty())
     return read_fail(path + ": " + (selection ? "line 1 of the selection file holds no vertex index"
                                               : "the file holds no vertex index"));
@@ -1621,7 +1779,57 @@ inline Check_result read_landmarks(const std::string& path, std::vector<std::siz
                        + " (a non-negative integer)");
     }
   }
+  // the layout once every token is an index (a garbage file gets its first bad token)
+  if(!selection && lines_with_tokens > 1 && lines_with_several > 0) {
+    indices.clear();
+    return read_fail(path + ": " + at_line(first_several_line)
+                     + "ambiguous layout: give all indices on one line, or one index per line");
+  }
   return Check_result();
+}
+
+// ---------------------------------------------------------------------------
+// Reading and checking, as the command-line program does (and the fuzz target)
+// ---------------------------------------------------------------------------
+
+/*!
+Reads the mesh file `path` (`read_mesh()`) and checks it (`check_mesh()`) for
+`required_type`, or, if `std::nullopt`, for the type of its topology; `info` (if not
+null) receives the required or detected type. Every message starts with the file name.
+A mesh that is neither closed nor a disk gets the first failing check of `check_mesh()`
+as its reason (no face, isolated vertex, several components, ..., boundary loops).
+*/
+template <class TriangleMesh>
+Check_result read_and_check_mesh(const std::string& path, std::optional<Orbifold_type> required_type,
+                                 TriangleMesh& mesh, Mesh_info* info = nullptr)
+{
+  Check_result r = read_mesh(path, mesh); // its messages already start with the file name
+  if(!r)
+    return r;
+  r = check_mesh(mesh, required_type, info);
+  if(!r)
+    r.message = path + ": " + r.message;
+  return r;
+}
+
+/*!
+Reads the landmark file `path` (`read_landmarks()`) and checks the indices against
+`mesh` (`check_landmarks()`, which fills `landmarks` on success). Every message starts
+with the file name. Precondition: `check_mesh()` succeeded on `mesh` for `type`.
+*/
+template <class TriangleMesh>
+Check_result read_and_check_landmarks(const std::string& path, const TriangleMesh& mesh, Orbifold_type type,
+                                      std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks)
+{
+  landmarks.clear();
+  std::vector<std::size_t> indices;
+  Check_result r = read_landmarks(path, indices); // its messages already start with the file name
+  if(!r)
+    return r;
+  r = check_landmarks(mesh, indices, type, landmarks);
+  if(!r)
+    r.message = path + ": " + r.message;
+  return r;
 }
 
 } // namespace internal
