@@ -4,7 +4,8 @@
 // Times, on the same meshes: CGAL's Euclidean Orbifold_Tutte_parameterizer_3 (4 cones,
 // parallelogram orbifold, cotangent weights), our hyperbolic embedding (cut, init, optimise,
 // certify) and the "Cholesky floor" (one factorisation + solve of the cotangent Laplacian).
-//   bench_parameterizer [--landmarks K] mesh.off [mesh2.off ...]
+//   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] (mesh.off | generated:N) [...]
+// generated:N is a genus-0 blob with protrusions of about N vertices (made here).
 // Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -15,6 +16,7 @@
 
 #include <CGAL/hyperbolic_orbifold_Tutte.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include <Eigen/SparseCholesky>
 
@@ -25,6 +27,8 @@
 #include <fstream>
 #include <iostream>
 #include <list>
+#include <map>
+#include <random>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -81,6 +85,58 @@ static double euclidean_orbifold_time(SM& sm, const std::vector<SM_vertex>& cone
   return time;
 }
 
+// A generated genus-0 test surface of about n vertices: the frequency-f geodesic sphere
+// (10 f^2 + 2 vertices), made a blob with long smooth protrusions by a radial function (so
+// it stays embedded), plus a little noise along the radius.
+static SM generated_blob(std::size_t n, unsigned seed = 5)
+{
+  const int f = std::max(1, static_cast<int>(std::lround(std::sqrt((static_cast<double>(n) - 2) / 10))));
+  SM icosa;
+  CGAL::make_icosahedron(icosa, K::Point_3(0, 0, 0), 1.0);
+  SM sm;
+  std::map<std::array<long long, 3>, SM_vertex> index;
+  auto vertex_at = [&](const K::Vector_3& p) {
+    const K::Vector_3 u = p / std::sqrt(p.squared_length());
+    const std::array<long long, 3> key{{std::llround(u.x() * 1e9), std::llround(u.y() * 1e9), std::llround(u.z() * 1e9)}};
+    auto it = index.find(key);
+    if(it == index.end()) it = index.emplace(key, sm.add_vertex(K::Point_3(u.x(), u.y(), u.z()))).first;
+    return it->second;
+  };
+  for(auto fc : faces(icosa)) {
+    std::array<K::Vector_3, 3> c;
+    int i = 0;
+    for(auto v : vertices_around_face(halfedge(fc, icosa), icosa)) c[i++] = icosa.point(v) - CGAL::ORIGIN;
+    std::vector<std::vector<SM_vertex> > row(f + 1);
+    for(int a = 0; a <= f; ++a)
+      for(int b = 0; b <= f - a; ++b)
+        row[a].push_back(vertex_at(c[0] + (c[1] - c[0]) * (double(a) / f) + (c[2] - c[0]) * (double(b) / f)));
+    for(int a = 0; a < f; ++a)
+      for(int b = 0; b < f - a; ++b) {
+        sm.add_face(row[a][b], row[a + 1][b], row[a][b + 1]);
+        if(b + 1 < f - a) sm.add_face(row[a + 1][b], row[a + 1][b + 1], row[a][b + 1]);
+      }
+  }
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::vector<K::Vector_3> centre;
+  std::vector<double> height, width;
+  for(int j = 0; j < 9; ++j) {
+    K::Vector_3 c(U(rng), U(rng), U(rng));
+    centre.push_back(c / std::sqrt(c.squared_length()));
+    height.push_back(j < 4 ? 1.5 + U(rng) * 0.5 : 0.3 * U(rng)); // four long protrusions, bumps and dents
+    width.push_back(j < 4 ? 0.04 : 0.2);
+  }
+  const double noise = 0.1 * 2.0 / f; // a tenth of an edge
+  for(SM_vertex v : vertices(sm)) {
+    const K::Vector_3 u = sm.point(v) - CGAL::ORIGIN;
+    double r = 1;
+    for(std::size_t j = 0; j < centre.size(); ++j) r += height[j] * std::exp(-(1 - u * centre[j]) / width[j]);
+    r += noise * U(rng);
+    sm.point(v) = CGAL::ORIGIN + u * r;
+  }
+  return sm;
+}
+
 // one factorisation + solve of the n x n cotangent Laplacian (one vertex pinned)
 static double cholesky_floor_time(const SM& sm)
 {
@@ -113,31 +169,41 @@ static double cholesky_floor_time(const SM& sm)
 int main(int argc, char** argv)
 {
   std::size_t k = 7;
+  std::size_t euclid_max = 500000; // CGAL's Euclidean solve takes minutes and > 4 GB beyond
+  bool with_map = true;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--landmarks" && i + 1 < argc) k = std::strtoul(argv[++i], nullptr, 10);
+    else if(a == "--euclid-max" && i + 1 < argc) euclid_max = std::strtoul(argv[++i], nullptr, 10);
+    else if(a == "--no-map") with_map = false;
     else files.push_back(a);
   }
   if(files.empty()) {
-    std::cerr << "usage: bench_parameterizer [--landmarks K] mesh.off [...]" << std::endl;
+    std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] (mesh.off | generated:N) [...]" << std::endl;
     return 1;
   }
-  std::printf("%-18s %8s %3s | %9s | %7s %7s %7s %7s %8s | %5s %9s | %7s %9s | %7s | %7s %s\n", "mesh", "vertices", "k",
-              "Euclid(s)", "cut", "init", "optim", "cert", "total(s)", "iters", "imbalance", "ratio", "chol(s)",
+  std::printf("%-18s %8s %3s | %9s | %7s %7s %7s %7s %8s | %10s %9s | %7s %9s %7s | %7s | %7s %s\n", "mesh", "vertices", "k",
+              "Euclid(s)", "cut", "init", "optim", "cert", "total(s)", "its/cg/rf", "imbalance", "ratio", "chol(s)", "x chol",
               "map(s)", "RSS(MB)", "certificate");
   for(const std::string& f : files) {
     SM sm;
-    if(!CGAL::IO::read_polygon_mesh(f, sm) || num_faces(sm) == 0) {
-      std::printf("%-18s cannot read\n", f.c_str());
-      continue;
+    std::string name;
+    if(f.rfind("generated:", 0) == 0) { // generated:N, a blob of about N vertices
+      sm = generated_blob(std::strtoul(f.c_str() + 10, nullptr, 10));
+      name = "blob_" + std::to_string(num_vertices(sm) / 1000) + "k";
+    } else {
+      if(!CGAL::IO::read_polygon_mesh(f, sm) || num_faces(sm) == 0) {
+        std::printf("%-18s cannot read\n", f.c_str());
+        continue;
+      }
+      name = f.substr(f.find_last_of('/') + 1);
+      name = name.substr(0, name.find_last_of('.'));
     }
-    std::string name = f.substr(f.find_last_of('/') + 1);
-    name = name.substr(0, name.find_last_of('.'));
     const auto landmarks = HOT::select_landmarks(sm, k);
     bool eok = false;
     double te = -1;
-    if(CGAL::is_closed(sm)) {
+    if(CGAL::is_closed(sm) && num_vertices(sm) <= euclid_max) {
       std::vector<SM_vertex> cones4(landmarks.begin(), landmarks.begin() + std::min<std::size_t>(4, landmarks.size()));
       te = euclidean_orbifold_time(sm, cones4, eok);
     }
@@ -150,7 +216,7 @@ int main(int argc, char** argv)
     // mapping: every vertex of a smooth deformation of the mesh (embedded with the same
     // landmarks, in the same order) located on the mesh's embedding
     double tmap = -1;
-    if(ec == HOT::OK) {
+    if(ec == HOT::OK && with_map) {
       SM def = sm;
       const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(sm);
       const double s = bb.xmax() - bb.xmin() + bb.ymax() - bb.ymin();
@@ -173,10 +239,10 @@ int main(int argc, char** argv)
     }
     sm.remove_property_map(uv);
     const double tc = cholesky_floor_time(sm);
-    std::printf("%-18s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %5d %9.1e | %7.2f %9.3f | %7.3f | %7.0f %s\n",
+    std::printf("%-18s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %3d/%3d/%2d %9.1e | %7.2f %9.3f %7.1f | %7.3f | %7.0f %s\n",
                 name.c_str(), static_cast<std::size_t>(num_vertices(sm)), landmarks.size(), eok ? te : -1.0,
                 st.time_setup, st.time_initialization, st.time_optimization, st.time_certificate, total, st.iterations,
-                st.relative_gradient_norm, (eok && te > 0) ? total / te : -1.0, tc, tmap, peak_rss_mb(),
+                st.cg_iterations, st.preconditioner_factorizations, st.relative_gradient_norm, (eok && te > 0) ? total / te : -1.0, tc, tc > 0 ? total / tc : -1.0, tmap, peak_rss_mb(),
                 ec == HOT::OK && st.certificate.is_bijective() ? "bijective" : HOT::error_message(ec));
     std::fflush(stdout);
   }

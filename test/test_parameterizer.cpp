@@ -704,6 +704,7 @@ struct Sphere_problem
   Mesh m;
   HOT::internal::Flat_problem P;
   std::vector<double> x;
+  HOT::internal::Interior_laplacian interior; // the initialisation's factorisation
 };
 
 static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& S)
@@ -729,7 +730,7 @@ static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& 
   std::vector<K::Point_3> pts(S.P.n_base);
   for(auto& e : bi) pts[e.second] = m.point(e.first);
   HOT::internal::compute_edge_weights(S.P, pts, HOT::Cotangent, 1e-6);
-  return HOT::internal::initialize_embedding(S.P, tile, pts, S.x) == HOT::OK;
+  return HOT::internal::initialize_embedding(S.P, tile, pts, S.x, &S.interior) == HOT::OK;
 }
 
 TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
@@ -759,14 +760,15 @@ TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
 // The energy has one minimiser (it is geodesically convex): the preconditioned solver (gradient
 // steps and Newton-CG with the connection Laplacian) and the direct one (the Hessian factored
 // at every Newton step) must reach the same embedding, vertex by vertex.
-static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std::vector<double>& x0, const std::string& what)
+static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std::vector<double>& x0, const std::string& what,
+                                const HOT::internal::Interior_laplacian* interior = nullptr)
 {
   HOT::internal::Solver_options fast, direct;
   direct.direct_solver = true;
   fast.verbose = getenv("HOT_VERBOSE") != nullptr;
   std::vector<double> xf = x0, xd = x0;
   HOT::internal::Solver_statistics sf, sd;
-  CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf) == HOT::OK, what << ": preconditioned solver");
+  CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf, interior) == HOT::OK, what << ": preconditioned solver");
   CHECK_MSG(HOT::internal::minimize_energy(P, xd, direct, sd) == HOT::OK, what << ": direct solver");
   double worst = 0;
   for(int v = 0; v < P.n; ++v) {
@@ -787,7 +789,10 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
   for(const auto& c : std::vector<std::pair<std::string, int> >{{"hand", 7}, {"hand", 23}, {"bear", 7}}) {
     Sphere_problem S;
     CHECK(make_sphere_problem(c.first, c.second, S));
+    // the gauge of the seam rotations from the preconditioner's own Laplacian, and from the
+    // initialisation's interior Laplacian (what the parameterizer does)
     check_solvers_agree(S.P, S.x, c.first + " k=" + std::to_string(c.second));
+    check_solvers_agree(S.P, S.x, c.first + " k=" + std::to_string(c.second) + " (interior gauge)", &S.interior);
   }
   Mesh m;
   CHECK(read_demo_mesh("mushroom", m));

@@ -35,7 +35,9 @@ struct Embedding_statistics
 {
   int number_of_vertices = 0;         ///< vertices of the cut (seam) mesh
   int number_of_variables = 0;        ///< unknowns after eliminating seam twins
-  int iterations = 0;                 ///< Newton iterations
+  int iterations = 0;                 ///< steps of the solver (preconditioned gradient steps, then Newton steps)
+  int cg_iterations = 0;              ///< conjugate-gradient iterations of the Newton steps, in all
+  int preconditioner_factorizations = 0; ///< factorisations of the connection-Laplacian preconditioner after the first
   double initial_energy = 0;          ///< Dirichlet energy of the Euclidean Tutte initialisation
   double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
   double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
@@ -58,7 +60,7 @@ struct Embedding_statistics
   /// seconds spent assembling the Newton systems (part of `time_optimization`)
   /// \var time_factorization
   /// seconds spent factoring the Newton matrices (part of `time_optimization`)
-  double time_assembly = 0, time_factorization = 0, time_line_search = 0; ///< parts of `time_optimization`
+  double time_assembly = 0, time_factorization = 0, time_line_search = 0; ///< parts of `time_optimization` (factorisation: the preconditioner's and the conjugate gradients)
   /// the bijectivity certificate of the computed coordinates
   Embedding_certificate certificate;
   std::string message;                ///< one-line reason when the result is an error
@@ -215,15 +217,18 @@ public:
 
     auto t1 = Clock::now();
     std::vector<double> x;
-    ec = internal::initialize_embedding(P, tile, base_points, x);
+    internal::Interior_laplacian interior; // factored by the initialisation, reused by the solver
+    ec = internal::initialize_embedding(P, tile, base_points, x, &interior);
     st.time_initialization = std::chrono::duration<double>(Clock::now() - t1).count();
     if(ec != OK)
       return fail(ec, "the Euclidean Tutte initialisation failed");
 
     auto t2 = Clock::now();
     internal::Solver_statistics ss;
-    ec = internal::minimize_energy(P, x, options_, ss);
+    ec = internal::minimize_energy(P, x, options_, ss, &interior);
     st.iterations = ss.iterations;
+    st.cg_iterations = ss.cg_iterations;
+    st.preconditioner_factorizations = ss.preconditioner_factorizations;
     st.initial_energy = ss.initial_energy;
     st.energy = ss.energy;
     st.gradient_norm = ss.gradient;

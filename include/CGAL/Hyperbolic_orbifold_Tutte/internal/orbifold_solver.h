@@ -134,6 +134,15 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
   }
 }
 
+// The weighted Laplacian of the cut mesh's interior vertices (the border held fixed),
+// factored once by the initialisation and reused by the solver's preconditioner (gauge).
+struct Interior_laplacian
+{
+  std::vector<int> index;   // interior index of each cut-mesh vertex, -1 on the border
+  int size = 0;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > solver;
+};
+
 // Places the border: cone copies at their corners, other border vertices along their
 // tile side at the fraction of the 3D arc length between the side's corners (sphere:
 // p-side vertices on the side's geodesic, their twins follow by the pairing; disk: the
@@ -141,8 +150,10 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
 // Klein model with the same weights (paper, section 5), mapped back to Poincare.
 template <class Point3, class Tile>
 Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const std::vector<Point3>& base_points,
-                                std::vector<double>& x)
+                                std::vector<double>& x, Interior_laplacian* keep = nullptr)
 {
+  Interior_laplacian local;
+  Interior_laplacian& lap = keep ? *keep : local;
   typedef Complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
   x.assign(P.n_vars, 0.0);
@@ -201,11 +212,13 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
       z[v] = position(P, x, v);
 
   // Tutte in Klein coordinates
-  std::vector<int> interior_index(P.n, -1);
+  std::vector<int>& interior_index = lap.index;
+  interior_index.assign(P.n, -1);
   int ni = 0;
   for(int v = 0; v < P.n; ++v)
     if(!is_border[v])
       interior_index[v] = ni++;
+  lap.size = ni;
   if(ni > 0) {
     typedef Eigen::SparseMatrix<double> SpMat;
     std::vector<Eigen::Triplet<double> > trip;
@@ -236,7 +249,8 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
       trip.emplace_back(i, i, diag[i]);
     SpMat Lm(ni, ni);
     Lm.setFromTriplets(trip.begin(), trip.end());
-    Eigen::SimplicialLDLT<SpMat> solver(Lm);
+    auto& solver = lap.solver;
+    solver.compute(Lm);
     if(solver.info() != Eigen::Success)
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     const Eigen::VectorXd kx = solver.solve(bx), ky = solver.solve(by);
@@ -567,14 +581,24 @@ public:
   typedef std::complex<double> Cd;
   typedef Eigen::SparseMatrix<Cd> CMat;
 
-  explicit Connection_laplacian_preconditioner(const Flat_problem& P) : P_(P)
+  // `interior`: the initialisation's factored interior Laplacian, used for the gauge (else
+  // the preconditioner factors a real Laplacian of its own for it)
+  explicit Connection_laplacian_preconditioner(const Flat_problem& P, const Interior_laplacian* interior = nullptr)
+    : P_(P), interior_(interior)
   {
     node_.assign(P.n, -1);
-    for(int v = 0; v < P.n; ++v)
+    copy_.assign(P.n, -1);
+    for(int v = 0; v < P.n; ++v) {
       if(P.kind[v] == Free || P.kind[v] == On_line) {
         node_[v] = n_nodes_++;
         owner_.push_back(v);
+      } else if(P.kind[v] == Transformed) {
+        copy_[P.twin[v]] = v;
+        has_seams_ = true;
       }
+    }
+    if(interior_ && (interior_->index.size() != static_cast<std::size_t>(P.n) || interior_->solver.info() != Eigen::Success))
+      interior_ = nullptr;
   }
 
   // assembles A with the seam rotations at x and factors it (symbolic analysis once)
@@ -607,6 +631,9 @@ public:
     if(!analyzed_) {
       solver_.analyzePattern(A);
       analyzed_ = true;
+    }
+    if(has_seams_ && !interior_ && !gauge_factored_) {
+      gauge_factored_ = true;
       // the real Laplacian (no rotations) for the gauge
       Eigen::SparseMatrix<double> L = A.real();
       for(std::size_t e = 0; e < P_.edges.size(); ++e) {
@@ -646,8 +673,9 @@ public:
       }
     }
     // gauge: the seam rotations have turned by delta since the factorisation; spread the
-    // turn smoothly over the mesh (least squares: L psi = div delta)
+    // turn smoothly over the mesh, so that psi jumps by delta across the seam
     gauge_.assign(n_nodes_, Cd(1.0, 0.0));
+    if(!has_seams_) return;
     std::vector<double> delta(P_.n, 0.0);
     bool any = false;
     for(int v = 0; v < P_.n; ++v)
@@ -656,6 +684,29 @@ public:
         any = any || delta[v] != 0;
       }
     if(!any) return;
+    if(interior_) {
+      // harmonic in the interior, +delta/2 on a seam vertex's side, -delta/2 on its twin's
+      // side (the interior Laplacian with the border fixed: the initialisation's factorisation)
+      auto border_value = [&](int v) {
+        if(P_.kind[v] == Transformed) return -delta[v] / 2;
+        if(P_.kind[v] == Free && copy_[v] >= 0) return delta[copy_[v]] / 2;
+        return 0.0;
+      };
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(interior_->size);
+      for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+        const int a = P_.edges[e][0], b = P_.edges[e][1];
+        const int ia = interior_->index[a], ib = interior_->index[b];
+        if(ia >= 0 && ib < 0) rhs[ia] += P_.edge_weight[e] * border_value(b);
+        else if(ib >= 0 && ia < 0) rhs[ib] += P_.edge_weight[e] * border_value(a);
+      }
+      const Eigen::VectorXd psi = interior_->solver.solve(rhs);
+      for(int i = 0; i < n_nodes_; ++i) {
+        const int v = owner_[i], ii = interior_->index[v];
+        gauge_[i] = std::polar(1.0, ii >= 0 ? psi[ii] : border_value(v));
+      }
+      return;
+    }
+    // least squares over the edges: L psi = div delta
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_nodes_);
     for(std::size_t e = 0; e < P_.edges.size(); ++e) {
       const int a = P_.edges[e][0], b = P_.edges[e][1];
@@ -715,6 +766,9 @@ private:
   const Flat_problem& P_;
   std::vector<int> node_, owner_;
   int n_nodes_ = 0;
+  const Interior_laplacian* interior_;
+  std::vector<int> copy_;      // the seam twin of a vertex, -1 if none
+  bool has_seams_ = false, gauge_factored_ = false;
   std::vector<Cd> scale_, gauge_, rho0_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > gauge_solver_;
   Eigen::SimplicialLDLT<CMat, Eigen::Lower, Eigen::AMDOrdering<int> > solver_;
@@ -733,7 +787,7 @@ private:
 // iterative solves stall, or the connection Laplacian not factor, the Hessian is factored
 // directly (sparse LDL^T, symbolic analysis once): the former, slower, solver.
 inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const Solver_options& opt,
-                                  Solver_statistics& st)
+                                  Solver_statistics& st, const Interior_laplacian* interior = nullptr)
 {
   typedef Complex<double> C;
   typedef Eigen::SparseMatrix<double> SpMat;
@@ -750,7 +804,7 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   SpMat H;
   Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int> > direct;
   bool direct_analyzed = false;
-  Connection_laplacian_preconditioner pre(P);
+  Connection_laplacian_preconditioner pre(P, interior);
   bool use_direct = opt.direct_solver;
   auto t0 = Clock::now();
   if(!use_direct && !pre.factor(x))
