@@ -3,9 +3,11 @@
 //
 // Times, on the same meshes: CGAL's Euclidean Orbifold_Tutte_parameterizer_3 (4 cones,
 // parallelogram orbifold, cotangent weights), our hyperbolic embedding (cut, init, optimise,
-// certify) and the "Cholesky floor" (one factorisation + solve of the cotangent Laplacian).
+// certify) and the "Cholesky floor" (one factorisation + solve of the cotangent Laplacian, the
+// faster of Eigen's simplicial LDL^T and, where available, CHOLMOD's supernodal LL^T).
 //   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] (mesh.off | generated:N) [...]
-// generated:N is a genus-0 blob with protrusions of about N vertices (made here).
+// generated:N is a genus-0 blob with protrusions of about N vertices (made here);
+// mesh.off@cones.txt uses the landmarks listed in cones.txt instead of K farthest points.
 // Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -19,6 +21,9 @@
 #include <CGAL/boost/graph/generators.h>
 
 #include <Eigen/SparseCholesky>
+#ifdef CGAL_HOT_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
 #include <sys/resource.h>
 
@@ -158,11 +163,18 @@ static double cholesky_floor_time(const SM& sm)
   for(int i = 1; i < n; ++i) trip.emplace_back(i - 1, i - 1, diag[i]);
   Eigen::SparseMatrix<double> L(n - 1, n - 1);
   L.setFromTriplets(trip.begin(), trip.end());
-  const auto t = Clock::now();
+  auto t = Clock::now();
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > chol(L);
   const Eigen::VectorXd x = chol.solve(Eigen::VectorXd::Ones(n - 1));
-  const double time = seconds_since(t);
+  double time = seconds_since(t);
   if(!x.allFinite()) return -1;
+#ifdef CGAL_HOT_USE_CHOLMOD
+  // the faster of Eigen's simplicial and CHOLMOD's supernodal factorisation
+  t = Clock::now();
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > sn(L);
+  const Eigen::VectorXd y = sn.solve(Eigen::VectorXd::Ones(n - 1));
+  if(y.allFinite()) time = std::min(time, seconds_since(t));
+#endif
   return time;
 }
 
@@ -183,24 +195,40 @@ int main(int argc, char** argv)
     std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] (mesh.off | generated:N) [...]" << std::endl;
     return 1;
   }
-  std::printf("%-18s %8s %3s | %9s | %7s %7s %7s %7s %8s | %10s %9s | %7s %9s %7s | %7s | %7s %s\n", "mesh", "vertices", "k",
+  std::printf("%-24s %8s %3s | %9s | %7s %7s %7s %7s %8s | %10s %9s | %7s %9s %7s | %7s | %7s %s\n", "mesh", "vertices", "k",
               "Euclid(s)", "cut", "init", "optim", "cert", "total(s)", "its/cg/rf", "imbalance", "ratio", "chol(s)", "x chol",
               "map(s)", "RSS(MB)", "certificate");
-  for(const std::string& f : files) {
+  for(std::string f : files) {
     SM sm;
-    std::string name;
+    std::string name, cones_file;
+    if(f.find('@') != std::string::npos) { // mesh.off@cones.txt: the landmarks given, one vertex index per line
+      cones_file = f.substr(f.find('@') + 1);
+      f = f.substr(0, f.find('@'));
+    }
     if(f.rfind("generated:", 0) == 0) { // generated:N, a blob of about N vertices
       sm = generated_blob(std::strtoul(f.c_str() + 10, nullptr, 10));
       name = "blob_" + std::to_string(num_vertices(sm) / 1000) + "k";
     } else {
       if(!CGAL::IO::read_polygon_mesh(f, sm) || num_faces(sm) == 0) {
-        std::printf("%-18s cannot read\n", f.c_str());
+        std::printf("%-24s cannot read\n", f.c_str());
         continue;
       }
       name = f.substr(f.find_last_of('/') + 1);
       name = name.substr(0, name.find_last_of('.'));
     }
-    const auto landmarks = HOT::select_landmarks(sm, k);
+    std::vector<SM_vertex> landmarks;
+    if(!cones_file.empty()) {
+      std::ifstream in(cones_file);
+      std::size_t i;
+      while(in >> i)
+        if(i < num_vertices(sm)) landmarks.push_back(SM_vertex(static_cast<SM::size_type>(i)));
+      std::string c = cones_file.substr(cones_file.find_last_of('/') + 1);
+      if(c.rfind(name + ".", 0) == 0) c = c.substr(name.size() + 1);
+      if(c.size() > 4 && c.substr(c.size() - 4) == ".txt") c = c.substr(0, c.size() - 4);
+      name += "@" + c;
+    } else {
+      landmarks = HOT::select_landmarks(sm, k);
+    }
     bool eok = false;
     double te = -1;
     if(CGAL::is_closed(sm) && num_vertices(sm) <= euclid_max) {
@@ -239,7 +267,7 @@ int main(int argc, char** argv)
     }
     sm.remove_property_map(uv);
     const double tc = cholesky_floor_time(sm);
-    std::printf("%-18s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %3d/%3d/%2d %9.1e | %7.2f %9.3f %7.1f | %7.3f | %7.0f %s\n",
+    std::printf("%-24s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %3d/%3d/%2d %9.1e | %7.2f %9.3f %7.1f | %7.3f | %7.0f %s\n",
                 name.c_str(), static_cast<std::size_t>(num_vertices(sm)), landmarks.size(), eok ? te : -1.0,
                 st.time_setup, st.time_initialization, st.time_optimization, st.time_certificate, total, st.iterations,
                 st.cg_iterations, st.preconditioner_factorizations, st.relative_gradient_norm, (eok && te > 0) ? total / te : -1.0, tc, tc > 0 ? total / tc : -1.0, tmap, peak_rss_mb(),

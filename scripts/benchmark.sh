@@ -1,21 +1,43 @@
 #!/usr/bin/env bash
-# Builds (Release) and runs the benchmarks: CGAL's Euclidean orbifold Tutte vs our hyperbolic
-# embedding vs the Cholesky floor on Debian's libcgal-demo meshes, and on ../shared/data
-# meshes when that folder exists (they are read in place, never copied into the project).
+# Builds (Release) and runs the benchmarks (never run by ctest):
+#  1. bench_parameterizer: CGAL's Euclidean orbifold Tutte vs our hyperbolic embedding vs the
+#     Cholesky floor, on Debian's libcgal-demo meshes, on generated blobs of about 100K and
+#     400K vertices (and 1M with --large), with 7 and 50 landmarks; on ../shared/data meshes
+#     (the paper's cases) when that folder exists (read in place, never copied);
+#  2. bench_collection: 20 poses of bull.off (6.2K vertices) with 23 landmarks, all 380 maps;
+#  3. bench_tiles: the kernel.
+# Prints the machine first. Usage: scripts/benchmark.sh [--large] [--quick]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/scripts/install-deps.sh"
-"$root/scripts/build.sh" bench_parameterizer bench_tiles >/dev/null
+large=0; quick=0
+for a in "$@"; do
+  case "$a" in --large) large=1 ;; --quick) quick=1 ;; *) echo "usage: $0 [--large] [--quick]" >&2; exit 2 ;; esac
+done
+"$root/scripts/install-deps.sh" >/dev/null
+"$root/scripts/build.sh" bench_parameterizer bench_collection bench_tiles >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
+echo "== machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GB", $2/1048576}' /proc/meminfo), $(. /etc/os-release; echo "$PRETTY_NAME"), $(g++ --version | head -1)"
 meshes=()
 for m in hand homer triceratops camel bear diplodocus armadillo bunny00; do meshes+=("$build/data/meshes/$m.off"); done
 shared="$root/../shared/data/sphere"
+paper=()
 if [ -d "$shared" ]; then
-  for m in bunny_3k spot david_head igea_134k; do [ -f "$shared/$m.off" ] && meshes+=("$shared/$m.off"); done
+  for m in bunny_3k spot; do [ -f "$shared/$m.off" ] && paper+=("$shared/$m.off"); done
+  [ -f "$shared/david_head.paper_cones5.txt" ] && paper+=("$shared/david_head.off@$shared/david_head.paper_cones5.txt")
+  [ -f "$shared/david_head.off" ] && paper+=("$shared/david_head.off")
+  [ -f "$shared/igea_134k.off" ] && paper+=("$shared/igea_134k.off")
 fi
-echo "== 7 landmarks"
+generated=(generated:100000)
+[ $quick = 1 ] || generated+=(generated:400000)
+[ $large = 1 ] && generated+=(generated:1000000)
+cd "$build"
+echo "== 7 landmarks (libcgal-demo meshes, then generated blobs, then the paper's meshes)"
 "$build/bin/bench_parameterizer" --landmarks 7 "${meshes[@]}"
+"$build/bin/bench_parameterizer" --landmarks 7 --no-map "${generated[@]}" | tail -n +2
+[ ${#paper[@]} -eq 0 ] || "$build/bin/bench_parameterizer" --landmarks 7 "${paper[@]}" | tail -n +2
 echo "== 50 landmarks"
-"$build/bin/bench_parameterizer" --landmarks 50 "${meshes[@]:0:6}"
+"$build/bin/bench_parameterizer" --landmarks 50 "${meshes[@]:0:7}"
+echo "== collection (the paper's FAUST setting)"
+"$build/bin/bench_collection"
 echo "== kernel"
 "$build/bin/bench_tiles"
