@@ -12,6 +12,7 @@ PACKAGES=(
   libboost-dev
   libgmp-dev libmpfr-dev   # exact arithmetic behind the filtered predicates
   libtbb-dev         # parallel collections
+  libsuitesparse-dev # CHOLMOD: supernodal sparse Cholesky for the solver (optional at build time)
   doxygen            # the reference manual
   librsvg2-bin       # rsvg-convert: SVG -> PNG for looking at pictures
 )
