@@ -369,8 +369,8 @@ public:
 
   // The Hessian's sparsity pattern (every entry any edge can touch, symmetric, compressed
   // column storage) and, per edge, the positions of its local block's entries in it: the
-  // values are accumulated in place, no triplets, no sorting per iteration.
-  const Eigen::SparseMatrix<double>& hessian_pattern() const { return pattern_; }
+  // values are accumulated in place, no triplets, no sorting per iteration. The pattern is
+  // handed over to the first Hessian asked for (one copy in memory), copied for others.
 
   // returns +infinity for infeasible x (a point on or outside the unit circle)
   double energy(const std::vector<double>& x) const
@@ -435,8 +435,12 @@ public:
       }
     }
     if(H) {
-      if(H->nonZeros() != pattern_.nonZeros() || H->rows() != pattern_.rows())
-        *H = pattern_;
+      if(H->nonZeros() != pattern_nnz_ || H->rows() != P_.n_vars || H->cols() != P_.n_vars) {
+        if(pattern_given_) // rare (tests): build the pattern again
+          build_pattern();
+        *H = std::move(pattern_);
+        pattern_given_ = true;
+      }
       double* hv = H->valuePtr();
       std::fill(hv, hv + H->nonZeros(), 0.0);
       for(std::size_t k = 0; k < slots_.size(); ++k)
@@ -556,7 +560,7 @@ private:
     return n;
   }
 
-  void build_pattern()
+  void build_pattern() const
   {
     std::vector<Eigen::Triplet<double> > trip;
     trip.reserve(16 * P_.edges.size());
@@ -588,6 +592,7 @@ private:
         }
     }
     std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
+    pattern_nnz_ = pattern_.nonZeros();
   }
 
   static void project_psd(Eigen::Matrix4d& M, int n)
@@ -623,8 +628,10 @@ private:
 
   const Flat_problem& P_;
   mutable std::vector<double> g_abs_;
-  Eigen::SparseMatrix<double> pattern_;
-  std::vector<int> slot_begin_, slots_;
+  mutable Eigen::SparseMatrix<double> pattern_;
+  mutable Eigen::Index pattern_nnz_ = 0;
+  mutable bool pattern_given_ = false;
+  mutable std::vector<int> slot_begin_, slots_;
   mutable std::vector<double> edge_energy_, edge_gradient_, edge_hessian_;
 };
 
