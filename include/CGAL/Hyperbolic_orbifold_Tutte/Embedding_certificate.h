@@ -32,7 +32,7 @@ struct Embedding_certificate
   std::size_t points_outside_disk = 0;  ///< output points not strictly inside the unit disk (or not finite)
   std::size_t flipped_faces = 0;        ///< faces with negative orientation (exact)
   std::size_t degenerate_faces = 0;     ///< faces with three points on one geodesic (exact)
-  std::size_t angle_sum_failures = 0;   ///< mesh vertices whose angle sum is off by more than the tolerance
+  std::size_t angle_sum_failures = 0;   ///< mesh vertices whose angle sum is off by more than 0.5 radian (a wrong sum is off by a multiple of 2 pi)
   std::size_t twin_failures = 0;        ///< seam copies not related by their side pairing
   std::size_t cone_failures = 0;        ///< cone copies away from their tile corner
   std::size_t border_failures = 0;      ///< disk-boundary vertices off their tile side
