@@ -9,6 +9,7 @@
 //     --seeds 1-8              seeds: a list (1,4,9) or a range (1-8)
 //     --max-vertices 60000     skip bigger meshes (0: no limit)
 //     --time-budget SECONDS    stop starting runs once they would not fit (0: no limit)
+//     --weights cotan          cotan, mvc or uniform (the embedding's weight_type)
 //     --classify               only print, per mesh, "CLASS <mesh> <type> <vertices>" or
 //                              "SKIP <mesh>: <reason>"
 //
@@ -224,10 +225,11 @@ int main(int argc, char** argv)
   std::size_t max_vertices = 60000;
   double budget = 0;
   bool only_classify = false;
+  HOT::Weight_type weights = HOT::Cotangent;
   std::vector<std::string> files;
   auto usage = [] {
     std::cerr << "usage: stress_landmarks [--ks 5,7,10] [--seeds 1-8] [--max-vertices N] [--time-budget S] "
-                 "[--classify] mesh [mesh ...]"
+                 "[--weights cotan|mvc|uniform] [--classify] mesh [mesh ...]"
               << std::endl;
     return 2;
   };
@@ -242,6 +244,12 @@ int main(int argc, char** argv)
       max_vertices = std::strtoul(argv[++i], nullptr, 10);
     } else if(a == "--time-budget" && has_value) {
       budget = std::strtod(argv[++i], nullptr);
+    } else if(a == "--weights" && has_value) {
+      const std::string w = argv[++i];
+      if(w == "cotan") weights = HOT::Cotangent;
+      else if(w == "mvc") weights = HOT::Mean_value;
+      else if(w == "uniform") weights = HOT::Uniform;
+      else return usage();
     } else if(a == "--classify") {
       only_classify = true;
     } else if(!a.empty() && a[0] == '-') {
@@ -327,7 +335,7 @@ int main(int argc, char** argv)
           ec = HOT::hyperbolic_orbifold_Tutte_embedding(
             sm, landmarks, uv,
             HOT::parameters::landmark_order(mc.type == HOT::Sphere_type ? HOT::Tsp_order : HOT::Given_order,
-                                            HOT::parameters::embedding_statistics(&st)));
+                                            HOT::parameters::embedding_statistics(&st, HOT::parameters::weight_type(weights))));
         } catch(const std::exception& e) {
           exception_text = e.what();
         } catch(...) {
@@ -362,6 +370,7 @@ int main(int argc, char** argv)
           line.unsetf(std::ios::fixed);
           line << " rel_gradient=" << st.relative_gradient_norm << " adjacent_landmark_pairs=" << adjacent
                << " message=\"" << (exception_text.empty() ? st.message : exception_text) << "\"";
+          line.precision(6);
           if(st.certificate.number_of_faces > 0) line << " certificate=\"" << st.certificate << "\"";
           if(!st.problem_vertices.empty()) {
             line << " problem_vertices=";
