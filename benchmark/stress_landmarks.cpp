@@ -371,7 +371,8 @@ int main(int argc, char** argv)
           line << " rel_gradient=" << st.relative_gradient_norm << " adjacent_landmark_pairs=" << adjacent
                << " message=\"" << (exception_text.empty() ? st.message : exception_text) << "\"";
           line.precision(6);
-          if(st.certificate.number_of_faces > 0) line << " certificate=\"" << st.certificate << "\"";
+          if(st.certificate.number_of_faces > 0 && ec != HOT::ERROR_NO_1_TO_1_MAPPING) // else in the message
+            line << " certificate=\"" << st.certificate << "\"";
           if(!st.problem_vertices.empty()) {
             line << " problem_vertices=";
             for(std::size_t i = 0; i < st.problem_vertices.size(); ++i)
