@@ -9,13 +9,9 @@
 // the landmarks are the same vertices on every pose. Prints timings, peak memory and the
 // worst cycle-consistency error over sampled triples; asserts nothing (see test/).
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include "bench_common.h"
 
-#include <CGAL/hyperbolic_orbifold_Tutte.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -25,19 +21,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> SM;
-typedef std::chrono::steady_clock Clock;
-
-static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-static double peak_rss_mb()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
 
 // pose i: a bend about a random axis whose angle grows along the mesh, a twist, and a
 // low-frequency wobble; smooth and orientation preserving, so the surfaces stay embedded

@@ -10,13 +10,12 @@
 // mesh.off@cones.txt uses the landmarks listed in cones.txt instead of K farthest points.
 // Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include "bench_common.h"
+
 #include <CGAL/boost/graph/Seam_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/orbifold_shortest_path.h>
 
-#include <CGAL/hyperbolic_orbifold_Tutte.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/generators.h>
 
@@ -24,8 +23,6 @@
 #ifdef CGAL_HOT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
-
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -38,22 +35,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 namespace SMP = CGAL::Surface_mesh_parameterization;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> SM;
-typedef boost::graph_traits<SM>::vertex_descriptor SM_vertex;
-typedef boost::graph_traits<SM>::edge_descriptor SM_edge;
-typedef boost::graph_traits<SM>::halfedge_descriptor SM_halfedge;
-typedef std::chrono::steady_clock Clock;
-
-static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-static double peak_rss_mb()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
 
 // CGAL's Euclidean orbifold Tutte embedding with 4 cones (its own seam and cone setup)
 static double euclidean_orbifold_time(SM& sm, const std::vector<SM_vertex>& cones4, bool& ok)

@@ -34,10 +34,8 @@
 // exception). REFUSED and FAILED lines carry the message, the certificate's counts and
 // the landmarks. Then a table per mesh and one "SUMMARY" line per mesh.
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include "bench_common.h"
 
-#include <CGAL/hyperbolic_orbifold_Tutte.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
 
 #include <algorithm>
@@ -53,14 +51,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> SM;
-typedef boost::graph_traits<SM>::vertex_descriptor SM_vertex;
-typedef boost::graph_traits<SM>::halfedge_descriptor SM_halfedge;
-typedef boost::graph_traits<SM>::face_descriptor SM_face;
-typedef std::chrono::steady_clock Clock;
 
 static const char* error_code_name(HOT::Error_code ec)
 {
@@ -261,7 +251,7 @@ int main(int argc, char** argv)
   if(files.empty()) return usage();
 
   const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  auto elapsed = [&] { return seconds_since(start); };
 
   for(const std::string& path : files) {
     const std::string name = base_name(path);
@@ -341,7 +331,7 @@ int main(int argc, char** argv)
         } catch(...) {
           exception_text = "unknown exception";
         }
-        run.seconds = std::chrono::duration<double>(Clock::now() - t).count();
+        run.seconds = seconds_since(t);
         run.iterations = st.iterations;
         last_time = last_time_for_k[k] = run.seconds;
 

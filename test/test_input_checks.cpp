@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <set>
 #include <string>
@@ -99,6 +100,27 @@ bool one_line(const HI::Check_result& r) { return r.message.find('\n') == std::s
 HI::Check_result read_text(const std::string& name, const std::string& content, SM& sm)
 {
   return HI::read_mesh(write_file(name, content), sm);
+}
+
+// a file that must not be read: its name, what follows the common head, and a fragment of
+// the message
+struct Unreadable_file
+{
+  const char* name;
+  const char* tail;
+  const char* fragment;
+};
+
+// for each file in order: CHECK_RESULT(read_text(name, head + tail, sm), ERROR_READ_FAILED,
+// fragment); the name of the file follows any failure (the CHECK lines point here)
+void check_unreadable(SM& sm, const std::string& head, std::initializer_list<Unreadable_file> files)
+{
+  for(const Unreadable_file& f : files) {
+    const int before = hot_test::failures();
+    CHECK_RESULT(read_text(f.name, head + f.tail, sm), HOT::ERROR_READ_FAILED, f.fragment);
+    if(hot_test::failures() != before)
+      std::cerr << "  (in the case of " << f.name << ")" << std::endl;
+  }
 }
 
 // the result of read_mesh() then, if it succeeded, check_mesh()
@@ -619,23 +641,17 @@ TEST_CASE(off_bad_faces)
 {
   SM sm;
   const std::string head = std::string("OFF\n4 4 0\n") + tetra_vertices;
-  CHECK_RESULT(read_text("range.off", head + "3 0 2 1\n3 0 1 7\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED,
-               "line 8: face 1: vertex index '7' is out of range (the file has 4 vertices)");
-  CHECK_RESULT(read_text("range2.off", head + "3 0 2 1\n3 0 1 4\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED, "out of range");
-  CHECK_RESULT(read_text("neg.off", head + "3 0 2 1\n3 0 -1 3\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED,
-               "line 8: face 1: negative vertex index '-1'");
-  CHECK_RESULT(read_text("hugeidx.off", head + "3 0 2 1\n3 0 1 99999999999999999999999\n3 0 3 2\n3 1 2 3\n", sm),
-               HOT::ERROR_READ_FAILED, "out of range");
-  CHECK_RESULT(read_text("garbidx.off", head + "3 0 2 1\n3 0 1 x\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED,
-               "line 8: face 1: 'x' is not a vertex index");
-  CHECK_RESULT(read_text("floatidx.off", head + "3 0 2 1\n3 0 1.5 3\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED,
-               "'1.5' is not a vertex index");
-  CHECK_RESULT(read_text("short.off", head + "3 0 2 1\n5 0 1 3\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED,
-               "line 8: face 1 announces 5 vertices but lists only 3");
-  CHECK_RESULT(read_text("hugen.off", head + "3 0 2 1\n4000000000 0 1 3\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED,
-               "announces 4000000000 vertices");
-  CHECK_RESULT(read_text("negn.off", head + "3 0 2 1\n-3 0 1 3\n3 0 3 2\n3 1 2 3\n", sm), HOT::ERROR_READ_FAILED,
-               "the vertex count '-3' is not a non-negative integer");
+  check_unreadable(sm, head, {
+    { "range.off", "3 0 2 1\n3 0 1 7\n3 0 3 2\n3 1 2 3\n", "line 8: face 1: vertex index '7' is out of range (the file has 4 vertices)" },
+    { "range2.off", "3 0 2 1\n3 0 1 4\n3 0 3 2\n3 1 2 3\n", "out of range" },
+    { "neg.off", "3 0 2 1\n3 0 -1 3\n3 0 3 2\n3 1 2 3\n", "line 8: face 1: negative vertex index '-1'" },
+    { "hugeidx.off", "3 0 2 1\n3 0 1 99999999999999999999999\n3 0 3 2\n3 1 2 3\n", "out of range" },
+    { "garbidx.off", "3 0 2 1\n3 0 1 x\n3 0 3 2\n3 1 2 3\n", "line 8: face 1: 'x' is not a vertex index" },
+    { "floatidx.off", "3 0 2 1\n3 0 1.5 3\n3 0 3 2\n3 1 2 3\n", "'1.5' is not a vertex index" },
+    { "short.off", "3 0 2 1\n5 0 1 3\n3 0 3 2\n3 1 2 3\n", "line 8: face 1 announces 5 vertices but lists only 3" },
+    { "hugen.off", "3 0 2 1\n4000000000 0 1 3\n3 0 3 2\n3 1 2 3\n", "announces 4000000000 vertices" },
+    { "negn.off", "3 0 2 1\n-3 0 1 3\n3 0 3 2\n3 1 2 3\n", "the vertex count '-3' is not a non-negative integer" },
+  });
 }
 
 TEST_CASE(off_bad_headers)
@@ -1189,21 +1205,18 @@ TEST_CASE(gocad_parser)
   mesh_to_soup(sm, pts, fcs);
   CHECK((fcs == std::vector<std::vector<std::size_t> >{ { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } }));
   // errors, each with its reason and line
-  CHECK_RESULT(read_text("noend.ts", head + "VRTX 1 0 0 0\n", sm), HOT::ERROR_READ_FAILED, "the file ends without END (truncated file?)");
-  CHECK_RESULT(read_text("twice.ts", head + "VRTX 1 0 0 0\nVRTX 1 1 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED,
-               "line 7: vertex id 1 is defined twice");
-  CHECK_RESULT(read_text("undef.ts", head + "VRTX 1 0 0 0\nTRGL 1 2 3\nEND\n", sm), HOT::ERROR_READ_FAILED,
-               "line 7: triangle 0: vertex id 2 is not defined");
-  CHECK_RESULT(read_text("atom.ts", head + "ATOM 2 1\nEND\n", sm), HOT::ERROR_READ_FAILED,
-               "line 6: ATOM 2 refers to vertex id 1, which is not defined before it");
-  CHECK_RESULT(read_text("bigid.ts", head + "VRTX 99999999999999999999 0 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED,
-               "line 6: vertex id '99999999999999999999' is too large");
-  CHECK_RESULT(read_text("badid.ts", head + "VRTX one 0 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED, "line 6: 'one' is not a vertex id");
-  CHECK_RESULT(read_text("short.ts", head + "VRTX 1 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED,
-               "line 6: vertex 0: 'VRTX id x y z' expected, 3 fields found");
-  CHECK_RESULT(read_text("coord.ts", head + "VRTX 1 0 zero 0\nEND\n", sm), HOT::ERROR_READ_FAILED, "coordinate 'zero' is not a number");
-  CHECK_RESULT(read_text("trgl.ts", head + "TRGL 1 2\nEND\n", sm), HOT::ERROR_READ_FAILED, "line 6: triangle 0: 'TRGL a b c' expected");
-  CHECK_RESULT(read_text("kw.ts", head + "FROB 1\nEND\n", sm), HOT::ERROR_READ_FAILED, "line 6: unknown GOCAD TSurf keyword 'FROB'");
+  check_unreadable(sm, head, {
+    { "noend.ts", "VRTX 1 0 0 0\n", "the file ends without END (truncated file?)" },
+    { "twice.ts", "VRTX 1 0 0 0\nVRTX 1 1 0 0\nEND\n", "line 7: vertex id 1 is defined twice" },
+    { "undef.ts", "VRTX 1 0 0 0\nTRGL 1 2 3\nEND\n", "line 7: triangle 0: vertex id 2 is not defined" },
+    { "atom.ts", "ATOM 2 1\nEND\n", "line 6: ATOM 2 refers to vertex id 1, which is not defined before it" },
+    { "bigid.ts", "VRTX 99999999999999999999 0 0 0\nEND\n", "line 6: vertex id '99999999999999999999' is too large" },
+    { "badid.ts", "VRTX one 0 0 0\nEND\n", "line 6: 'one' is not a vertex id" },
+    { "short.ts", "VRTX 1 0 0\nEND\n", "line 6: vertex 0: 'VRTX id x y z' expected, 3 fields found" },
+    { "coord.ts", "VRTX 1 0 zero 0\nEND\n", "coordinate 'zero' is not a number" },
+    { "trgl.ts", "TRGL 1 2\nEND\n", "line 6: triangle 0: 'TRGL a b c' expected" },
+    { "kw.ts", "FROB 1\nEND\n", "line 6: unknown GOCAD TSurf keyword 'FROB'" },
+  });
   CHECK_RESULT(read_text("nan.ts", head + "VRTX 1 0 0 0\nVRTX 2 nan 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n", sm),
                HOT::ERROR_NON_FINITE_COORDINATES, "vertex 1 (line 7) has a non-finite coordinate");
   CHECK_RESULT(read_text("notface.ts", "GOCAD PLine 1\nVRTX 1 0 0 0\nEND\n", sm), HOT::ERROR_READ_FAILED, "no TFACE line");

@@ -295,6 +295,20 @@ inline void split(std::string_view s, std::vector<std::string_view>& fields)
   }
 }
 
+/// moves `cur` past the next line that holds a field, `split()` into `fields` (without a
+/// '#' comment if `comments`), and sets `line` to its number; false (`cur` at its end) if
+/// no such line is left. The line reader of the keyword formats (OBJ, the PLY header, GOCAD).
+inline bool next_fields(Cursor& cur, bool comments, std::vector<std::string_view>& fields, std::size_t& line)
+{
+  while(!cur.at_end()) {
+    line = cur.line();
+    split(cur.rest_of_line(comments), fields);
+    if(!fields.empty())
+      return true;
+  }
+  return false;
+}
+
 enum Number_status { NUMBER_OK, NOT_A_NUMBER, NEGATIVE_NUMBER, NUMBER_TOO_LARGE };
 
 /// parses `[+]digits` completely; "-digits" gives NEGATIVE_NUMBER
@@ -613,11 +627,7 @@ inline Check_result parse_obj(const std::string& data, Polygon_soup& soup)
 {
   Cursor cur(data.data(), data.data() + data.size());
   std::vector<std::string_view> fields;
-  while(!cur.at_end()) {
-    const std::size_t line = cur.line();
-    split(cur.rest_of_line(true), fields);
-    if(fields.empty())
-      continue;
+  for(std::size_t line = 0; next_fields(cur, true, fields, line);) {
     const std::string_view kw = fields[0];
     if(kw == "v") {
       if(fields.size() < 4)
@@ -825,11 +835,7 @@ inline Check_result parse_ply(const std::string& data, Polygon_soup& soup)
   int format = -1;
   std::vector<Ply_element> elements;
   bool end_header = false;
-  while(!cur.at_end()) {
-    const std::size_t line = cur.line();
-    split(cur.rest_of_line(false), fields);
-    if(fields.empty())
-      continue;
+  for(std::size_t line = 0; next_fields(cur, false, fields, line);) {
     const std::string_view kw = fields[0];
     if(kw == "end_header") {
       end_header = true;
@@ -1153,11 +1159,7 @@ inline Check_result parse_gocad(const std::string& data, Polygon_soup& soup)
     default: return read_fail(at_line(line) + quote(t) + " is not a vertex id (an integer)");
     }
   };
-  while(!cur.at_end()) {
-    const std::size_t line = cur.line();
-    split(cur.rest_of_line(false), fields);
-    if(fields.empty())
-      continue;
+  for(std::size_t line = 0; next_fields(cur, false, fields, line);) {
     const std::string_view kw = fields[0];
     Check_result r;
     if(kw == "VRTX" || kw == "PVRTX") {

@@ -1,0 +1,39 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the benchmark programs share: the kernel and mesh types, a steady clock, and
+// the wall time and peak memory they print.
+
+#ifndef HOT_BENCH_COMMON_H
+#define HOT_BENCH_COMMON_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/hyperbolic_orbifold_Tutte.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> SM;
+typedef boost::graph_traits<SM>::vertex_descriptor SM_vertex;
+typedef boost::graph_traits<SM>::edge_descriptor SM_edge;
+typedef boost::graph_traits<SM>::halfedge_descriptor SM_halfedge;
+typedef boost::graph_traits<SM>::face_descriptor SM_face;
+typedef std::chrono::steady_clock Clock;
+
+/// wall time since `t`, in seconds
+inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// the process's peak resident memory so far, in MiB
+inline double peak_rss_mb()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;
+}
+
+#endif // HOT_BENCH_COMMON_H
