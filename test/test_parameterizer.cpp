@@ -209,7 +209,7 @@ static void check_sphere_mesh(const std::string& name, const std::vector<int>& k
       // defect in units of (1e-8 + 1000 x what doubles resolve at that vertex)
       CHECK_MSG(defect < 1, name << " k=" << k << " centre-of-mass defect " << defect);
     }
-    std::cout << "  " << name << " k=" << k << ": " << r.st.iterations << " iterations, relative gradient "
+    std::cout << "  " << name << " k=" << k << ": " << r.st.iterations << " iterations (+" << r.st.polishing_iterations << " polishing), relative gradient "
               << r.st.relative_gradient_norm << ", " << r.st.time_optimization << " s" << std::endl;
     UV_map uvm = m.property_map<halfedge_descriptor, Point_2>("h:uv").first;
     m.remove_property_map(uvm);
@@ -785,7 +785,7 @@ static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std:
 {
   HOT::internal::Solver_options fast, direct;
   direct.direct_solver = true;
-  fast.verbose = getenv("HOT_VERBOSE") != nullptr;
+  fast.verbose = direct.verbose = getenv("HOT_VERBOSE") != nullptr;
   std::vector<double> xf = x0, xd = x0;
   HOT::internal::Solver_statistics sf, sd;
   CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf, interior) == HOT::OK, what << ": preconditioned solver");
@@ -819,6 +819,137 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
   Disk_problem D;
   CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
   check_solvers_agree(D.P, D.x, "mushroom (disk)");
+}
+
+// The Riemannian Hessian is the second derivative of the energy along geodesics: move every
+// free vertex along the geodesic of a random initial velocity v (exponential map of the
+// Poincare disk), then d2E/dt2 at t = 0 is v^T H v. The coordinate Hessian differs from it
+// by the Christoffel terms away from the solution (checked too, so the test can tell them
+// apart), and the Riemannian one is positive on every direction tried (geodesic convexity).
+TEST_CASE(riemannian_hessian_is_the_second_derivative_along_geodesics)
+{
+  Sphere_problem S;
+  CHECK(make_sphere_problem("hand", 7, S));
+  const HOT::internal::Flat_problem& P = S.P;
+  std::vector<double> x = S.x; // the initialisation: far from the solution, large gradient
+  HOT::internal::Energy_evaluator ev(P);
+  std::vector<double> g;
+  Eigen::SparseMatrix<double> H;
+  ev.evaluate(x, g, &H, false);
+  Eigen::SparseMatrix<double> HR = H;
+  HOT::internal::subtract_christoffel_terms(P, x, g, HR);
+  auto moved = [&](const std::vector<double>& v, double t) {
+    std::vector<double> y = x;
+    for(int u = 0; u < P.n; ++u) {
+      if(P.kind[u] != HOT::internal::Free) continue;
+      const int i = P.var[u];
+      const C z(x[i], x[i + 1]), w(t * v[i], t * v[i + 1]);
+      const double len = abs(w);
+      if(!(len > 0)) continue;
+      const double L = 2 * len / (1 - norm(z)); // hyperbolic length of the step
+      const C e = w * (std::tanh(L / 2) / len);
+      const C q = (e + z) / (C(1.0) + conj(z) * e); // exp_z(w): the Mobius map taking 0 to z
+      y[i] = q.re;
+      y[i + 1] = q.im;
+    }
+    return y;
+  };
+  double worst_coordinate_gap = 0, worst_riemannian_gap = 0;
+  for(int trial = 0; trial < 6; ++trial) {
+    std::vector<double> v(P.n_vars, 0.0);
+    for(int u = 0; u < P.n; ++u)
+      if(P.kind[u] == HOT::internal::Free) {
+        const int i = P.var[u];
+        const double r = (1 - (x[i] * x[i] + x[i + 1] * x[i + 1])) / 2; // unit hyperbolic speed scale
+        v[i] = r * rng.get_double(-1, 1);
+        v[i + 1] = r * rng.get_double(-1, 1);
+      }
+    Eigen::Map<const Eigen::VectorXd> vv(v.data(), P.n_vars);
+    const double riem = vv.dot(HR * vv), coord = vv.dot(H * vv);
+    const double h = 1e-4;
+    const double fd = (ev.energy(moved(v, h)) - 2 * ev.energy(x) + ev.energy(moved(v, -h))) / (h * h);
+    CHECK_MSG(std::abs(fd - riem) <= 1e-4 * std::abs(fd), "along a geodesic: d2E/dt2 " << fd << " vs v^T H_R v " << riem);
+    CHECK(riem > 0);
+    worst_coordinate_gap = std::max(worst_coordinate_gap, std::abs(fd - coord) / std::abs(fd));
+    worst_riemannian_gap = std::max(worst_riemannian_gap, std::abs(fd - riem) / std::abs(fd));
+  }
+  std::cout << "  largest relative gap to d2E/dt2 along geodesics: Riemannian Hessian " << worst_riemannian_gap
+            << ", coordinate Hessian " << worst_coordinate_gap << std::endl;
+  CHECK(worst_coordinate_gap > 10 * worst_riemannian_gap);
+}
+
+// libcgal-demo's triceratops has needle triangles whose cotangent weights reach 1.4e5 (1e-6
+// on the other side): with straight Newton steps and the coordinate Hessian, these 50
+// landmarks (a stress run's) took 200 steps cut to 1/128 and stopped unconverged.
+TEST_CASE(sphere_triceratops_stiff_cotangent_weights)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("triceratops", m));
+  std::vector<vertex_descriptor> lm;
+  for(int i : {2324,1940,204,1606,2424,1175,1364,883,909,2306,2522,1130,1317,2077,2109,1098,1689,35,2276,1596,1048,995,1328,1411,745,1101,428,1109,219,2601,251,1034,510,925,2792,1619,668,1924,2173,2058,1764,641,1941,1166,1855,261,933,2669,1541,735}) lm.push_back(vertex_descriptor(i));
+  const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
+  CHECK_MSG(r.ec == HOT::OK, r.st.message);
+  CHECK(r.st.converged && r.st.certificate.is_bijective());
+  std::cout << "  triceratops k=50: " << r.st.iterations << " steps, imbalance " << r.st.relative_gradient_norm
+            << ", rounding floor " << r.st.rounding_floor << (r.st.converged_at_rounding_floor ? " (stopped at the floor)" : "") << std::endl;
+}
+
+// The rounding floor estimate against an experiment: at a converged embedding, rounding every
+// coordinate by one or two units in the last place changes the forces' imbalance by the
+// amount the estimate claims to bound (and not by orders of magnitude less: a useless bound
+// would let a stagnating solver stop anywhere).
+TEST_CASE(rounding_floor_bounds_the_effect_of_rounding_the_coordinates)
+{
+  for(const auto& c : std::vector<std::pair<std::string, int> >{{"triceratops", 50}, {"bear", 7}}) {
+    Sphere_problem S;
+    CHECK(make_sphere_problem(c.first, c.second, S));
+    HOT::internal::Solver_options opt;
+    HOT::internal::Solver_statistics st;
+    std::vector<double> x = S.x;
+    CHECK(HOT::internal::minimize_energy(S.P, x, opt, st, &S.interior) == HOT::OK);
+    HOT::internal::Energy_evaluator ev(S.P);
+    const double floor = ev.rounding_floor(x);
+    std::vector<double> g0, g1;
+    ev.evaluate(x, g0, nullptr);
+    const double denominator = ev.hyperbolic_gradient_norm(x, g0, true) > 0
+                                 ? ev.hyperbolic_gradient_norm(x, g0) / ev.hyperbolic_gradient_norm(x, g0, true) : 1.0;
+    double largest = 0;
+    for(int trial = 0; trial < 5; ++trial) {
+      std::vector<double> y = x;
+      for(double& yi : y)
+        for(int k = rng.get_int(-2, 3); k != 0; k += (k > 0 ? -1 : 1))
+          yi = std::nextafter(yi, k > 0 ? 2.0 : -2.0);
+      ev.evaluate(y, g1, nullptr);
+      std::vector<double> dg(g0.size());
+      for(std::size_t i = 0; i < dg.size(); ++i) dg[i] = g1[i] - g0[i];
+      largest = std::max(largest, ev.hyperbolic_gradient_norm(x, dg) / denominator);
+    }
+    std::cout << "  " << c.first << " k=" << c.second << ": imbalance from rounding " << largest << ", estimated floor " << floor
+              << ", solver stopped at " << st.relative_gradient << (st.at_rounding_floor ? " (at the floor)" : "") << std::endl;
+    CHECK_MSG(largest <= floor, c.first << ": rounding changes the imbalance by " << largest << " > the floor " << floor);
+    CHECK_MSG(largest >= 1e-3 * floor, c.first << ": the floor " << floor << " is a useless bound (" << largest << ")");
+  }
+}
+
+// A converged embedding with a region squeezed to 1e-12 (cow, no landmark on it) whose
+// forces the global stopping test cannot see at tolerance 1e-6 (there, before per-vertex
+// balance was checked, the certificate found a flipped face): the solver polishes to the
+// floor, and the result is certified.
+TEST_CASE(polishing_a_region_too_small_for_the_stopping_test)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("cow", m));
+  std::vector<vertex_descriptor> lm;
+  for(int i : {2868, 2743, 1724, 1308, 1350}) lm.push_back(vertex_descriptor(i));
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+  HOT::Embedding_statistics st;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    m, lm, uv, HOT::parameters::embedding_statistics(&st, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::gradient_tolerance(1e-6))));
+  CHECK_MSG(ec == HOT::OK, st.message);
+  CHECK(st.certificate.is_bijective());
+  CHECK(st.polishing_iterations > 0);
+  std::cout << "  cow tolerance 1e-6: " << st.polishing_iterations << " polishing steps, imbalance " << st.relative_gradient_norm
+            << ", repaired " << st.repaired_vertices << std::endl;
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -42,8 +42,25 @@ struct Embedding_statistics
   double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
   double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
   double relative_gradient_norm = 0;  ///< the same, relative to the norm of the sums of the absolute values of the edges' contributions (the forces' imbalance; its floor is the rounding error)
-  /// `true` when the solver reached the gradient tolerance
+  /// the force imbalance that rounding the coordinates to `double` alone would cause (an
+  /// estimate from each edge's length and how many digits its ends' coordinates give it):
+  /// about \f$10^{-15}\f$ on ordinary meshes, far more where cotangent weights are huge
+  /// (needle triangles) or vertices crowd towards the circle
+  double rounding_floor = 0;
+  /// `true` when the tolerance was out of reach of `double` and the solver stopped at the
+  /// floor instead: Newton's steps no longer reduced the imbalance and it is within
+  /// \f$10\times\f$ `rounding_floor` (the coordinates are then as accurate as `double` allows)
+  bool converged_at_rounding_floor = false;
+  /// `true` when the solver reached the gradient tolerance, or the rounding floor above it
   bool converged = false;
+  /// Newton steps taken after the force imbalance reached the tolerance, because some vertex's
+  /// own forces were still out of balance by more than \f$10^{-8}\f$ of their sizes (beyond
+  /// what rounding explains), or because the certificate found a flipped face: the force
+  /// imbalance is a global measure, blind to a region squeezed so small (a protrusion
+  /// without landmarks, \f$10^{-12}\f$ across) that its forces are below the tolerance
+  /// times the largest ones; such a region is solved to the precision of `double` (steps
+  /// until rounding stops them), before the one-ring repair is tried
+  int polishing_iterations = 0;
   int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
   bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
   std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
@@ -234,6 +251,9 @@ public:
     st.gradient_norm = ss.gradient;
     st.relative_gradient_norm = ss.relative_gradient;
     st.converged = ss.converged;
+    st.polishing_iterations = ss.polishing_iterations;
+    st.rounding_floor = ss.rounding_floor;
+    st.converged_at_rounding_floor = ss.at_rounding_floor;
     st.time_assembly = ss.time_assemble;
     st.time_factorization = ss.time_factor;
     st.time_line_search = ss.time_line_search;
@@ -245,8 +265,31 @@ public:
 
     auto t3 = Clock::now();
     st.certificate = internal::certify_flat(P, tile, uv);
-    if(!st.certificate.is_bijective() && st.certificate.points_outside_disk == 0 &&
-       (st.certificate.flipped_faces > 0 || st.certificate.degenerate_faces > 0)) {
+    auto flipped_only = [&]() {
+      return !st.certificate.is_bijective() && st.certificate.points_outside_disk == 0 &&
+             (st.certificate.flipped_faces > 0 || st.certificate.degenerate_faces > 0);
+    };
+    if(ec == OK && flipped_only()) {
+      // a region too small for the global stopping test to see: Newton to the floor of double
+      auto t4 = Clock::now();
+      internal::Solver_options polish = options_;
+      polish.polish = true;
+      polish.vertex_imbalance = 0; // every vertex balanced did not suffice: to the floor of double
+      internal::Solver_statistics ps;
+      internal::minimize_energy(P, x, polish, ps, &interior); // only accepted (descent) steps change x
+      st.polishing_iterations += ps.iterations;
+      st.cg_iterations += ps.cg_iterations;
+      st.energy = ps.energy;
+      st.gradient_norm = ps.gradient;
+      st.relative_gradient_norm = ps.relative_gradient;
+      const double dt = std::chrono::duration<double>(Clock::now() - t4).count();
+      st.time_optimization += dt;
+      t3 += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(dt));
+      for(int v = 0; v < P.n; ++v)
+        uv[v] = internal::position(P, x, v);
+      st.certificate = internal::certify_flat(P, tile, uv);
+    }
+    if(flipped_only()) {
       // the paper's one-ring repair for vertices left outside the hull of their neighbours
       st.repaired_vertices = internal::repair_one_rings(P, x);
       for(int v = 0; v < P.n; ++v)
@@ -257,7 +300,7 @@ public:
     if(ec != OK) {
       std::ostringstream os;
       os << "the solver stopped at relative gradient norm " << ss.relative_gradient << " after " << ss.iterations
-         << " iterations (tolerance " << options_.gradient_tolerance << ")";
+         << " iterations (tolerance " << options_.gradient_tolerance << ", rounding floor " << ss.rounding_floor << ")";
       return fail(ec, os.str());
     }
     if(!st.certificate.is_bijective()) {

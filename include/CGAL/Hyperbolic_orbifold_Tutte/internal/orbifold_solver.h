@@ -345,8 +345,15 @@ struct Solver_options
   int refactor_cg_iterations = 25;   // refactor the preconditioner after a Newton step that needed more
   double newton_threshold = 1e-2;    // relative gradient norm below which Newton takes over
   int max_model_refactorizations = 8; // preconditioner refactorisations during the gradient steps
-  bool geodesic_steps = true;        // far from the solution, move free vertices along geodesics
+  bool geodesic_steps = true;        // move free vertices along geodesics (exponential map)
   bool direct_solver = false;        // factor every Newton system instead of conjugate gradients
+  // Newton steps from the start, until rounding stops them (the tolerance is ignored): for a
+  // converged embedding whose small regions need the last digits (see the parameterizer)
+  bool polish = false;
+  bool riemannian_hessian = true;    // Newton with the Riemannian Hessian (see minimize_energy)
+  // converged also means: no vertex's own forces are out of balance by more than this
+  // fraction of their sizes, unless rounding explains it (else Newton goes on to the floor)
+  double vertex_imbalance = 1e-8;
   bool verbose = false;
 };
 
@@ -357,6 +364,9 @@ struct Solver_statistics
   double initial_gradient = 0, gradient = 0, relative_gradient = 0;
   double time_assemble = 0, time_factor = 0, time_line_search = 0;
   int cg_iterations = 0, cg_failures = 0, preconditioner_factorizations = 0;
+  double rounding_floor = 0;   // Energy_evaluator::rounding_floor() at the result
+  int polishing_iterations = 0; // Newton steps to balance every vertex (after convergence)
+  bool at_rounding_floor = false; // stopped by rounding (stagnation) within 10x that floor
   bool converged = false;
 };
 
@@ -475,6 +485,68 @@ public:
     if(!relative)
       return std::sqrt(s);
     return sa > 0 ? std::sqrt(s / sa) : 0.0;
+  }
+
+  // The force imbalance that rounding the coordinates to double alone causes, relative like
+  // hyperbolic_gradient_norm(x, g, true), at x (evaluates the gradient there). An edge's length
+  // d is known to about u (|a|/r_a + |b|/r_b) (u the unit roundoff, r = (1 - |z|^2)/2 the
+  // scale of the metric; seam copies and border parameters add a few roundings: factor 8),
+  // so each of its forces to a relative d_err / d. Stiff edges (cotangent weights of 1e5
+  // on needle triangles) or vertices near the circle raise this floor well above 1e-16.
+  double rounding_floor(const std::vector<double>& x) const
+  {
+    std::vector<double> noise;
+    rounding_noise(x, noise);
+    const double num = hyperbolic_gradient_norm(x, noise); // in the same (hyperbolic) norm
+    const double den = hyperbolic_gradient_norm(x, g_abs_);
+    return den > 0 ? num / den : 0.0;
+  }
+
+  // Vertices whose own forces are out of balance by more than `relative` of their sizes and
+  // by more than ten times what rounding explains there, for the gradient g at x. The global
+  // imbalance cannot see a region squeezed to 1e-12 (a protrusion without landmarks): its
+  // forces are that small; such a region is solved only when this count is zero.
+  int unbalanced_vertices(const std::vector<double>& x, const std::vector<double>& g, double relative) const
+  {
+    std::vector<double> noise;
+    rounding_noise(x, noise); // (evaluates at x again: g_abs_ is x's)
+    int count = 0;
+    for(int v = 0; v < P_.n; ++v) {
+      double a = 0, b = 0, c = 0;
+      if(P_.kind[v] == Free) {
+        const int i = P_.var[v];
+        a = std::hypot(g[i], g[i + 1]);
+        b = std::hypot(g_abs_[i], g_abs_[i + 1]);
+        c = std::hypot(noise[i], noise[i + 1]);
+      } else if(P_.kind[v] == On_line) {
+        a = std::abs(g[P_.var[v]]);
+        b = g_abs_[P_.var[v]];
+        c = noise[P_.var[v]];
+      }
+      if(a > relative * b && a > 10 * c)
+        ++count;
+    }
+    return count;
+  }
+
+private:
+  // per variable, the size of the forces' change that rounding the coordinates may cause
+  void rounding_noise(const std::vector<double>& x, std::vector<double>& noise) const
+  {
+    const double u = std::numeric_limits<double>::epsilon() / 2;
+    evaluate(x, noise, nullptr); // the per-edge terms and forces at x
+    std::fill(noise.begin(), noise.end(), 0.0);
+    int gi[4];
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
+      const double ra = (1 - norm(a)) / 2, rb = (1 - norm(b)) / 2;
+      const double d = std::sqrt(2 * edge_energy_[e] / P_.edge_weight[e]);
+      const double err = 8 * u * (abs(a) / ra + abs(b) / rb);
+      const double rel = d > err ? err / d : 1.0;
+      const int n = local_variables(e, gi);
+      for(int i = 0; i < n; ++i)
+        noise[gi[i]] += std::abs(edge_gradient_[4 * e + i]) * rel;
+    }
   }
 
 private:
@@ -845,17 +917,44 @@ private:
   bool analyzed_ = false;
 };
 
+// The energy is geodesically convex, its Hessian in the disk's coordinates is not: this
+// subtracts the Christoffel terms of the metric (2/(1-|z|^2))^2 |dz|^2 at each free vertex,
+// Hess_ij = d_ij E - (s_i g_j + s_j g_i - delta_ij s.g), s = grad log(2/(1-|z|^2)) =
+// 2z/(1-|z|^2), g the gradient: the Riemannian Hessian, positive semi-definite, equal to the
+// exact one where g = 0 (Newton stays quadratic); v^T Hess v is the second derivative of E
+// along the geodesics of initial velocities v. (Seam copies follow their twin through an
+// isometry, so the twin's terms cover them; border parameters keep the coordinate Hessian.)
+inline void subtract_christoffel_terms(const Flat_problem& P, const std::vector<double>& x, const std::vector<double>& g,
+                                       Eigen::SparseMatrix<double>& H)
+{
+  for(int v = 0; v < P.n; ++v) {
+    if(P.kind[v] != Free)
+      continue;
+    const int i = P.var[v];
+    const double q = 2 / (1 - (x[i] * x[i] + x[i + 1] * x[i + 1]));
+    const double s0 = q * x[i], s1 = q * x[i + 1], g0 = g[i], g1 = g[i + 1];
+    const double sg = s0 * g0 + s1 * g1;
+    H.coeffRef(i, i) -= 2 * s0 * g0 - sg;
+    H.coeffRef(i + 1, i + 1) -= 2 * s1 * g1 - sg;
+    H.coeffRef(i, i + 1) -= s0 * g1 + s1 * g0;
+    H.coeffRef(i + 1, i) -= s0 * g1 + s1 * g0;
+  }
+}
+
 // Minimises the energy in two phases, both with a backtracking (Armijo) line search.
 //  1. Preconditioned gradient steps p = -M^-1 g with the connection Laplacian M at the
 //     current scaling: no Hessian, one triangular solve per step. M is so close to the
 //     Hessian that these steps converge fast while the energy is far from its minimum.
-//  2. Newton's method with the exact Hessian, its systems solved by conjugate gradients
-//     preconditioned by M, refactored at the start of the phase and when it no longer fits
-//     (truncated Newton, relative tolerance min(1/2, sqrt(force imbalance)): superlinear).
-// Where the exact Hessian is not definite (negative curvature met by CG), the Hessian
-// projected edge by edge onto the positive semi-definite cone is used instead. Should the
-// iterative solves stall, or the connection Laplacian not factor, the Hessian is factored
-// directly (sparse LDL^T, symbolic analysis once): the former, slower, solver.
+//  2. Riemannian Newton: the exact Riemannian Hessian (subtract_christoffel_terms), steps
+//     along geodesics, the systems solved by conjugate gradients preconditioned by M,
+//     refactored at the start of the phase and when it no longer fits (truncated Newton,
+//     relative tolerance min(1/2, sqrt(force imbalance)): superlinear).
+// Where the Hessian is not definite after all (border parameters, rounding; negative
+// curvature met by CG), the Hessian projected edge by edge onto the positive semi-definite
+// cone is used instead. Should the iterative solves stall, or the connection Laplacian not
+// factor, the Hessian is factored directly (sparse LDL^T, symbolic analysis once): the
+// former, slower, solver. The solver stops at the tolerance, or at the rounding floor (see
+// Energy_evaluator::rounding_floor) when Newton stagnates above the tolerance.
 inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const Solver_options& opt,
                                   Solver_statistics& st, const Interior_laplacian* interior = nullptr)
 {
@@ -897,10 +996,15 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   };
 
   enum Phase { Model, Projected, Exact };
-  Phase phase = use_direct ? Projected : Model;
+  Phase phase = use_direct ? Projected : opt.polish ? Exact : Model;
+  bool polishing = opt.polish;
+  double tolerance = polishing ? 0.0 : opt.gradient_tolerance;
+  int polish_start = 0;
   auto assemble = [&]() { // gradient, and the Hessian the phase needs
     auto t = Clock::now();
     const double e = ev.evaluate(x, g, phase == Model ? nullptr : &H, phase == Projected);
+    if(phase == Exact && opt.riemannian_hessian)
+      subtract_christoffel_terms(P, x, g, H);
     st.time_assemble += seconds(t);
     return e;
   };
@@ -911,18 +1015,37 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   double gnorm = st.initial_gradient;
   double grel = ev.hyperbolic_gradient_norm(x, g, true);
   int stalls = 0, last_cg = 0, slow_steps = 0, refactorings = 0;
+  bool stagnated = false;
   double best_grel = grel;
   int since_best = 0;
   Eigen::VectorXd p(nv), r(nv), zv(nv), d(nv), Hd(nv);
   for(int it = 0; it < opt.max_iterations; ++it) {
-    if(grel <= opt.gradient_tolerance)
-      break;
-    // Newton with the exact Hessian halves the imbalance at least every few steps until
-    // rounding stops it: ten steps without that mean the floor of double precision
-    if(grel < 0.5 * best_grel || phase != Exact) {
+    if(grel <= tolerance) {
+      // converged as a whole; every vertex too? (a region squeezed to 1e-12 has forces too
+      // small for the global imbalance to see): if not, Newton on, until it is or to the floor
+      if(polishing || !(opt.vertex_imbalance > 0) || ev.unbalanced_vertices(x, g, opt.vertex_imbalance) == 0)
+        break;
+      polishing = true;
+      tolerance = 0.0;
+      polish_start = it;
+      best_grel = grel;
+      since_best = 0;
+      if(phase != Exact) {
+        phase = Exact;
+        E = assemble();
+      }
+    } else if(polishing && opt.vertex_imbalance > 0 && ev.unbalanced_vertices(x, g, opt.vertex_imbalance) == 0) {
+      break; // every vertex balanced, or at its rounding floor
+    }
+    // Near the solution Newton with the exact Hessian halves the imbalance at least every
+    // few steps until rounding stops it: ten steps without that mean the floor of double
+    // precision (three when polishing: Newton starts there next to the solution)
+    if(grel < 0.5 * best_grel || phase != Exact || grel > 1e-6) {
       best_grel = std::min(best_grel, grel);
       since_best = 0;
-    } else if(++since_best > 10) {
+    } else if(++since_best > (polishing ? 3 : 10) ||
+              (since_best >= 3 && grel <= 10 * ev.rounding_floor(x))) { // (evaluates at x: g unchanged)
+      stagnated = true;
       break;
     }
     auto t1 = Clock::now();
@@ -954,7 +1077,7 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
       // superlinear tolerance (sqrt), but no more accurate than the stopping test needs
       set_norm_weights();
       pre.set_scaling(x);
-      const double eta = std::max(std::min(0.5, std::sqrt(grel)), std::min(0.5, 0.25 * opt.gradient_tolerance / grel));
+      const double eta = std::max(std::min(0.5, std::sqrt(grel)), std::min(0.5, 0.25 * tolerance / grel));
       const double target = eta * (gv.cwiseProduct(hw)).norm();
       p.setZero();
       r = -gv;
@@ -1034,11 +1157,14 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     for(int ls = 0; ls < 60; ++ls) {
       for(int i = 0; i < nv; ++i)
         xn[i] = x[i] + alpha * p[i];
-      if(phase == Model && opt.geodesic_steps) {
-        // gradient steps: free vertices move along the geodesic of their step, by its
-        // hyperbolic length (the exponential map): a long step near the circle then bends
-        // instead of leaving the disk, and the line search need not shorten every vertex's
-        // step for it. Same first-order step, so the Armijo test is unchanged.
+      if(opt.geodesic_steps && phase != Projected) {
+        // free vertices move along the geodesic of their step, by its hyperbolic length
+        // (the exponential map): a long step near the circle then bends instead of leaving
+        // the disk, and the line search need not shorten every vertex's step for it. Same
+        // first-order step, so the Armijo test is unchanged; with the Riemannian Hessian
+        // this is Riemannian Newton, whose steps stay long where straight ones must be cut
+        // to 1/128 (stiff cotangent weights of 1e5 near the circle: 20 steps instead of 190).
+        // Not for the projected Hessian: it models the energy along straight lines.
         for(int v = 0; v < P.n; ++v) {
           if(P.kind[v] != Free)
             continue;
@@ -1076,8 +1202,10 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     st.time_line_search += seconds(t2);
     st.iterations = it + 1;
     if(!accepted) {
-      if(++stalls > 2)
+      if(++stalls > 2) {
+        stagnated = true;
         break; // no progress possible at this precision: let the tolerance decide
+      }
       phase = phase == Projected ? Exact : Projected;
       E = assemble();
       continue;
@@ -1109,16 +1237,22 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
     if(phase == Model && (alpha < 1.0 || grel > 0.8 * grel_prev))
       ++slow_steps;
     // to Newton with the exact Hessian near the solution
-    if(phase != Exact && grel > opt.gradient_tolerance &&
+    if(phase != Exact && grel > tolerance &&
        ((gnorm / g0 < opt.newton_threshold && alpha == 1.0) || (phase == Model && slow_steps >= 3))) {
       phase = Exact;
       E = assemble();
     }
   }
+  if(polishing)
+    st.polishing_iterations = st.iterations - polish_start;
   st.energy = E;
   st.gradient = gnorm;
   st.relative_gradient = grel;
-  st.converged = st.relative_gradient <= opt.gradient_tolerance;
+  st.rounding_floor = ev.rounding_floor(x);
+  // Converged: the imbalance is below the tolerance or, where rounding makes that
+  // impossible (Newton stagnates), within ten times what rounding the coordinates causes
+  st.at_rounding_floor = stagnated && grel > opt.gradient_tolerance && grel <= 10 * st.rounding_floor;
+  st.converged = st.relative_gradient <= opt.gradient_tolerance || st.at_rounding_floor;
   return st.converged ? OK : ERROR_NOT_CONVERGED;
 }
 
