@@ -952,6 +952,76 @@ TEST_CASE(polishing_a_region_too_small_for_the_stopping_test)
             << ", repaired " << st.repaired_vertices << std::endl;
 }
 
+// A capsule: a tube of radius 1 and length L closed by two hemispheres, S segments per ring
+// (rings staggered, nearly equilateral triangles); landmarks: the bottom pole and four
+// vertices on a ring of the bottom hemisphere. Vertex 0 is the bottom pole.
+static Mesh capsule(double L, int S, std::vector<vertex_descriptor>& lm)
+{
+  Mesh m;
+  const double h = 2 * CGAL_PI / S;
+  std::vector<std::pair<double, double> > rings; // (z, radius)
+  const int nh = static_cast<int>(std::lround((CGAL_PI / 2) / h));
+  for(int i = 1; i <= nh; ++i) {
+    const double a = -CGAL_PI / 2 + i * (CGAL_PI / 2) / nh;
+    rings.emplace_back(std::sin(a), std::cos(a));
+  }
+  const int nc = std::max(1, static_cast<int>(std::lround(L / h)));
+  for(int i = 1; i <= nc; ++i) rings.emplace_back(L * i / nc, 1.0);
+  for(int i = 1; i < nh; ++i) {
+    const double a = i * (CGAL_PI / 2) / nh;
+    rings.emplace_back(L + std::sin(a), std::cos(a));
+  }
+  const vertex_descriptor bottom = m.add_vertex(K::Point_3(0, 0, -1));
+  std::vector<std::vector<vertex_descriptor> > ring(rings.size());
+  for(std::size_t k = 0; k < rings.size(); ++k)
+    for(int j = 0; j < S; ++j) {
+      const double t = 2 * CGAL_PI * (j + 0.5 * (k % 2)) / S;
+      ring[k].push_back(m.add_vertex(K::Point_3(rings[k].second * std::cos(t), rings[k].second * std::sin(t), rings[k].first)));
+    }
+  const vertex_descriptor top = m.add_vertex(K::Point_3(0, 0, L + 1));
+  auto at = [&](std::size_t k, int j) { return ring[k][j % S]; };
+  for(int j = 0; j < S; ++j) m.add_face(bottom, at(0, j + 1), at(0, j));
+  for(std::size_t k = 0; k + 1 < rings.size(); ++k)
+    for(int j = 0; j < S; ++j) {
+      if(k % 2 == 0) { m.add_face(at(k, j), at(k, j + 1), at(k + 1, j)); m.add_face(at(k, j + 1), at(k + 1, j + 1), at(k + 1, j)); }
+      else { m.add_face(at(k, j), at(k, j + 1), at(k + 1, j + 1)); m.add_face(at(k, j), at(k + 1, j + 1), at(k + 1, j)); }
+    }
+  for(int j = 0; j < S; ++j) m.add_face(top, at(rings.size() - 1, j), at(rings.size() - 1, j + 1));
+  lm = {bottom, at(nh / 3, 0), at(nh / 3, S / 4), at(nh / 3, S / 2), at(nh / 3, 3 * S / 4)};
+  return m;
+}
+
+// The limit of double precision, on a tube without landmarks: the embedding is nearly
+// conformal there, and the conformal map of a cylinder of radius 1 onto a disk region is
+// the exponential, which shrinks by e per unit of length. A tube 10 longer: triangles
+// e^10 = 22026 times smaller. Past ~35 radii they are below what double resolves: the
+// result is refused, and the message says why and what to do.
+TEST_CASE(long_tube_shrinks_exponentially_to_the_limit_of_double)
+{
+  std::vector<double> smallest;
+  for(double L : {10.0, 20.0}) {
+    std::vector<vertex_descriptor> lm;
+    Mesh m = capsule(L, 24, lm);
+    const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
+    CHECK_MSG(r.ec == HOT::OK, "tube L=" << L << ": " << r.st.message);
+    CHECK(r.st.certificate.is_bijective());
+    UV_map uv = m.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    double s = std::numeric_limits<double>::infinity();
+    for(halfedge_descriptor h : halfedges(m))
+      if(!is_border(h, m))
+        s = std::min(s, std::sqrt(CGAL::squared_distance(get(uv, h), get(uv, next(h, m)))));
+    smallest.push_back(s);
+    std::cout << "  tube L=" << L << ": smallest edge in the disk " << s << std::endl;
+  }
+  const double ratio = smallest[0] / smallest[1];
+  CHECK_MSG(ratio > std::exp(10.0) / 3 && ratio < std::exp(10.0) * 3, "shrinking over 10 radii: " << ratio << " vs e^10");
+  std::vector<vertex_descriptor> lm;
+  Mesh m = capsule(40, 24, lm);
+  const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
+  CHECK(r.ec == HOT::ERROR_NO_1_TO_1_MAPPING);
+  CHECK_MSG(r.st.message.find("below what double resolves") != std::string::npos, r.st.message);
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 // The energy, gradient and Hessian are summed in a fixed order: one thread or many give the
 // same embedding bit for bit (bear: 41K edges, above the size where the sums run in parallel).

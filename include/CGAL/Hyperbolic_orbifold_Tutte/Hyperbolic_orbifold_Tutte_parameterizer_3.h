@@ -19,6 +19,7 @@
 
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -306,6 +307,22 @@ public:
     if(!st.certificate.is_bijective()) {
       std::ostringstream os;
       os << "the embedding failed the certificate: " << st.certificate;
+      // triangles double cannot resolve: their edges within a few hundred units in the last
+      // place of their coordinates (a protrusion without landmarks shrinks exponentially
+      // along its length, by e per radius for a tube: about 35 radii exhaust double)
+      std::size_t tiny = 0;
+      double smallest = std::numeric_limits<double>::infinity();
+      for(const auto& f : P.faces)
+        for(int i = 0; i < 3; ++i) {
+          const auto a = uv[f[i]], b = uv[f[(i + 1) % 3]];
+          const double len = abs(a - b), ulp = std::numeric_limits<double>::epsilon() * (std::max)(abs(a), abs(b));
+          smallest = (std::min)(smallest, len);
+          if(len < 256 * ulp) { ++tiny; break; }
+        }
+      if(tiny > 0)
+        os << "; " << tiny << " triangles are below what double resolves (smallest edge " << smallest
+           << "): a part of the mesh far from every landmark (a long protrusion) shrinks exponentially"
+              " in the embedding; put a landmark on it";
       return fail(ERROR_NO_1_TO_1_MAPPING, os.str());
     }
     for(int v = 0; v < P.n; ++v)
