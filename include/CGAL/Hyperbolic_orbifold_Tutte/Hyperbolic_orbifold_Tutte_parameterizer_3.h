@@ -296,6 +296,12 @@ public:
       for(int v = 0; v < P.n; ++v)
         uv[v] = internal::position(P, x, v);
       st.certificate = internal::certify_flat(P, tile, uv);
+      if(flipped_only()) { // at the resolution of double: a valid position a few ulps away
+        st.repaired_vertices += internal::snap_one_rings(P, x);
+        for(int v = 0; v < P.n; ++v)
+          uv[v] = internal::position(P, x, v);
+        st.certificate = internal::certify_flat(P, tile, uv);
+      }
     }
     st.time_certificate = std::chrono::duration<double>(Clock::now() - t3).count();
     if(ec != OK) {

@@ -25,6 +25,7 @@
 #include <array>
 #include <chrono>
 #include <complex>
+#include <limits>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
@@ -1317,6 +1318,55 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
     moves += moved;
     if(moved == 0)
       break;
+  }
+  return moves;
+}
+
+// Last resort of the repair, at the resolution of double: a vertex of a non-positive face
+// is searched for, around its computed position, a nearby point (1 to 2^20 units in the last
+// place away, 16 directions) where all its faces are positive (exact predicate). The exact
+// embedding is bijective; where its triangles are nearly flat and tiny (a squeezed region of
+// a mesh with nearly flat triangles) the rounded solution may flip one, and a representable
+// valid position exists close by. The certificate judges the result. Returns the moves.
+inline int snap_one_rings(const Flat_problem& P, std::vector<double>& x)
+{
+  typedef Complex<double> C;
+  typedef Poincare_disk_traits_2<> Traits;
+  const Traits::Hyperbolic_orientation_2 orient = Traits().hyperbolic_orientation_2_object();
+  auto owner = [&](int v) { return P.kind[v] == Transformed ? P.twin[v] : v; };
+  std::vector<std::vector<int> > vfaces(P.n);
+  for(std::size_t f = 0; f < P.faces.size(); ++f)
+    for(int i = 0; i < 3; ++i)
+      vfaces[owner(P.faces[f][i])].push_back(static_cast<int>(f));
+  auto face_ok = [&](int f) {
+    const C a = position(P, x, P.faces[f][0]), b = position(P, x, P.faces[f][1]), c = position(P, x, P.faces[f][2]);
+    return orient(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im), Traits::Point_2(c.re, c.im)) == POSITIVE;
+  };
+  auto all_ok = [&](int v) {
+    for(int f : vfaces[v])
+      if(!face_ok(f)) return false;
+    return true;
+  };
+  int moves = 0;
+  for(int v = 0; v < P.n; ++v) {
+    if(P.kind[v] != Free || all_ok(v))
+      continue;
+    const int i = P.var[v];
+    const double x0 = x[i], y0 = x[i + 1];
+    const double ulp = std::numeric_limits<double>::epsilon() * (std::max)({std::abs(x0), std::abs(y0), 1e-3});
+    bool found = false;
+    for(double r = ulp; r < ulp * 2e6 && !found; r *= 2)
+      for(int d = 0; d < 16 && !found; ++d) {
+        x[i] = x0 + r * std::cos(d * CGAL_PI / 8);
+        x[i + 1] = y0 + r * std::sin(d * CGAL_PI / 8);
+        found = x[i] * x[i] + x[i + 1] * x[i + 1] < 1 && all_ok(v);
+      }
+    if(found)
+      ++moves;
+    else {
+      x[i] = x0;
+      x[i + 1] = y0;
+    }
   }
   return moves;
 }
