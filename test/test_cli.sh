@@ -66,6 +66,10 @@ case "$case_name" in
     cmp -s "$tmp/off_v" "$tmp/obj_v" || fail "vertices differ from the input's"
     grep -q '"bijective": true' "$tmp/b.json" || fail "report verdict"
     grep -q '"orbifold": "sphere"' "$tmp/b.json" || fail "report orbifold"
+    grep -q '"converged_at_rounding_floor": false' "$tmp/b.json" || fail "report rounding floor"
+    if command -v python3 >/dev/null; then
+      python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$tmp/b.json" || fail "the report is not JSON"
+    fi
     tail -n 1 "$tmp/b.svg" | grep -q "</svg>" || fail "svg"
     echo ok ;;
   embed_disk)

@@ -367,6 +367,9 @@ int run_embed(int argc, char** argv)
            << st.time_certificate << "},\n"
            << "  \"iterations\": " << st.iterations << ",\n  \"initial_energy\": " << st.initial_energy << ",\n"
            << "  \"energy\": " << st.energy << ",\n  \"relative_gradient_norm\": " << st.relative_gradient_norm << ",\n"
+           << "  \"rounding_floor\": " << st.rounding_floor << ",\n  \"converged_at_rounding_floor\": "
+           << (st.converged_at_rounding_floor ? "true" : "false") << ",\n  \"polishing_iterations\": " << st.polishing_iterations
+           << ",\n  \"repaired_vertices\": " << st.repaired_vertices << ",\n"
            << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
            << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk
            << ", \"flipped_faces\": " << c.flipped_faces << ", \"degenerate_faces\": " << c.degenerate_faces
