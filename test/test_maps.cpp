@@ -17,8 +17,12 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Random.h>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 #include <chrono>
+#include <cstring>
 #include <memory>
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
@@ -931,6 +935,18 @@ TEST_CASE(armadillo_deformation_26k)
               << "); vertex error max " << s.max << ", mean " << s.mean << " x diagonal (displacement max " << d.max
               << ", mean " << d.mean << ")" << std::endl;
     CHECK(failed == 0);
+#ifdef CGAL_LINKED_WITH_TBB
+    { // the vertices are located in parallel: one thread gives the same locations bit for bit
+      std::vector<Location> one;
+      tbb::task_arena(1).execute([&] { one = HOT::internal::map_vertices(a->mesh, a->uv, L); });
+      CHECK(one.size() == locs.size());
+      std::size_t differ = 0;
+      for(std::size_t i = 0; i < one.size() && i < locs.size(); ++i)
+        differ += one[i].success != locs[i].success || one[i].face_index != locs[i].face_index ||
+                  std::memcmp(one[i].barycentric.data(), locs[i].barycentric.data(), sizeof(double) * 3) != 0;
+      CHECK_MSG(differ == 0, differ << " vertices located differently with one thread");
+    }
+#endif
     // (the time is printed only: speed targets live in benchmark/, not in tests that a busy machine would fail)
     CHECK_MSG(s.mean < 2 * d.mean && s.max < 4 * d.max, "armadillo deformation: max " << s.max << " mean " << s.mean);
   }

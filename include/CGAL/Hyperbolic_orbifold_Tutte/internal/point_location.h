@@ -22,6 +22,11 @@
 
 #include <Eigen/Sparse>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -841,6 +846,8 @@ it lands on `B`: the face of `B` (`face_index` in `faces(B)` order) and the bary
 coordinates there. The vertex's point is the point of one of its corners in `uvA` (the
 corners of a cut vertex are in one orbit, so any one will do); `A` and `B` must be
 embedded into the same orbifold with corresponding landmarks (landmark i at cone i).
+The vertices are located in parallel when CGAL is linked with TBB (each location is
+independent of the others: the same result whatever the number of threads).
 */
 template <class TriangleMeshA, class HalfedgeUVMapA, class Locator>
 std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, HalfedgeUVMapA uvA, const Locator& locB)
@@ -848,8 +855,11 @@ std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, Hal
   typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMeshA>::halfedge_descriptor halfedge_descriptor;
   typedef typename Locator::Point_2 Point_2;
-  std::vector<typename Locator::Location> result;
-  result.reserve(num_vertices(A));
+  // the point of one corner of each vertex (none for an isolated vertex: not located)
+  std::vector<Point_2> points;
+  std::vector<char> has_point;
+  points.reserve(num_vertices(A));
+  has_point.reserve(num_vertices(A));
   for(vertex_descriptor v : vertices(A)) {
     halfedge_descriptor corner = boost::graph_traits<TriangleMeshA>::null_halfedge();
     const halfedge_descriptor h0 = halfedge(v, A);
@@ -860,12 +870,30 @@ std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, Hal
           break;
         }
     if(corner == boost::graph_traits<TriangleMeshA>::null_halfedge()) {
-      result.push_back(typename Locator::Location()); // isolated vertex: not located
+      points.push_back(Point_2(0, 0));
+      has_point.push_back(0);
       continue;
     }
     const auto p = get(uvA, corner);
-    result.push_back(locB.locate(Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y()))));
+    points.push_back(Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())));
+    has_point.push_back(1);
   }
+  std::vector<typename Locator::Location> result(points.size());
+  auto run = [&](std::size_t i) {
+    if(has_point[i])
+      result[i] = locB.locate(points[i]);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(points.size() > 10000) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t i = r.begin(); i != r.end(); ++i)
+        run(i);
+    });
+    return result;
+  }
+#endif
+  for(std::size_t i = 0; i < points.size(); ++i)
+    run(i);
   return result;
 }
 
