@@ -1273,6 +1273,39 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   return st.converged ? OK : ERROR_NOT_CONVERGED;
 }
 
+// The faces around each vertex (a seam copy's faces listed at its twin, whose variables it
+// uses) and the exact test of a face's orientation at x: what the one-ring repairs check.
+class One_ring_faces
+{
+public:
+  explicit One_ring_faces(const Flat_problem& P) : P_(P), faces_(P.n)
+  {
+    for(std::size_t f = 0; f < P.faces.size(); ++f)
+      for(int i = 0; i < 3; ++i)
+        faces_[owner(P.faces[f][i])].push_back(static_cast<int>(f));
+  }
+  int owner(int v) const { return P_.kind[v] == Transformed ? P_.twin[v] : v; }
+  bool positive(int f, const std::vector<double>& x) const
+  {
+    typedef Complex<double> C;
+    typedef Poincare_disk_traits_2<> Traits;
+    const C a = position(P_, x, P_.faces[f][0]), b = position(P_, x, P_.faces[f][1]), c = position(P_, x, P_.faces[f][2]);
+    return Traits().hyperbolic_orientation_2_object()(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im),
+                                                      Traits::Point_2(c.re, c.im)) == POSITIVE;
+  }
+  bool all_positive(int v, const std::vector<double>& x) const
+  {
+    for(int f : faces_[v])
+      if(!positive(f, x))
+        return false;
+    return true;
+  }
+
+private:
+  const Flat_problem& P_;
+  std::vector<std::vector<int> > faces_;
+};
+
 // The paper's post-processing (section 5): every free vertex that is not inside the
 // hyperbolic convex hull of its neighbours (detected by a non-positive incident face, exact
 // test) is moved by a Mobius map to the origin with its one-ring, put at the Euclidean
@@ -1283,35 +1316,23 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
 {
   typedef Complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
-  typedef Poincare_disk_traits_2<> Traits;
-  const Traits::Hyperbolic_orientation_2 orient = Traits().hyperbolic_orientation_2_object();
+  const One_ring_faces rings(P);
   // neighbours of each free vertex, with the map bringing them into its frame
   struct Nb { int u; int via; double w; };  // via: the vertex of the edge standing for v (v or a twin copy)
   std::vector<std::vector<Nb> > nb(P.n);
-  std::vector<std::vector<int> > vfaces(P.n);
-  auto owner = [&](int v) { return P.kind[v] == Transformed ? P.twin[v] : v; };
+  auto owner = [&](int v) { return rings.owner(v); };
   for(std::size_t e = 0; e < P.edges.size(); ++e) {
     const int a = P.edges[e][0], b = P.edges[e][1];
     if(P.kind[owner(a)] == Free) nb[owner(a)].push_back(Nb{b, a, P.edge_weight[e]});
     if(P.kind[owner(b)] == Free) nb[owner(b)].push_back(Nb{a, b, P.edge_weight[e]});
   }
-  for(std::size_t f = 0; f < P.faces.size(); ++f)
-    for(int i = 0; i < 3; ++i)
-      vfaces[owner(P.faces[f][i])].push_back(static_cast<int>(f));
-  auto face_ok = [&](int f) {
-    const C a = position(P, x, P.faces[f][0]), b = position(P, x, P.faces[f][1]), c = position(P, x, P.faces[f][2]);
-    return orient(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im), Traits::Point_2(c.re, c.im)) == POSITIVE;
-  };
   int moves = 0;
   for(int sweep = 0; sweep < max_sweeps; ++sweep) {
     int moved = 0;
     for(int v = 0; v < P.n; ++v) {
       if(P.kind[v] != Free)
         continue;
-      bool bad = false;
-      for(int f : vfaces[v])
-        if(!face_ok(f)) { bad = true; break; }
-      if(!bad)
+      if(rings.all_positive(v, x))
         continue;
       const C z(x[P.var[v]], x[P.var[v] + 1]);
       const Isometry to0 = Isometry::translation_to_origin(z);
@@ -1346,23 +1367,8 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
 // valid position exists close by. The certificate judges the result. Returns the moves.
 inline int snap_one_rings(const Flat_problem& P, std::vector<double>& x)
 {
-  typedef Complex<double> C;
-  typedef Poincare_disk_traits_2<> Traits;
-  const Traits::Hyperbolic_orientation_2 orient = Traits().hyperbolic_orientation_2_object();
-  auto owner = [&](int v) { return P.kind[v] == Transformed ? P.twin[v] : v; };
-  std::vector<std::vector<int> > vfaces(P.n);
-  for(std::size_t f = 0; f < P.faces.size(); ++f)
-    for(int i = 0; i < 3; ++i)
-      vfaces[owner(P.faces[f][i])].push_back(static_cast<int>(f));
-  auto face_ok = [&](int f) {
-    const C a = position(P, x, P.faces[f][0]), b = position(P, x, P.faces[f][1]), c = position(P, x, P.faces[f][2]);
-    return orient(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im), Traits::Point_2(c.re, c.im)) == POSITIVE;
-  };
-  auto all_ok = [&](int v) {
-    for(int f : vfaces[v])
-      if(!face_ok(f)) return false;
-    return true;
-  };
+  const One_ring_faces rings(P);
+  auto all_ok = [&](int v) { return rings.all_positive(v, x); };
   int moves = 0;
   for(int v = 0; v < P.n; ++v) {
     if(P.kind[v] != Free || all_ok(v))
