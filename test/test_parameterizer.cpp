@@ -14,6 +14,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
 #include <CGAL/Random.h>
 
 #include <map>
@@ -1020,6 +1021,74 @@ TEST_CASE(long_tube_shrinks_exponentially_to_the_limit_of_double)
   const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
   CHECK(r.ec == HOT::ERROR_NO_1_TO_1_MAPPING);
   CHECK_MSG(r.st.message.find("below what double resolves") != std::string::npos, r.st.message);
+  CHECK_MSG(r.st.message.find("allow recentring") != std::string::npos, r.st.message);
+}
+
+// Past the limit of double: with recentring allowed, the squeezed tube is solved again in
+// frames that move its tip to the origin, where double resolves far smaller triangles. The
+// result is certified in that frame, its cones are the frame's images of the tile's, every
+// vertex is the weighted hyperbolic centre of mass of its neighbours (a check made with
+// Mobius maps, blind to the frame), and the tube still shrinks by e per radius: its smallest
+// hyperbolic edge at L=100 is e^-80 times that at L=20 (the conformal map of a cylinder).
+TEST_CASE(recentring_goes_past_the_limit_of_double)
+{
+  auto smallest_hyperbolic_edge = [](const Mesh& m, const UV_map& uv) {
+    double s = std::numeric_limits<double>::infinity();
+    for(halfedge_descriptor h : halfedges(m))
+      if(!is_border(h, m)) {
+        const C a(get(uv, h).x(), get(uv, h).y()), b(get(uv, next(h, m)).x(), get(uv, next(h, m)).y());
+        const double N = HOT::internal::norm(a - b), A = 1 - HOT::internal::norm(a), B = 1 - HOT::internal::norm(b);
+        s = std::min(s, 2 * std::asinh(std::sqrt(N / (A * B))));
+      }
+    return s;
+  };
+  std::vector<double> smallest;
+  for(double L : {20.0, 100.0}) {
+    std::vector<vertex_descriptor> lm;
+    Mesh m = capsule(L, 24, lm);
+    UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+    HOT::Embedding_statistics st;
+    const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+      m, lm, uv, HOT::parameters::recentring(true, HOT::parameters::embedding_statistics(&st, HOT::parameters::landmark_order(HOT::Tsp_order))));
+    CHECK_MSG(ec == HOT::OK, "tube L=" << L << ": " << st.message);
+    CHECK(st.certificate.is_bijective());
+    CHECK(st.recentred == (L > 40)); // in the tile itself while double suffices
+    // the cones: each corner of a landmark is the frame's image of a tile corner of its cone
+    HOT::Orbifold_tile<> tile;
+    CHECK(HOT::make_orbifold_tile(HOT::Sphere_type, 5, tile) == HOT::OK);
+    for(std::size_t i = 0; i < lm.size(); ++i) {
+      const vertex_descriptor v = lm[st.landmark_order[i]];
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m)) {
+        if(is_border(h, m))
+          continue;
+        double d = std::numeric_limits<double>::infinity();
+        for(int c = 0; c < tile.number_of_corners(); ++c)
+          if(tile.corner_cone(c) == static_cast<int>(i))
+            d = std::min(d, HOT::internal::abs(C(get(uv, h).x(), get(uv, h).y()) -
+                                               st.frame.apply(C(tile.corner(c).x(), tile.corner(c).y()))));
+        CHECK_MSG(d < 1e-12, "cone " << i << " at (" << get(uv, h) << "), " << d << " from the frame's images of its tile corners");
+      }
+    }
+    // every face positive (exact predicate on the written coordinates)
+    const auto orient = HOT::Poincare_disk_traits_2<K>().hyperbolic_orientation_2_object();
+    std::size_t not_positive = 0;
+    for(auto f : faces(m)) {
+      const halfedge_descriptor h = halfedge(f, m);
+      not_positive += orient(get(uv, h), get(uv, next(h, m)), get(uv, prev(h, m))) == CGAL::POSITIVE ? 0 : 1;
+    }
+    CHECK_MSG(not_positive == 0, not_positive << " faces not positive");
+    const double defect = worst_centre_of_mass_defect(m, uv, HOT::Cotangent, lm);
+    CHECK_MSG(defect <= 1, "tube L=" << L << ": centre-of-mass defect " << defect << " of the tolerance");
+    smallest.push_back(smallest_hyperbolic_edge(m, uv));
+    std::cout << "  tube L=" << L << ": recentred " << st.recentred << ", smallest hyperbolic edge " << smallest.back()
+              << ", " << st.polishing_iterations << " polishing steps, " << st.time_optimization << " s in the solver" << std::endl;
+    if(L > 40) { // a map needs the tile itself: the locator refuses the moved embedding
+      const HOT::internal::Embedding_point_locator<Mesh, UV_map> locator(m, uv, HOT::Sphere_type, 5);
+      CHECK(!locator.is_valid());
+    }
+  }
+  const double ratio = smallest[0] / smallest[1];
+  CHECK_MSG(ratio > std::exp(80.0) / 3 && ratio < std::exp(80.0) * 3, "shrinking over 80 radii: " << ratio << " vs e^80 = " << std::exp(80.0));
 }
 
 // Solved to the floor of double, the cow with these landmarks (a stress run's) still had one

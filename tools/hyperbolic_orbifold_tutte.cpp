@@ -54,11 +54,13 @@ const char* const usage_text =
   "      (products of at most D side pairings, default 3) in the Poincare disk\n"
   "  hyperbolic_orbifold_tutte embed --mesh IN --cones CONES [--orbifold sphere|disk]\n"
   "      [--weights cotan|mvc|uniform] [--order given|tsp] --out OUT.obj [--svg PICTURE.svg]\n"
-  "      [--report REPORT.json]\n"
+  "      [--report REPORT.json] [--recentre]\n"
   "      embeds the mesh into the hyperbolic orbifold whose cones are the landmarks CONES\n"
   "      (0-based vertex indices); OUT.obj holds the input vertices (v), one Poincare point\n"
   "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
-  "      bijective or the program fails. --order defaults to tsp for sphere type.\n";
+  "      bijective or the program fails. --order defaults to tsp for sphere type.\n"
+  "      --recentre: a part too squeezed for double in the tile (a long protrusion without\n"
+  "      landmarks) may be solved in a moved frame; the report then gives the frame.\n";
 
 // --name value options, and --flag options without value (listed in `flags`).
 class Options
@@ -284,7 +286,7 @@ void write_embedding_obj(std::ostream& os, const Surface_mesh& m,
 
 int run_embed(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report"});
+  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report"}, {"recentre"});
   const std::string mesh_path = opt.get("mesh"), cones_path = opt.get("cones"), out_path = opt.get("out");
   HOT::Weight_type weights = HOT::Cotangent;
   std::string weights_name = "cotan";
@@ -325,14 +327,18 @@ int run_embed(int argc, char** argv)
   HOT::Embedding_statistics st;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     m, landmarks, uv,
-    HOT::parameters::embedding_statistics(
-      &st, HOT::parameters::landmark_order(order_name == "tsp" ? HOT::Tsp_order : HOT::Given_order,
-                                           HOT::parameters::weight_type(weights, HOT::parameters::orbifold_type(type)))));
+    HOT::parameters::recentring(
+      opt.has("recentre"),
+      HOT::parameters::embedding_statistics(
+        &st, HOT::parameters::landmark_order(order_name == "tsp" ? HOT::Tsp_order : HOT::Given_order,
+                                             HOT::parameters::weight_type(weights, HOT::parameters::orbifold_type(type))))));
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
 
   HOT::Orbifold_tile<> tile;
   HOT::make_orbifold_tile(type, static_cast<int>(landmarks.size()), tile);
+  if(st.recentred)
+    tile = tile.transformed(st.frame); // the tile of the written coordinates
 
   std::vector<std::string> written;
   try {
@@ -370,6 +376,9 @@ int run_embed(int argc, char** argv)
            << "  \"rounding_floor\": " << st.rounding_floor << ",\n  \"converged_at_rounding_floor\": "
            << (st.converged_at_rounding_floor ? "true" : "false") << ",\n  \"polishing_iterations\": " << st.polishing_iterations
            << ",\n  \"repaired_vertices\": " << st.repaired_vertices << ",\n"
+           << "  \"recentred\": " << (st.recentred ? "true" : "false") << ",\n  \"frame\": {\"a\": ["
+           << st.frame.a().re << ", " << st.frame.a().im << "], \"b\": [" << st.frame.b().re << ", " << st.frame.b().im
+           << "]},\n"
            << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
            << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk
            << ", \"flipped_faces\": " << c.flipped_faces << ", \"degenerate_faces\": " << c.degenerate_faces

@@ -8,6 +8,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
@@ -63,6 +64,14 @@ struct Embedding_statistics
   /// until rounding stops them), before the one-ring repair is tried
   int polishing_iterations = 0;
   int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
+  /// `true` when the coordinates were written in a moved frame (recentring allowed, and the
+  /// embedding in the canonical tile had triangles below what `double` resolves): the
+  /// written point of a vertex is `frame(z)`, where `z` is its position in the tile of
+  /// `make_orbifold_tile()`, and the embedding fills `tile.transformed(frame)`
+  bool recentred = false;
+  /// the isometry of the frame (the identity unless `recentred`): the translation that
+  /// moves the most squeezed region of the embedding to the origin
+  Hyperbolic_isometry_2<double> frame;
   bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
   std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
   /// \var time_setup
@@ -156,6 +165,19 @@ public:
   /// `Weight_type`; each must be positive and finite (else `ERROR_WRONG_PARAMETER`).
   /// An empty function restores the `Weight_type`.
   void set_edge_weights(const Edge_weight_function& w) { user_weights_ = w; }
+  /// allows the result to be written in a moved frame (default `false`). A part of the mesh
+  /// far from every landmark (a long protrusion) shrinks exponentially in the embedding, by
+  /// a factor e per radius of a tube's length: past about 33 radii its triangles are below
+  /// what `double` resolves in the tile, and the embedding is refused
+  /// (`ERROR_NO_1_TO_1_MAPPING`). With recentring, it is then solved again in frames that
+  /// move the squeezed region's deepest point to the origin, where `double` resolves far
+  /// smaller triangles (16 more digits per round, one round per 37 radii or so), and the
+  /// certified result is returned in that frame: `Embedding_statistics::recentred` is
+  /// `true` and the written point of a vertex is `Embedding_statistics::frame` applied to
+  /// its position in the tile of `make_orbifold_tile()`. The tile of the written
+  /// coordinates is then `tile.transformed(frame)`; `Embedding_locator` and the surface
+  /// maps work with embeddings in the tile itself and refuse moved ones.
+  void set_recentring(bool b) { recentring_ = b; }
 
   /*!
   computes the embedding.
@@ -260,48 +282,27 @@ public:
     st.time_line_search = ss.time_line_search;
     st.time_optimization = std::chrono::duration<double>(Clock::now() - t2).count();
 
-    std::vector<internal::Complex<double> > uv(P.n);
-    for(int v = 0; v < P.n; ++v)
-      uv[v] = internal::position(P, x, v);
-
+    std::vector<C> uv(P.n);
     auto t3 = Clock::now();
-    st.certificate = internal::certify_flat(P, tile, uv);
-    auto flipped_only = [&]() {
-      return !st.certificate.is_bijective() && st.certificate.points_outside_disk == 0 &&
-             (st.certificate.flipped_faces > 0 || st.certificate.degenerate_faces > 0);
-    };
-    if(ec == OK && flipped_only()) {
-      // a region too small for the global stopping test to see: Newton to the floor of double
-      auto t4 = Clock::now();
-      internal::Solver_options polish = options_;
-      polish.polish = true;
-      polish.vertex_imbalance = 0; // every vertex balanced did not suffice: to the floor of double
-      internal::Solver_statistics ps;
-      internal::minimize_energy(P, x, polish, ps, &interior); // only accepted (descent) steps change x
-      st.polishing_iterations += ps.iterations;
-      st.cg_iterations += ps.cg_iterations;
-      st.energy = ps.energy;
-      st.gradient_norm = ps.gradient;
-      st.relative_gradient_norm = ps.relative_gradient;
-      const double dt = std::chrono::duration<double>(Clock::now() - t4).count();
-      st.time_optimization += dt;
-      t3 += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(dt));
-      for(int v = 0; v < P.n; ++v)
-        uv[v] = internal::position(P, x, v);
-      st.certificate = internal::certify_flat(P, tile, uv);
+    certify(P, tile, x, uv, st);
+    if(ec == OK && flipped_only(st)) {
+      // a region too small for the stopping test to see: Newton to the floor of double
+      const auto t4 = Clock::now();
+      polish_to_floor(P, x, interior, st);
+      const auto dt = Clock::now() - t4; // solver time, not certificate time
+      st.time_optimization += std::chrono::duration<double>(dt).count();
+      t3 += dt;
+      certify(P, tile, x, uv, st);
     }
-    if(flipped_only()) {
-      // the paper's one-ring repair for vertices left outside the hull of their neighbours
-      st.repaired_vertices = internal::repair_one_rings(P, x);
-      for(int v = 0; v < P.n; ++v)
-        uv[v] = internal::position(P, x, v);
-      st.certificate = internal::certify_flat(P, tile, uv);
-      if(flipped_only()) { // at the resolution of double: a valid position a few ulps away
-        st.repaired_vertices += internal::snap_one_rings(P, x);
-        for(int v = 0; v < P.n; ++v)
-          uv[v] = internal::position(P, x, v);
-        st.certificate = internal::certify_flat(P, tile, uv);
-      }
+    Unresolved_faces tiny = unresolved_faces(P, uv, false);
+    if(ec == OK && flipped_only(st) && tiny.count > 0 && recentring_) {
+      const auto t4 = Clock::now();
+      recentre(mesh, bhd, landmarks, cut_vertices, tile, P, uv, st);
+      const auto dt = Clock::now() - t4;
+      st.time_optimization += std::chrono::duration<double>(dt).count();
+      t3 += dt;
+    } else {
+      repair(P, tile, x, uv, st);
     }
     st.time_certificate = std::chrono::duration<double>(Clock::now() - t3).count();
     if(ec != OK) {
@@ -315,20 +316,16 @@ public:
       os << "the embedding failed the certificate: " << st.certificate;
       // triangles double cannot resolve: their edges within a few hundred units in the last
       // place of their coordinates (a protrusion without landmarks shrinks exponentially
-      // along its length, by e per radius for a tube: about 35 radii exhaust double)
-      std::size_t tiny = 0;
-      double smallest = std::numeric_limits<double>::infinity();
-      for(const auto& f : P.faces)
-        for(int i = 0; i < 3; ++i) {
-          const auto a = uv[f[i]], b = uv[f[(i + 1) % 3]];
-          const double len = abs(a - b), ulp = std::numeric_limits<double>::epsilon() * (std::max)(abs(a), abs(b));
-          smallest = (std::min)(smallest, len);
-          if(len < 256 * ulp) { ++tiny; break; }
-        }
-      if(tiny > 0)
-        os << "; " << tiny << " triangles are below what double resolves (smallest edge " << smallest
+      // along its length, by e per radius for a tube: about 33 radii exhaust double)
+      if(tiny.count > 0) {
+        os << "; " << tiny.count << " triangles are below what double resolves (smallest edge " << tiny.smallest
            << "): a part of the mesh far from every landmark (a long protrusion) shrinks exponentially"
               " in the embedding; put a landmark on it";
+        if(recentring_)
+          os << " (solving it again with its deepest point at the origin did not suffice)";
+        else
+          os << ", or allow recentring";
+      }
       return fail(ERROR_NO_1_TO_1_MAPPING, os.str());
     }
     for(int v = 0; v < P.n; ++v)
@@ -337,12 +334,216 @@ public:
   }
 
 private:
+  typedef internal::Complex<double> C;
+  typedef Hyperbolic_isometry_2<double> Isometry;
+
+  // the certificate of the coordinates xq (written to uvq)
+  static void certify(const internal::Flat_problem& Q, const Tile& T, const std::vector<double>& xq,
+                      std::vector<C>& uvq, Embedding_statistics& st)
+  {
+    for(int v = 0; v < Q.n; ++v)
+      uvq[v] = internal::position(Q, xq, v);
+    st.certificate = internal::certify_flat(Q, T, uvq);
+  }
+
+  // the certificate fails on flipped or flat faces only
+  static bool flipped_only(const Embedding_statistics& st)
+  {
+    return !st.certificate.is_bijective() && st.certificate.points_outside_disk == 0 &&
+           (st.certificate.flipped_faces > 0 || st.certificate.degenerate_faces > 0);
+  }
+
+  // the paper's one-ring repair for vertices left outside the hull of their neighbours,
+  // then (at the resolution of double) a valid position a few ulps away
+  static void repair(const internal::Flat_problem& Q, const Tile& T, std::vector<double>& xq, std::vector<C>& uvq,
+                     Embedding_statistics& st)
+  {
+    if(!flipped_only(st))
+      return;
+    st.repaired_vertices += internal::repair_one_rings(Q, xq);
+    certify(Q, T, xq, uvq, st);
+    if(flipped_only(st)) {
+      st.repaired_vertices += internal::snap_one_rings(Q, xq);
+      certify(Q, T, xq, uvq, st);
+    }
+  }
+
+  // Newton until rounding stops it, with every vertex's forces balanced to the floor
+  void polish_to_floor(const internal::Flat_problem& Q, std::vector<double>& xq,
+                       const internal::Interior_laplacian& interior, Embedding_statistics& st) const
+  {
+    internal::Solver_options polish = options_;
+    polish.polish = true;
+    polish.vertex_imbalance = 0;
+    internal::Solver_statistics ps;
+    internal::minimize_energy(Q, xq, polish, ps, &interior); // only accepted (descent) steps change xq
+    st.polishing_iterations += ps.iterations;
+    st.cg_iterations += ps.cg_iterations;
+    st.energy = ps.energy;
+    st.gradient_norm = ps.gradient;
+    st.relative_gradient_norm = ps.relative_gradient;
+  }
+
+  struct Unresolved_faces
+  {
+    std::size_t count = 0;                                      // the faces flagged
+    double smallest = std::numeric_limits<double>::infinity(); // the shortest edge of all
+    C where;                    // the deepest vertex of the flagged faces (most face steps from the others)
+    std::vector<char> flag;     // per face
+  };
+
+  // Faces that double cannot resolve (an edge within 256 units in the last place of its
+  // ends), and with `not_positive` also the faces that are not positive (exact test).
+  static Unresolved_faces unresolved_faces(const internal::Flat_problem& Q, const std::vector<C>& uv, bool not_positive)
+  {
+    typedef Poincare_disk_traits_2<> Disk;
+    const auto orient = Disk().hyperbolic_orientation_2_object();
+    Unresolved_faces u;
+    u.flag.assign(Q.faces.size(), 0);
+    for(std::size_t fi = 0; fi < Q.faces.size(); ++fi) {
+      const auto& f = Q.faces[fi];
+      for(int i = 0; i < 3; ++i) {
+        const C a = uv[f[i]], b = uv[f[(i + 1) % 3]];
+        const double len = abs(a - b), ulp = std::numeric_limits<double>::epsilon() * (std::max)(abs(a), abs(b));
+        u.smallest = (std::min)(u.smallest, len);
+        u.flag[fi] = u.flag[fi] || len < 256 * ulp;
+      }
+      if(not_positive && !u.flag[fi]) {
+        auto pt = [&](int v) { return Disk::Point_2(uv[v].re, uv[v].im); };
+        u.flag[fi] = orient(pt(f[0]), pt(f[1]), pt(f[2])) != POSITIVE;
+      }
+      u.count += u.flag[fi] ? 1 : 0;
+    }
+    if(u.count == 0)
+      return u;
+    // the deepest point of the flagged region (a protrusion's tip): breadth first from
+    // the vertices of the other faces
+    std::vector<std::vector<int> > faces_of(Q.n);
+    for(std::size_t fi = 0; fi < Q.faces.size(); ++fi)
+      for(int v : Q.faces[fi])
+        faces_of[v].push_back(static_cast<int>(fi));
+    std::vector<int> depth(Q.n, -1), queue;
+    for(std::size_t fi = 0; fi < Q.faces.size(); ++fi)
+      if(!u.flag[fi])
+        for(int v : Q.faces[fi])
+          if(depth[v] < 0) {
+            depth[v] = 0;
+            queue.push_back(v);
+          }
+    if(queue.empty()) { // every face flagged: from anywhere
+      depth[Q.faces[0][0]] = 0;
+      queue.push_back(Q.faces[0][0]);
+    }
+    for(std::size_t i = 0; i < queue.size(); ++i)
+      for(int fi : faces_of[queue[i]])
+        for(int w : Q.faces[fi])
+          if(depth[w] < 0) {
+            depth[w] = depth[queue[i]] + 1;
+            queue.push_back(w);
+          }
+    u.where = uv[queue.back()];
+    return u;
+  }
+
+  // Double resolves 1e-16 of a coordinate's size: far finer near the origin. A squeezed
+  // region (a protrusion without landmarks shrinks by e per radius of its length) is solved
+  // again in a frame that moves its deepest point to the origin (the tile moved by the same
+  // isometry), from the current coordinates, by Newton on it and two rings around it alone:
+  // the whole problem's linear solves cannot resolve forces 1e-16 times its largest ones,
+  // and their rounding would move the region by more than its size. Each round resolves
+  // the region up to 16 digits deeper (a tube: 37 radii further); rounds go on while they
+  // reduce the faces left (at most `max_recentring_rounds`). Then the one-ring repairs.
+  // On success, `uv` and the certificate are those of the moved frame, `st.frame` records
+  // it; else `uv` and the certificate are left as they were.
+  template <class Landmarks, class Cut_vertices>
+  void recentre(const SeamMesh& mesh, halfedge_descriptor bhd, const Landmarks& landmarks,
+                const Cut_vertices& cut_vertices, const Tile& tile, const internal::Flat_problem& P,
+                std::vector<C>& uv, Embedding_statistics& st) const
+  {
+    const Embedding_certificate canonical = st.certificate;
+    Isometry frame;
+    Tile moved = tile;
+    internal::Flat_problem Q;
+    std::vector<C> uvq = uv;
+    std::vector<double> xq;
+    Unresolved_faces left = unresolved_faces(P, uvq, true);
+    std::size_t best = left.count;
+    for(int round = 0, idle = 0; round < max_recentring_rounds && left.count > 0 && idle < 4; ++round) {
+      const Isometry step = Isometry::translation_to_origin(left.where);
+      frame = step * frame;
+      moved = tile.transformed(frame);
+      internal::Flat_problem R;
+      std::unordered_map<TM_vertex_descriptor, int> base_index;
+      Cut_vertices cut_vertices_r;
+      std::string msg;
+      if(internal::build_flat_topology(mesh, bhd, landmarks, moved, R, base_index, cut_vertices_r, msg) != OK ||
+         cut_vertices_r != cut_vertices)
+        return; // (the same mesh and landmarks as the first time: not expected)
+      R.edge_weight = P.edge_weight;
+      xq.assign(R.n_vars, 0.0);
+      for(int v = 0; v < R.n; ++v) {
+        const C z = step.apply(uvq[v]);
+        if(R.kind[v] == internal::Free) {
+          xq[R.var[v]] = z.re;
+          xq[R.var[v] + 1] = z.im;
+        } else if(R.kind[v] == internal::On_line) { // its Klein segment's parameter
+          const C k = z * (2.0 / (1.0 + norm(z))), d = k - R.line_k0[v];
+          xq[R.var[v]] = (d.re * R.line_D[v].re + d.im * R.line_D[v].im) / norm(R.line_D[v]);
+        }
+      }
+      Q = std::move(R);
+      // the faces left, and two rings around them
+      const internal::One_ring_faces rings(Q);
+      std::vector<char> region(Q.n, 0);
+      for(std::size_t f = 0; f < Q.faces.size(); ++f)
+        if(left.flag[f])
+          for(int v : Q.faces[f])
+            region[rings.owner(v)] = 1;
+      for(int ring = 0; ring < 2; ++ring) {
+        std::vector<char> grown = region;
+        for(const auto& f : Q.faces)
+          if(region[rings.owner(f[0])] || region[rings.owner(f[1])] || region[rings.owner(f[2])])
+            for(int v : f)
+              grown[rings.owner(v)] = 1;
+        region.swap(grown);
+      }
+      internal::Solver_options opt = options_;
+      opt.max_iterations = (std::min)(opt.max_iterations, 50);
+      internal::Solver_statistics rs;
+      internal::minimize_energy_on_region(Q, xq, region, opt, rs);
+      st.polishing_iterations += rs.iterations;
+      st.cg_iterations += rs.cg_iterations;
+      for(int v = 0; v < Q.n; ++v)
+        uvq[v] = internal::position(Q, xq, v);
+      left = unresolved_faces(Q, uvq, true);
+      if(options_.verbose)
+        std::cerr << "  recentred " << round + 1 << " times: " << left.count
+                  << " faces not positive or below what double resolves (smallest edge " << left.smallest << ")"
+                  << std::endl;
+      idle = left.count < best ? 0 : idle + 1;
+      best = (std::min)(best, left.count);
+    }
+    if(xq.empty())
+      return;
+    certify(Q, moved, xq, uvq, st);
+    repair(Q, moved, xq, uvq, st);
+    if(st.certificate.is_bijective()) {
+      uv.swap(uvq);
+      st.recentred = true;
+      st.frame = frame;
+    } else {
+      st.certificate = canonical;
+    }
+  }
+
   Orbifold_type type_;
   Weight_type weights_;
   double epsilon_;
   Traits traits_;
   internal::Solver_options options_;
   Edge_weight_function user_weights_;
+  bool recentring_ = false;
+  static const int max_recentring_rounds = 24;
 };
 
 } // namespace Hyperbolic_orbifold_Tutte

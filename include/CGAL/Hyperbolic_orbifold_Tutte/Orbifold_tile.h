@@ -198,6 +198,22 @@ public:
   /// \name Operations
   /// @{
 
+  /// the image of the tile under the orientation-preserving isometry `m`: corners
+  /// \f$ m(c_i) \f$, side pairings \f$ m\, g_i\, m^{-1} \f$ (the same orbifold, another
+  /// fundamental domain of a conjugate group). `reduce_to_tile()` and `group_elements()`
+  /// assume a tile around the origin: use them on the tile before it is moved.
+  Orbifold_tile transformed(const Isometry& m) const
+  {
+    std::vector<Point_2> corners;
+    for(const Point_2& c : corners_)
+      corners.push_back(m(c));
+    std::vector<Isometry> pairings;
+    const Isometry mi = m.inverse();
+    for(const Isometry& g : side_pairings_)
+      pairings.push_back(m * g * mi);
+    return Orbifold_tile(signature_, corners, corner_cones_, corner_angles_, paired_sides_, pairings, traits_);
+  }
+
   /// position of `p` with respect to the tile, decided exactly on the coordinates of `p` and of the corners
   Bounded_side bounded_side(const Point_2& p) const
   {

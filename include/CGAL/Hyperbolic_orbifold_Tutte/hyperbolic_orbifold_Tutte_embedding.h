@@ -95,6 +95,12 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     \cgalParamDefault{`1e-10`} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{maximum number of Newton iterations}
     \cgalParamDefault{`200`} \cgalParamNEnd
+  \cgalParamNBegin{recentring} \cgalParamDescription{allows the result to be written in a moved frame
+    when a region of the embedding is too squeezed for `double` in the tile (a long protrusion
+    without landmarks): then `Embedding_statistics::recentred` is `true` and the corner
+    coordinates are `Embedding_statistics::frame` applied to the positions in the tile; see
+    `Hyperbolic_orbifold_Tutte_parameterizer_3::set_recentring()`}
+    \cgalParamDefault{`false`} \cgalParamNEnd
   \cgalParamNBegin{verbose} \cgalParamDescription{prints the solver's progress on `std::cerr`}
     \cgalParamDefault{`false`} \cgalParamNEnd
   \cgalParamNBegin{embedding_statistics} \cgalParamDescription{an `Embedding_statistics*` filled on return}
@@ -194,6 +200,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   parameterizer.set_gradient_tolerance(choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-10));
   parameterizer.set_maximum_number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200));
   parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
+  parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
   if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
     const auto wmap = get_parameter(np, internal_np::edge_weight_map);
     parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });

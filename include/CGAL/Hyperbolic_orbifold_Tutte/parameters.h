@@ -35,6 +35,7 @@ enum landmark_order_t { landmark_order };
 enum gradient_tolerance_t { gradient_tolerance };
 enum embedding_statistics_t { embedding_statistics };
 enum edge_weight_map_t { edge_weight_map };
+enum recentring_t { recentring };
 } // namespace internal_np
 
 namespace parameters {
@@ -68,6 +69,11 @@ CGAL_HOT_NAMED_PARAMETER(embedding_statistics)
 /// a readable property map from the mesh's edges to positive `double` weights, used
 /// instead of `weight_type`
 CGAL_HOT_NAMED_PARAMETER(edge_weight_map)
+
+/// `bool`: allows the result to be written in a frame that moves a region too squeezed for
+/// `double` to the origin (default `false`; see
+/// `Hyperbolic_orbifold_Tutte_parameterizer_3::set_recentring()`)
+CGAL_HOT_NAMED_PARAMETER(recentring)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 
