@@ -397,7 +397,8 @@ int run_embed(int argc, char** argv)
   std::cout << "embedded " << mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
             << (type == HOT::Sphere_type ? "sphere" : "disk") << " type) in "
             << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
-            << st.iterations << " Newton iterations, certified bijective; wrote " << out_path << std::endl;
+            << st.iterations << " Newton iterations, certified bijective"
+            << (st.recentred ? " in a recentred frame (given in the report)" : "") << "; wrote " << out_path << std::endl;
   return EXIT_SUCCESS;
 }
 

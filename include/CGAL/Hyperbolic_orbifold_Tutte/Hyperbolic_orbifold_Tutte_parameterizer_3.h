@@ -324,7 +324,7 @@ public:
         if(recentring_)
           os << " (solving it again with its deepest point at the origin did not suffice)";
         else
-          os << ", or allow recentring";
+          os << ", or allow recentring (parameters::recentring(true); command line: --recentre)";
       }
       return fail(ERROR_NO_1_TO_1_MAPPING, os.str());
     }
