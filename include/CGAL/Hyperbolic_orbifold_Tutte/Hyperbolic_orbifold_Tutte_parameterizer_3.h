@@ -295,7 +295,11 @@ public:
       certify(P, tile, x, uv, st);
     }
     Unresolved_faces tiny = unresolved_faces(P, uv, false);
-    if(ec == OK && flipped_only(st) && tiny.count > 0 && recentring_) {
+    // (triangles below what double resolves have unreliable angles too: angle-sum failures)
+    const Embedding_certificate& c = st.certificate;
+    const bool local_failure = !c.is_bijective() && c.points_outside_disk == 0 && c.twin_failures == 0 &&
+                               c.cone_failures == 0 && c.border_failures == 0;
+    if(ec == OK && local_failure && tiny.count > 0 && recentring_) {
       const auto t4 = Clock::now();
       recentre(mesh, bhd, landmarks, cut_vertices, tile, P, uv, st);
       const auto dt = Clock::now() - t4;
