@@ -1395,7 +1395,8 @@ private:
 // hyperbolic convex hull of its neighbours (detected by a non-positive incident face, exact
 // test) is moved by a Mobius map to the origin with its one-ring, put at the Euclidean
 // weighted centroid of its neighbours there, and moved back; repeated until no face is
-// flipped or `max_sweeps` sweeps. Seam vertices see their neighbours across the seam
+// flipped, or `max_sweeps` sweeps, or ten sweeps without fewer vertices to move (a region
+// below what double resolves). Seam vertices see their neighbours across the seam
 // through the side pairing. Returns the number of vertex moves.
 inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int max_sweeps = 100)
 {
@@ -1411,7 +1412,7 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
     if(P.kind[owner(a)] == Free) nb[owner(a)].push_back(Nb{b, a, P.edge_weight[e]});
     if(P.kind[owner(b)] == Free) nb[owner(b)].push_back(Nb{a, b, P.edge_weight[e]});
   }
-  int moves = 0;
+  int moves = 0, fewest = P.n + 1, idle = 0;
   for(int sweep = 0; sweep < max_sweeps; ++sweep) {
     int moved = 0;
     for(int v = 0; v < P.n; ++v) {
@@ -1440,6 +1441,13 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
     moves += moved;
     if(moved == 0)
       break;
+    // hopeless (a region below what double resolves): ten sweeps without fewer vertices to move
+    if(moved < fewest) {
+      fewest = moved;
+      idle = 0;
+    } else if(++idle >= 10) {
+      break;
+    }
   }
   return moves;
 }
@@ -1450,10 +1458,17 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
 // embedding is bijective; where its triangles are nearly flat and tiny (a squeezed region of
 // a mesh with nearly flat triangles) the rounded solution may flip one, and a representable
 // valid position exists close by. The certificate judges the result. Returns the moves.
-inline int snap_one_rings(const Flat_problem& P, std::vector<double>& x)
+// More than `max_vertices` such vertices: a whole region below what double resolves, which
+// moving vertices one at a time cannot mend (and the exact tests would take seconds): none moved.
+inline int snap_one_rings(const Flat_problem& P, std::vector<double>& x, int max_vertices = 100)
 {
   const One_ring_faces rings(P);
   auto all_ok = [&](int v) { return rings.all_positive(v, x); };
+  int to_move = 0;
+  for(int v = 0; v < P.n && to_move <= max_vertices; ++v)
+    to_move += (P.kind[v] == Free && !all_ok(v)) ? 1 : 0;
+  if(to_move > max_vertices)
+    return 0;
   int moves = 0;
   for(int v = 0; v < P.n; ++v) {
     if(P.kind[v] != Free || all_ok(v))
