@@ -171,7 +171,8 @@ public:
   /// what `double` resolves in the tile, and the embedding is refused
   /// (`ERROR_NO_1_TO_1_MAPPING`). With recentring, it is then solved again in frames that
   /// move the squeezed region's deepest point to the origin, where `double` resolves far
-  /// smaller triangles (16 more digits per round, one round per 37 radii or so), and the
+  /// smaller triangles (16 more digits per round, one round per 30 radii or so, up to about
+  /// 350 radii, where squared edge lengths underflow the range of `double`), and the
   /// certified result is returned in that frame: `Embedding_statistics::recentred` is
   /// `true` and the written point of a vertex is `Embedding_statistics::frame` applied to
   /// its position in the tile of `make_orbifold_tile()`. The tile of the written
@@ -455,7 +456,7 @@ private:
   // isometry), from the current coordinates, by Newton on it and two rings around it alone:
   // the whole problem's linear solves cannot resolve forces 1e-16 times its largest ones,
   // and their rounding would move the region by more than its size. Each round resolves
-  // the region up to 16 digits deeper (a tube: 37 radii further); rounds go on while they
+  // the region up to 16 digits deeper (a tube: about 30 radii further); rounds go on while they
   // reduce the faces left (at most `max_recentring_rounds`). Then the one-ring repairs.
   // On success, `uv` and the certificate are those of the moved frame, `st.frame` records
   // it; else `uv` and the certificate are left as they were.
