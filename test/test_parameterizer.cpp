@@ -1091,6 +1091,39 @@ TEST_CASE(recentring_goes_past_the_limit_of_double)
   CHECK_MSG(ratio > std::exp(80.0) / 3 && ratio < std::exp(80.0) * 3, "shrinking over 80 radii: " << ratio << " vs e^80 = " << std::exp(80.0));
 }
 
+// The same for a disk: the capsule of length 60 opened at its bottom pole, the five corners
+// on the boundary; refused in the tile, certified with recentring (boundary vertices slide on
+// the moved tile's sides).
+TEST_CASE(recentring_a_disk_type_tube)
+{
+  std::vector<vertex_descriptor> lm;
+  Mesh m = capsule(60, 24, lm);
+  const vertex_descriptor pole = lm[0];
+  CGAL::Euler::make_hole(CGAL::Euler::remove_center_vertex(halfedge(pole, m), m), m);
+  Mesh disk; // a copy without the removed pole (vertex 0): the first ring is vertices 0 to 23
+  CGAL::copy_face_graph(m, disk);
+  m = disk;
+  lm.clear();
+  for(int j : {0, 5, 10, 15, 20}) lm.push_back(vertex_descriptor(j)); // on the boundary, in order
+  for(bool recentring : {false, true}) {
+    UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+    HOT::Embedding_statistics st;
+    const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+      m, lm, uv, HOT::parameters::recentring(recentring, HOT::parameters::embedding_statistics(&st)));
+    if(!recentring) {
+      CHECK(ec == HOT::ERROR_NO_1_TO_1_MAPPING);
+      CHECK_MSG(st.message.find("below what double resolves") != std::string::npos, st.message);
+      continue;
+    }
+    CHECK_MSG(ec == HOT::OK, st.message);
+    CHECK(st.certificate.is_bijective());
+    CHECK(st.recentred);
+    const double defect = worst_centre_of_mass_defect(m, uv, HOT::Cotangent, lm);
+    CHECK_MSG(defect <= 1, "centre-of-mass defect " << defect << " of the tolerance");
+    std::cout << "  disk tube L=60: recentred, defect " << defect << std::endl;
+  }
+}
+
 // A real mesh: five landmarks clustered on the camel's muzzle (a vertex and four vertices two
 // rings away) leave the body, legs and tail far from every landmark, squeezed below what
 // double resolves in the tile (3,947 triangles; 42 flipped faces after every repair: refused).
