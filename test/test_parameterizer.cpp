@@ -1024,6 +1024,22 @@ TEST_CASE(long_tube_shrinks_exponentially_to_the_limit_of_double)
   CHECK_MSG(r.st.message.find("allow recentring") != std::string::npos, r.st.message);
 }
 
+// The public certifier on the written corner coordinates (it recovers the cut from them),
+// in the frame the embedding reports: true when it analyses the map and finds it bijective
+static bool certified_in_its_frame(const Mesh& m, const std::vector<vertex_descriptor>& lm, const UV_map& uv,
+                                   const HOT::Embedding_statistics& st)
+{
+  std::vector<vertex_descriptor> ordered;
+  for(std::size_t i : st.landmark_order) ordered.push_back(lm[i]);
+  if(ordered.empty()) ordered = lm; // (disk type, given order)
+  HOT::Embedding_certificate cert;
+  std::string msg;
+  const HOT::Error_code ec = HOT::certify_hyperbolic_orbifold_embedding(m, ordered, uv, cert, &msg, HOT::parameters::frame(st.frame));
+  if(ec != HOT::OK || !cert.is_bijective())
+    std::cout << "  certifier: " << HOT::error_message(ec) << " " << msg << " " << cert << std::endl;
+  return ec == HOT::OK && cert.is_bijective();
+}
+
 // Past the limit of double: with recentring allowed, the squeezed tube is solved again in
 // frames that move its tip to the origin, where double resolves far smaller triangles. The
 // result is certified in that frame, its cones are the frame's images of the tile's, every
@@ -1077,11 +1093,20 @@ TEST_CASE(recentring_goes_past_the_limit_of_double)
       not_positive += orient(get(uv, h), get(uv, next(h, m)), get(uv, prev(h, m))) == CGAL::POSITIVE ? 0 : 1;
     }
     CHECK_MSG(not_positive == 0, not_positive << " faces not positive");
+    CHECK(certified_in_its_frame(m, lm, uv, st));
     const double defect = worst_centre_of_mass_defect(m, uv, HOT::Cotangent, lm);
     CHECK_MSG(defect <= 1, "tube L=" << L << ": centre-of-mass defect " << defect << " of the tolerance");
     smallest.push_back(smallest_hyperbolic_edge(m, uv));
     std::cout << "  tube L=" << L << ": recentred " << st.recentred << ", smallest hyperbolic edge " << smallest.back()
               << ", " << st.polishing_iterations << " polishing steps, " << st.time_optimization << " s in the solver" << std::endl;
+    if(L > 40) {
+      // in the tile itself, the moved coordinates are not the embedding: the certifier says so
+      HOT::Embedding_certificate in_tile;
+      std::vector<vertex_descriptor> ordered;
+      for(std::size_t i : st.landmark_order) ordered.push_back(lm[i]);
+      const HOT::Error_code cec = HOT::certify_hyperbolic_orbifold_embedding(m, ordered, uv, in_tile);
+      CHECK(cec != HOT::OK || !in_tile.is_bijective());
+    }
     if(L > 40) { // a map needs the tile itself: the locator refuses the moved embedding
       const HOT::internal::Embedding_point_locator<Mesh, UV_map> locator(m, uv, HOT::Sphere_type, 5);
       CHECK(!locator.is_valid());
@@ -1118,6 +1143,7 @@ TEST_CASE(recentring_a_disk_type_tube)
     CHECK_MSG(ec == HOT::OK, st.message);
     CHECK(st.certificate.is_bijective());
     CHECK(st.recentred);
+    CHECK(certified_in_its_frame(m, lm, uv, st));
     const double defect = worst_centre_of_mass_defect(m, uv, HOT::Cotangent, lm);
     CHECK_MSG(defect <= 1, "centre-of-mass defect " << defect << " of the tolerance");
     std::cout << "  disk tube L=60: recentred, defect " << defect << std::endl;
@@ -1142,6 +1168,7 @@ TEST_CASE(camel_with_clustered_landmarks_is_embedded_with_recentring)
   CHECK_MSG(ec == HOT::OK, st.message);
   CHECK(st.certificate.is_bijective());
   CHECK(st.recentred); // the tile itself did not suffice
+  CHECK(certified_in_its_frame(m, lm, uv, st));
   const double defect = worst_centre_of_mass_defect(m, uv, HOT::Cotangent, lm);
   CHECK_MSG(defect <= 1, "centre-of-mass defect " << defect << " of the tolerance");
   std::cout << "  camel, clustered landmarks: recentred, frame " << st.frame << ", defect " << defect << std::endl;

@@ -51,7 +51,9 @@ orientation predicate on the given coordinates.
 \param uvmap for every halfedge `h` of a face, the point of corner `target(h)` in `face(h)`
 \param certificate receives the verdict and the count of each failure
 \param message if not null, receives a one-line explanation of an error
-\param np optional named parameter `orbifold_type` (default: from the mesh's topology)
+\param np optional named parameters `orbifold_type` (default: from the mesh's topology) and
+       `frame` (a `Hyperbolic_isometry_2<double>`, default the identity): the map fills the
+       tile moved by `frame` (`Embedding_statistics::frame` of a recentred embedding)
 
 \return `OK` when the map could be analysed (read `certificate.is_bijective()`), otherwise the
 reason (invalid mesh or landmarks, or a cut that is not a simple path through the landmarks
@@ -96,6 +98,12 @@ Error_code certify_hyperbolic_orbifold_embedding(
   Orbifold_tile<> tile;
   if(make_orbifold_tile(type, k, tile) != OK)
     return fail(k < 5 ? ERROR_TOO_FEW_LANDMARKS : ERROR_NOT_HYPERBOLIC, "");
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value) {
+    const Hyperbolic_isometry_2<double> frame = CGAL::parameters::get_parameter(np, internal_np::frame);
+    if(!frame.is_orientation_preserving())
+      return fail(ERROR_WRONG_PARAMETER, "the frame must be an orientation-preserving isometry");
+    tile = tile.transformed(frame); // a recentred embedding fills the moved tile
+  }
 
   // the cut: edges whose two sides disagree on a shared corner
   internal::Seam_mesh_storage<TriangleMesh> seams(tm);

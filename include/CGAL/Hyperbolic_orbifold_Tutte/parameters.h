@@ -36,6 +36,7 @@ enum gradient_tolerance_t { gradient_tolerance };
 enum embedding_statistics_t { embedding_statistics };
 enum edge_weight_map_t { edge_weight_map };
 enum recentring_t { recentring };
+enum frame_t { frame };
 } // namespace internal_np
 
 namespace parameters {
@@ -74,6 +75,10 @@ CGAL_HOT_NAMED_PARAMETER(edge_weight_map)
 /// `double` to the origin (default `false`; see
 /// `Hyperbolic_orbifold_Tutte_parameterizer_3::set_recentring()`)
 CGAL_HOT_NAMED_PARAMETER(recentring)
+
+/// `Hyperbolic_isometry_2<double>`: for `certify_hyperbolic_orbifold_embedding()`, the frame
+/// of a recentred embedding (`Embedding_statistics::frame`; default the identity)
+CGAL_HOT_NAMED_PARAMETER(frame)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 
