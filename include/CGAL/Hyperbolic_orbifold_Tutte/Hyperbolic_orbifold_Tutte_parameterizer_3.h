@@ -300,7 +300,8 @@ public:
     const Embedding_certificate& c = st.certificate;
     const bool local_failure = !c.is_bijective() && c.points_outside_disk == 0 && c.twin_failures == 0 &&
                                c.cone_failures == 0 && c.border_failures == 0;
-    if(ec == OK && local_failure && tiny.count > 0 && recentring_) {
+    const bool recentring_tried = ec == OK && local_failure && tiny.count > 0 && recentring_;
+    if(recentring_tried) {
       const auto t4 = Clock::now();
       recentre(mesh, bhd, landmarks, cut_vertices, tile, P, uv, st);
       const auto dt = Clock::now() - t4;
@@ -326,9 +327,9 @@ public:
         os << "; " << tiny.count << " triangles are below what double resolves (smallest edge " << tiny.smallest
            << "): a part of the mesh far from every landmark (a long protrusion) shrinks exponentially"
               " in the embedding; put a landmark on it";
-        if(recentring_)
+        if(recentring_tried)
           os << " (solving it again with its deepest point at the origin did not suffice)";
-        else
+        else if(!recentring_)
           os << ", or allow recentring (parameters::recentring(true); command line: --recentre)";
       }
       return fail(ERROR_NO_1_TO_1_MAPPING, os.str());
