@@ -1150,6 +1150,29 @@ TEST_CASE(recentring_a_disk_type_tube)
   }
 }
 
+// One frame has one origin: a capsule of length 80 with its landmarks around the middle has
+// two tubes of 40 radii, both squeezed below what double resolves in the tile, at two
+// different places. Recentring resolves one at a time and never both: refused, saying why.
+TEST_CASE(two_squeezed_protrusions_are_refused_with_recentring)
+{
+  std::vector<vertex_descriptor> lm;
+  Mesh m = capsule(80, 24, lm);
+  // the middle rings: capsule() numbers the vertices ring by ring after the bottom pole
+  const int S = 24, nh = static_cast<int>(std::lround((CGAL_PI / 2) / (2 * CGAL_PI / S)));
+  const int k = nh + static_cast<int>(std::lround(80 / (2 * CGAL_PI / S))) / 2;
+  lm.clear();
+  for(int j : {0, 6, 12, 18}) lm.push_back(vertex_descriptor(1 + k * S + j));
+  lm.push_back(vertex_descriptor(1 + (k + 1) * S + 3));
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+  HOT::Embedding_statistics st;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    m, lm, uv, HOT::parameters::recentring(true, HOT::parameters::embedding_statistics(&st, HOT::parameters::landmark_order(HOT::Tsp_order))));
+  CHECK(ec == HOT::ERROR_NO_1_TO_1_MAPPING);
+  CHECK(!st.recentred);
+  CHECK_MSG(st.message.find("did not suffice") != std::string::npos, st.message);
+  CHECK(get(uv, halfedge(*faces(m).begin(), m)) == Point_2(2, 2)); // the map left unchanged
+}
+
 // A real mesh: five landmarks clustered on the camel's muzzle (a vertex and four vertices two
 // rings away) leave the body, legs and tail far from every landmark, squeezed below what
 // double resolves in the tile (3,947 triangles; 42 flipped faces after every repair: refused).
