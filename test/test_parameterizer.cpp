@@ -126,14 +126,29 @@ struct Embedding_run
   HOT::Embedding_statistics st;
 };
 
+// the embedding into the "h:uv" map (reset to (2, 2) first), with the library's defaults
+// except the given weights, order, gradient tolerance and recentring
 static Embedding_run embed(Mesh& m, const std::vector<vertex_descriptor>& lm, HOT::Weight_type w,
-                           HOT::Landmark_order order = HOT::Given_order)
+                           HOT::Landmark_order order = HOT::Given_order, double tolerance = 1e-10,
+                           bool recentring = false)
 {
   UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
   Embedding_run r;
   r.ec = HOT::hyperbolic_orbifold_Tutte_embedding(
-    m, lm, uv, HOT::parameters::embedding_statistics(&r.st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(w))));
+    m, lm, uv,
+    HOT::parameters::recentring(
+      recentring, HOT::parameters::gradient_tolerance(
+                    tolerance, HOT::parameters::embedding_statistics(
+                                 &r.st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(w))))));
   return r;
+}
+
+// vertices given by their indices
+static std::vector<vertex_descriptor> vertex_list(std::initializer_list<int> indices)
+{
+  std::vector<vertex_descriptor> lm;
+  for(int i : indices) lm.push_back(vertex_descriptor(i));
+  return lm;
 }
 
 // Every mesh vertex is the weighted hyperbolic centre of mass of its neighbours:
@@ -235,8 +250,7 @@ TEST_CASE(sphere_cow_nearly_flat_triangles)
   Mesh m;
   CHECK(read_demo_mesh("cow", m));
   if(num_vertices(m) == 0) return;
-  std::vector<vertex_descriptor> lm;
-  for(int i : {1797, 1248, 644, 2123, 1783, 1609, 2584}) lm.push_back(vertex_descriptor(i));
+  std::vector<vertex_descriptor> lm = vertex_list({1797, 1248, 644, 2123, 1783, 1609, 2584});
   const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
   CHECK_MSG(r.ec == HOT::OK, r.st.message);
   CHECK(r.st.certificate.is_bijective());
@@ -886,8 +900,7 @@ TEST_CASE(sphere_triceratops_stiff_cotangent_weights)
 {
   Mesh m;
   CHECK(read_demo_mesh("triceratops", m));
-  std::vector<vertex_descriptor> lm;
-  for(int i : {2324,1940,204,1606,2424,1175,1364,883,909,2306,2522,1130,1317,2077,2109,1098,1689,35,2276,1596,1048,995,1328,1411,745,1101,428,1109,219,2601,251,1034,510,925,2792,1619,668,1924,2173,2058,1764,641,1941,1166,1855,261,933,2669,1541,735}) lm.push_back(vertex_descriptor(i));
+  std::vector<vertex_descriptor> lm = vertex_list({2324,1940,204,1606,2424,1175,1364,883,909,2306,2522,1130,1317,2077,2109,1098,1689,35,2276,1596,1048,995,1328,1411,745,1101,428,1109,219,2601,251,1034,510,925,2792,1619,668,1924,2173,2058,1764,641,1941,1166,1855,261,933,2669,1541,735});
   const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
   CHECK_MSG(r.ec == HOT::OK, r.st.message);
   CHECK(r.st.converged && r.st.certificate.is_bijective());
@@ -940,13 +953,9 @@ TEST_CASE(polishing_a_region_too_small_for_the_stopping_test)
 {
   Mesh m;
   CHECK(read_demo_mesh("cow", m));
-  std::vector<vertex_descriptor> lm;
-  for(int i : {2868, 2743, 1724, 1308, 1350}) lm.push_back(vertex_descriptor(i));
-  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
-  HOT::Embedding_statistics st;
-  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
-    m, lm, uv, HOT::parameters::embedding_statistics(&st, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::gradient_tolerance(1e-6))));
-  CHECK_MSG(ec == HOT::OK, st.message);
+  const Embedding_run r = embed(m, vertex_list({2868, 2743, 1724, 1308, 1350}), HOT::Cotangent, HOT::Tsp_order, 1e-6);
+  const HOT::Embedding_statistics& st = r.st;
+  CHECK_MSG(r.ec == HOT::OK, st.message);
   CHECK(st.certificate.is_bijective());
   CHECK(st.polishing_iterations > 0);
   std::cout << "  cow tolerance 1e-6: " << st.polishing_iterations << " polishing steps, imbalance " << st.relative_gradient_norm
@@ -1182,13 +1191,11 @@ TEST_CASE(camel_with_clustered_landmarks_is_embedded_with_recentring)
 {
   Mesh m;
   CHECK(read_demo_mesh("camel", m));
-  std::vector<vertex_descriptor> lm;
-  for(int i : {0, 5958, 1, 2482, 39}) lm.push_back(vertex_descriptor(i));
-  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
-  HOT::Embedding_statistics st;
-  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
-    m, lm, uv, HOT::parameters::recentring(true, HOT::parameters::embedding_statistics(&st, HOT::parameters::landmark_order(HOT::Tsp_order))));
-  CHECK_MSG(ec == HOT::OK, st.message);
+  const std::vector<vertex_descriptor> lm = vertex_list({0, 5958, 1, 2482, 39});
+  const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order, 1e-10, true);
+  const HOT::Embedding_statistics& st = r.st;
+  const UV_map uv = m.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  CHECK_MSG(r.ec == HOT::OK, st.message);
   CHECK(st.certificate.is_bijective());
   CHECK(st.recentred); // the tile itself did not suffice
   CHECK(certified_in_its_frame(m, lm, uv, st));
@@ -1204,8 +1211,7 @@ TEST_CASE(flipped_face_at_the_resolution_of_double)
 {
   Mesh m;
   CHECK(read_demo_mesh("cow", m));
-  std::vector<vertex_descriptor> lm;
-  for(int i : {1220, 1367, 1606, 2060, 2878}) lm.push_back(vertex_descriptor(i));
+  std::vector<vertex_descriptor> lm = vertex_list({1220, 1367, 1606, 2060, 2878});
   const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
   CHECK_MSG(r.ec == HOT::OK, r.st.message);
   CHECK(r.st.certificate.is_bijective());

@@ -402,8 +402,6 @@ private:
   // ends), and with `not_positive` also the faces that are not positive (exact test).
   static Unresolved_faces unresolved_faces(const internal::Flat_problem& Q, const std::vector<C>& uv, bool not_positive)
   {
-    typedef Poincare_disk_traits_2<> Disk;
-    const auto orient = Disk().hyperbolic_orientation_2_object();
     Unresolved_faces u;
     u.flag.assign(Q.faces.size(), 0);
     for(std::size_t fi = 0; fi < Q.faces.size(); ++fi) {
@@ -414,10 +412,8 @@ private:
         u.smallest = (std::min)(u.smallest, len);
         u.flag[fi] = u.flag[fi] || len < 256 * ulp;
       }
-      if(not_positive && !u.flag[fi]) {
-        auto pt = [&](int v) { return Disk::Point_2(uv[v].re, uv[v].im); };
-        u.flag[fi] = orient(pt(f[0]), pt(f[1]), pt(f[2])) != POSITIVE;
-      }
+      if(not_positive && !u.flag[fi])
+        u.flag[fi] = !internal::positive_triangle(uv[f[0]], uv[f[1]], uv[f[2]]);
       u.count += u.flag[fi] ? 1 : 0;
     }
     if(u.count == 0)
@@ -498,19 +494,19 @@ private:
         }
       }
       Q = std::move(R);
-      // the faces left, and two rings around them
-      const internal::One_ring_faces rings(Q);
+      // the faces left, and two rings around them (marked at the owners of the variables)
+      auto owner = [&](int v) { return internal::owner_vertex(Q, v); };
       std::vector<char> region(Q.n, 0);
       for(std::size_t f = 0; f < Q.faces.size(); ++f)
         if(left.flag[f])
           for(int v : Q.faces[f])
-            region[rings.owner(v)] = 1;
+            region[owner(v)] = 1;
       for(int ring = 0; ring < 2; ++ring) {
         std::vector<char> grown = region;
         for(const auto& f : Q.faces)
-          if(region[rings.owner(f[0])] || region[rings.owner(f[1])] || region[rings.owner(f[2])])
+          if(region[owner(f[0])] || region[owner(f[1])] || region[owner(f[2])])
             for(int v : f)
-              grown[rings.owner(v)] = 1;
+              grown[owner(v)] = 1;
         region.swap(grown);
       }
       internal::Solver_options opt = options_;

@@ -95,6 +95,12 @@ inline Complex<double> position(const Flat_problem& P, const std::vector<double>
   return C();
 }
 
+// the vertex whose variables v uses: its twin for a seam copy, else v itself
+inline int owner_vertex(const Flat_problem& P, int v)
+{
+  return P.kind[v] == Transformed ? P.twin[v] : v;
+}
+
 // the first variable index of the vertex that owns v's variables, or -1
 inline int variable_owner(const Flat_problem& P, int v)
 {

@@ -1282,8 +1282,7 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
 inline Error_code minimize_energy_on_region(const Flat_problem& P, std::vector<double>& x, const std::vector<char>& region,
                                             const Solver_options& opt, Solver_statistics& st)
 {
-  auto owner = [&](int v) { return P.kind[v] == Transformed ? P.twin[v] : v; };
-  auto moving = [&](int v) { return (P.kind[v] == Free || P.kind[v] == Transformed || P.kind[v] == On_line) && region[owner(v)]; };
+  auto moving = [&](int v) { return P.kind[v] != Fixed && region[owner_vertex(P, v)]; };
   // the region's vertices and their neighbours, in a problem of their own
   std::vector<int> local(P.n, -1), global;
   auto add = [&](int v) {
@@ -1358,6 +1357,14 @@ inline Error_code minimize_energy_on_region(const Flat_problem& P, std::vector<d
   return ec;
 }
 
+// exact test: the hyperbolic triangle (a, b, c) of the Poincare disk is positively oriented
+inline bool positive_triangle(const Complex<double>& a, const Complex<double>& b, const Complex<double>& c)
+{
+  typedef Poincare_disk_traits_2<> Traits;
+  return Traits().hyperbolic_orientation_2_object()(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im),
+                                                    Traits::Point_2(c.re, c.im)) == POSITIVE;
+}
+
 // The faces around each vertex (a seam copy's faces listed at its twin, whose variables it
 // uses) and the exact test of a face's orientation at x: what the one-ring repairs check.
 class One_ring_faces
@@ -1369,14 +1376,11 @@ public:
       for(int i = 0; i < 3; ++i)
         faces_[owner(P.faces[f][i])].push_back(static_cast<int>(f));
   }
-  int owner(int v) const { return P_.kind[v] == Transformed ? P_.twin[v] : v; }
+  int owner(int v) const { return owner_vertex(P_, v); }
   bool positive(int f, const std::vector<double>& x) const
   {
-    typedef Complex<double> C;
-    typedef Poincare_disk_traits_2<> Traits;
-    const C a = position(P_, x, P_.faces[f][0]), b = position(P_, x, P_.faces[f][1]), c = position(P_, x, P_.faces[f][2]);
-    return Traits().hyperbolic_orientation_2_object()(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im),
-                                                      Traits::Point_2(c.re, c.im)) == POSITIVE;
+    return positive_triangle(position(P_, x, P_.faces[f][0]), position(P_, x, P_.faces[f][1]),
+                             position(P_, x, P_.faces[f][2]));
   }
   bool all_positive(int v, const std::vector<double>& x) const
   {
