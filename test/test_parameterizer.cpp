@@ -409,14 +409,14 @@ static bool make_disk_problem(Mesh& m, const std::vector<vertex_descriptor>& lm,
   for(auto h : halfedges(sm))
     if(is_border(h, sm)) { bhd = h; break; }
   HOT::make_orbifold_tile(HOT::Disk_type, int(lm.size()), D.tile);
-  std::unordered_map<vertex_descriptor, int> bi;
+  std::vector<vertex_descriptor> bv;
   std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
   std::string msg;
-  if(HOT::internal::build_flat_topology(sm, bhd, lm, D.tile, D.P, bi, cv, msg) != HOT::OK)
+  if(HOT::internal::build_flat_topology(sm, bhd, lm, D.tile, D.P, bv, cv, msg) != HOT::OK)
     return false;
   D.pts.resize(D.P.n_base);
-  for(auto& e : bi)
-    D.pts[e.second] = m.point(e.first);
+  for(int i = 0; i < D.P.n_base; ++i)
+    D.pts[i] = m.point(bv[i]);
   HOT::internal::compute_edge_weights(D.P, D.pts, HOT::Cotangent, 1e-6);
   return HOT::internal::initialize_embedding(D.P, D.tile, D.pts, D.x) == HOT::OK;
 }
@@ -758,12 +758,12 @@ static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& 
   for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
   HOT::Orbifold_tile<> tile;
   HOT::make_orbifold_tile(HOT::Sphere_type, k, tile);
-  std::unordered_map<vertex_descriptor, int> bi;
+  std::vector<vertex_descriptor> bv;
   std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
   std::string msg;
-  if(HOT::internal::build_flat_topology(sm, bhd, ordered, tile, S.P, bi, cv, msg) != HOT::OK) return false;
+  if(HOT::internal::build_flat_topology(sm, bhd, ordered, tile, S.P, bv, cv, msg) != HOT::OK) return false;
   std::vector<K::Point_3> pts(S.P.n_base);
-  for(auto& e : bi) pts[e.second] = m.point(e.first);
+  for(int i = 0; i < S.P.n_base; ++i) pts[i] = m.point(bv[i]);
   HOT::internal::compute_edge_weights(S.P, pts, HOT::Cotangent, 1e-6);
   return HOT::internal::initialize_embedding(S.P, tile, pts, S.x, &S.interior) == HOT::OK;
 }

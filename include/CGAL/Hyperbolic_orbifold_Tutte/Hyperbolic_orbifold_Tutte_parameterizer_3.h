@@ -215,10 +215,10 @@ public:
       return fail(ERROR_NOT_HYPERBOLIC, "");
 
     internal::Flat_problem P;
-    std::unordered_map<TM_vertex_descriptor, int> base_index;
+    std::vector<TM_vertex_descriptor> base_vertex;
     std::vector<vertex_descriptor> cut_vertices;
     std::string msg;
-    Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_index, cut_vertices, msg);
+    Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_vertex, cut_vertices, msg);
     if(ec != OK) {
       st.problem_vertices.assign(P.problem_vertices.begin(), P.problem_vertices.end());
       return fail(ec, msg);
@@ -230,12 +230,9 @@ public:
     const Triangle_mesh& tm = mesh.mesh();
     Vertex_point_map vpm = get(vertex_point, tm);
     std::vector<Point_3> base_points(P.n_base);
-    for(const auto& bi : base_index)
-      base_points[bi.second] = get(vpm, bi.first);
+    for(int i = 0; i < P.n_base; ++i)
+      base_points[i] = get(vpm, base_vertex[i]);
     if(user_weights_) {
-      std::vector<TM_vertex_descriptor> base_vertex(P.n_base);
-      for(const auto& bi : base_index)
-        base_vertex[bi.second] = bi.first;
       // each base edge once in total: its copies (two along a seam) share the weight
       std::unordered_map<long long, int> copies;
       auto key = [](int a, int b) { return (static_cast<long long>(std::min(a, b)) << 32) | std::max(a, b); };
@@ -475,10 +472,10 @@ private:
       frame = step * frame;
       moved = tile.transformed(frame);
       internal::Flat_problem R;
-      std::unordered_map<TM_vertex_descriptor, int> base_index;
+      std::vector<TM_vertex_descriptor> base_vertex;
       Cut_vertices cut_vertices_r;
       std::string msg;
-      if(internal::build_flat_topology(mesh, bhd, landmarks, moved, R, base_index, cut_vertices_r, msg) != OK ||
+      if(internal::build_flat_topology(mesh, bhd, landmarks, moved, R, base_vertex, cut_vertices_r, msg) != OK ||
          cut_vertices_r != cut_vertices)
         return; // (the same mesh and landmarks as the first time: not expected)
       R.edge_weight = P.edge_weight;

@@ -123,10 +123,10 @@ Error_code certify_hyperbolic_orbifold_embedding(
     return fail(ERROR_CUT_FAILED, "the map has no cut: a closed mesh must be cut open through the landmarks");
 
   internal::Flat_problem P;
-  std::unordered_map<vertex_descriptor, int> base_index;
+  std::vector<vertex_descriptor> base_vertex;
   std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> cut_vertices;
   std::string why;
-  const Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_index, cut_vertices, why);
+  const Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_vertex, cut_vertices, why);
   if(ec != OK)
     return fail(ec, why);
 

@@ -205,10 +205,10 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
     const auto wmap = get_parameter(np, internal_np::edge_weight_map);
     parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });
   }
-  std::unordered_map<halfedge_descriptor, Point_2, boost::hash<halfedge_descriptor> > canonical;
+  internal::Seam_vertex_points<Mesh, Point_2> canonical(tm);
   std::vector<std::size_t> order_used = st.landmark_order;
   const Error_code ec =
-    parameterizer.parameterize(mesh, bhd, ordered, boost::associative_property_map<decltype(canonical)>(canonical), &st);
+    parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), &st);
   st.landmark_order = order_used;
   st.time_setup += time_cut;
   if(ec != OK)
@@ -219,7 +219,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
       const typename boost::graph_traits<Mesh>::halfedge_descriptor sh(h, false);
       const auto vd = target(sh, mesh);
-      put(uvmap, h, canonical.at(vd.hd.tmhd));
+      put(uvmap, h, canonical.at(vd));
     }
   return OK;
 }

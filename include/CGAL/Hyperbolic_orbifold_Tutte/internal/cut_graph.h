@@ -26,6 +26,11 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -821,16 +826,29 @@ compute_landmark_distance_matrix(
 
   const std::size_t k = lm.size();
   D.assign(k, std::vector<double>(k, 0.));
-  Dijkstra_workspace ws;
-  ws.init(g.size());
-  std::vector<char> targets(g.size(), 0);
-  for(std::size_t i = 0; i + 1 < k; ++i) {
-    // D is symmetric: from landmark i we only need landmarks i+1..k-1.
-    std::fill(targets.begin(), targets.end(), char(0));
-    for(std::size_t j = i + 1; j < k; ++j) targets[lm[j]] = 1;
-    dijkstra_to_targets(g, ws, lm[i], targets, k - 1 - i);
-    for(std::size_t j = i + 1; j < k; ++j) D[i][j] = D[j][i] = ws.distance(lm[j]);
+  // one run per landmark, independent of each other (in parallel where TBB is available,
+  // each with its own scratch arrays: the same distances whatever the number of threads)
+  auto runs = [&](std::size_t begin, std::size_t end) {
+    Dijkstra_workspace ws;
+    ws.init(g.size());
+    std::vector<char> targets(g.size(), 0);
+    for(std::size_t i = begin; i < end; ++i) {
+      // D is symmetric: from landmark i we only need landmarks i+1..k-1.
+      std::fill(targets.begin(), targets.end(), char(0));
+      for(std::size_t j = i + 1; j < k; ++j) targets[lm[j]] = 1;
+      dijkstra_to_targets(g, ws, lm[i], targets, k - 1 - i);
+      for(std::size_t j = i + 1; j < k; ++j) D[i][j] = D[j][i] = ws.distance(lm[j]);
+    }
+  };
+  if(k < 2) return D;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(g.size() > 20000) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, k - 1, 1),
+                      [&](const tbb::blocked_range<std::size_t>& r) { runs(r.begin(), r.end()); });
+    return D;
   }
+#endif
+  runs(0, k - 1);
   return D;
 }
 

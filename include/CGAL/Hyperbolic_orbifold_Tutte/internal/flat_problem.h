@@ -7,6 +7,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/hyperbolic_energy.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -115,14 +116,15 @@ inline int variable_owner(const Flat_problem& P, int v)
 // Builds the topology part of a Flat_problem from a seam mesh (a topological disk) whose
 // border loop goes through copies of the landmarks. `landmarks` are base-mesh vertices in
 // cone order. Fills faces, base, border_loop, side, corner, kind, var, twin, transform,
-// fixed, line_k0/D, edges (weights are set by the caller).
+// fixed, line_k0/D, edges (weights are set by the caller); `base_vertex`: the mesh vertex of
+// each base index (the order of vertices(tm)).
 template <class SeamMesh, class Tile>
 Error_code build_flat_topology(const SeamMesh& mesh,
                                typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
                                const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
                                const Tile& tile,
                                Flat_problem& P,
-                               std::unordered_map<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor, int>& base_index,
+                               std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& base_vertex,
                                std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor>& cut_vertices,
                                std::string& message)
 {
@@ -132,6 +134,7 @@ Error_code build_flat_topology(const SeamMesh& mesh,
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename boost::graph_traits<TM>::vertex_descriptor tm_vertex_descriptor;
+  typedef typename boost::graph_traits<TM>::halfedge_descriptor tm_halfedge_descriptor;
   typedef Complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
 
@@ -141,30 +144,30 @@ Error_code build_flat_topology(const SeamMesh& mesh,
   P.type = tile.type();
   P.k = k;
 
-  // index the base mesh
-  base_index.clear();
-  for(tm_vertex_descriptor v : vertices(tm)) {
-    const int i = static_cast<int>(base_index.size());
-    base_index.emplace(v, i);
-  }
-  P.n_base = static_cast<int>(base_index.size());
+  // index the base mesh: a vertex's base index is its position in vertices(tm)
+  const Dense_index<tm_vertex_descriptor> base_of(vertices(tm));
+  base_vertex.assign(vertices(tm).begin(), vertices(tm).end());
+  P.n_base = static_cast<int>(base_vertex.size());
 
-  // index the seam-mesh vertices
-  std::unordered_map<halfedge_descriptor, int, boost::hash<halfedge_descriptor> > vindex;
+  // index the seam-mesh vertices by their canonical halfedge of tm (a Seam_mesh vertex
+  // descriptor is a halfedge of tm, not on the seam)
+  const Dense_index<tm_halfedge_descriptor> hindex(halfedges(tm));
+  std::vector<int> vindex(hindex.size(), -1);
   cut_vertices.clear();
   for(vertex_descriptor vd : vertices(mesh)) {
-    vindex.emplace(vd.hd, static_cast<int>(cut_vertices.size()));
+    vindex[hindex(vd.hd.tmhd)] = static_cast<int>(cut_vertices.size());
     cut_vertices.push_back(vd);
   }
   P.n = static_cast<int>(cut_vertices.size());
   auto index_of = [&](vertex_descriptor vd) -> int {
-    auto it = vindex.find(vd.hd);
-    return it == vindex.end() ? -1 : it->second;
+    const std::size_t i = hindex(vd.hd.tmhd);
+    return i == Dense_index<tm_halfedge_descriptor>::npos ? -1 : vindex[i];
   };
   P.base.resize(P.n);
   for(int i = 0; i < P.n; ++i)
-    P.base[i] = base_index.at(target(cut_vertices[i].hd.tmhd, tm));
+    P.base[i] = static_cast<int>(base_of(target(cut_vertices[i].hd.tmhd, tm)));
 
+  P.faces.reserve(num_faces(tm));
   for(face_descriptor f : faces(mesh)) {
     std::array<int, 3> t;
     int j = 0;
@@ -229,12 +232,12 @@ Error_code build_flat_topology(const SeamMesh& mesh,
   // cone index of each base vertex
   std::vector<int> cone_of_base(P.n_base, -1);
   for(int c = 0; c < k; ++c) {
-    auto it = base_index.find(landmarks[c]);
-    if(it == base_index.end()) {
+    const std::size_t b = base_of(landmarks[c]);
+    if(b == Dense_index<tm_vertex_descriptor>::npos) {
       message = "a landmark is not a vertex of the mesh";
       return ERROR_LANDMARK_OUT_OF_RANGE;
     }
-    cone_of_base[it->second] = c;
+    cone_of_base[b] = c;
   }
 
   // Positions of cone copies along the loop, in loop order.

@@ -61,80 +61,91 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
       if(other[k] == b) return id[k];
     return -1;
   };
-  // the copies of each base edge (two along a seam, one elsewhere): edges sorted by base pair
+  // the copies of a base edge (two along a seam, one elsewhere): only an edge with both ends
+  // on the border loop can have two; those are sorted by base pair
+  std::vector<char> on_loop(P.n, 0);
+  for(int v : P.border_loop)
+    on_loop[v] = 1;
   auto key = [](int a, int b) { return (static_cast<long long>(std::min(a, b)) << 32) | static_cast<long long>(std::max(a, b)); };
-  std::vector<std::pair<long long, int> > by_base(m);
+  std::vector<std::pair<long long, int> > by_base;
   for(std::size_t e = 0; e < m; ++e)
-    by_base[e] = std::make_pair(key(P.base[P.edges[e][0]], P.base[P.edges[e][1]]), static_cast<int>(e));
+    if(on_loop[P.edges[e][0]] && on_loop[P.edges[e][1]])
+      by_base.emplace_back(key(P.base[P.edges[e][0]], P.base[P.edges[e][1]]), static_cast<int>(e));
   std::sort(by_base.begin(), by_base.end());
 
   for(const auto& t : P.faces) {
-    const Point3* p[3];
-    for(int i = 0; i < 3; ++i)
-      p[i] = &base_points[P.base[t[i]]];
-    double len[3]; // len[i]: length of the edge opposite corner i
-    double vec[3][3];
+    double q[3][3]; // the corners' coordinates
     for(int i = 0; i < 3; ++i) {
-      const Point3& a = *p[(i + 1) % 3];
-      const Point3& b = *p[(i + 2) % 3];
-      vec[i][0] = CGAL::to_double(b.x()) - CGAL::to_double(a.x());
-      vec[i][1] = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
-      vec[i][2] = CGAL::to_double(b.z()) - CGAL::to_double(a.z());
-      len[i] = std::sqrt(vec[i][0] * vec[i][0] + vec[i][1] * vec[i][1] + vec[i][2] * vec[i][2]);
+      const Point3& p = base_points[P.base[t[i]]];
+      q[i][0] = CGAL::to_double(p.x());
+      q[i][1] = CGAL::to_double(p.y());
+      q[i][2] = CGAL::to_double(p.z());
     }
-    double angle[3];
+    // at corner i, between the edges to corners i+1 and i+2: cotangent dot / |cross|, and
+    // tan(angle / 2) = |cross| / (|u| |v| + dot) (no trigonometric function)
+    double cot[3], half_tan[3], len[3]; // len[i]: length of the edge opposite corner i
     for(int i = 0; i < 3; ++i) {
-      // angle at corner i between edges to i+1 and i+2
-      const Point3& o = *p[i];
-      const Point3& a = *p[(i + 1) % 3];
-      const Point3& b = *p[(i + 2) % 3];
-      const double u[3] = {CGAL::to_double(a.x()) - CGAL::to_double(o.x()), CGAL::to_double(a.y()) - CGAL::to_double(o.y()),
-                           CGAL::to_double(a.z()) - CGAL::to_double(o.z())};
-      const double v[3] = {CGAL::to_double(b.x()) - CGAL::to_double(o.x()), CGAL::to_double(b.y()) - CGAL::to_double(o.y()),
-                           CGAL::to_double(b.z()) - CGAL::to_double(o.z())};
+      const double* o = q[i];
+      const double* a = q[(i + 1) % 3];
+      const double* b = q[(i + 2) % 3];
+      const double u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]};
+      const double v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
       const double dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
       const double cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
-      angle[i] = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot);
+      const double cr = std::sqrt(cx * cx + cy * cy + cz * cz);
+      const double lu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+      const double lv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      cot[i] = dot / cr; // +-infinity for a flat corner (exactly degenerate faces are refused before)
+      half_tan[i] = cr / (lu * lv + dot);
+      const double w[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      len[i] = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     }
     for(int i = 0; i < 3; ++i) {
       // edge opposite corner i: vertices i+1, i+2
       const int a = t[(i + 1) % 3], b = t[(i + 2) % 3];
       double w = 0;
       switch(type) {
-        case Cotangent: w = 0.5 / std::tan(angle[i]); break;
+        case Cotangent: w = 0.5 * cot[i]; break;
         case Uniform: w = 0.5; break;
-        case Mean_value: {
-          const double ta = std::tan(angle[(i + 1) % 3] / 2), tb = std::tan(angle[(i + 2) % 3] / 2);
-          w = 0.5 * (ta + tb) / len[i];
-          break;
-        }
+        case Mean_value: w = 0.5 * (half_tan[(i + 1) % 3] + half_tan[(i + 2) % 3]) / len[i]; break;
       }
       const int e = edge_id(a, b);
       if(e >= 0)
         P.edge_weight[e] += w;
     }
   }
-  // Per base edge (a run of by_base): the total over its copies. Uniform: 1 per base edge;
+  // Per base edge (its copies): the total over its copies. Uniform: 1 per base edge;
   // cotangent sums below epsilon are clamped (degenerate geometry); a seam copy with a
   // negative half shares the total with its twin copy.
-  for(std::size_t i = 0; i < m;) {
-    std::size_t j = i;
+  auto settle = [&](const int* copy, std::size_t copies) {
     double sum = 0;
-    while(j < m && by_base[j].first == by_base[i].first)
-      sum += P.edge_weight[by_base[j++].second];
-    const double copies = static_cast<double>(j - i);
+    for(std::size_t k = 0; k < copies; ++k)
+      sum += P.edge_weight[copy[k]];
     bool rebalanced = false;
-    for(std::size_t k = i; k < j; ++k) {
-      double& w = P.edge_weight[by_base[k].second];
-      if(type == Uniform) w = 1.0 / copies;
-      else if(!(sum >= epsilon)) w = epsilon / copies;
-      else if(!(w > 0)) { w = sum / copies; rebalanced = true; }
+    for(std::size_t k = 0; k < copies; ++k) {
+      double& w = P.edge_weight[copy[k]];
+      if(type == Uniform) w = 1.0 / static_cast<double>(copies);
+      else if(!(sum >= epsilon)) w = epsilon / static_cast<double>(copies);
+      else if(!(w > 0)) { w = sum / static_cast<double>(copies); rebalanced = true; }
     }
     if(rebalanced) { // keep the total of the copies
       double total = 0;
-      for(std::size_t k = i; k < j; ++k) total += P.edge_weight[by_base[k].second];
-      for(std::size_t k = i; k < j; ++k) P.edge_weight[by_base[k].second] *= sum / total;
+      for(std::size_t k = 0; k < copies; ++k) total += P.edge_weight[copy[k]];
+      for(std::size_t k = 0; k < copies; ++k) P.edge_weight[copy[k]] *= sum / total;
     }
+  };
+  for(std::size_t e = 0; e < m; ++e)
+    if(!(on_loop[P.edges[e][0]] && on_loop[P.edges[e][1]])) {
+      const int c = static_cast<int>(e);
+      settle(&c, 1);
+    }
+  std::vector<int> group;
+  for(std::size_t i = 0; i < by_base.size();) {
+    std::size_t j = i;
+    group.clear();
+    while(j < by_base.size() && by_base[j].first == by_base[i].first)
+      group.push_back(by_base[j++].second);
+    settle(group.data(), group.size());
     i = j;
   }
 }
@@ -180,6 +191,13 @@ public:
     if(use_cholmod_) return cholmod_.info() == Eigen::Success; // LL^T fails on an indefinite matrix
 #endif
     return simplicial_.info() == Eigen::Success && (simplicial_.vectorD().array().real() > 0).all();
+  }
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> solve(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& b) const
+  {
+#ifdef CGAL_HOT_USE_CHOLMOD
+    if(use_cholmod_) return cholmod_.solve(b);
+#endif
+    return simplicial_.solve(b);
   }
   template <class Rhs>
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> solve(const Rhs& b) const
@@ -287,7 +305,9 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
     typedef Eigen::SparseMatrix<double> SpMat;
     std::vector<Eigen::Triplet<double> > trip;
     trip.reserve(4 * P.edges.size() + ni);
-    Eigen::VectorXd bx = Eigen::VectorXd::Zero(ni), by = Eigen::VectorXd::Zero(ni);
+    Eigen::MatrixXd bxy = Eigen::MatrixXd::Zero(ni, 2); // both coordinates: one solve of two columns
+    auto bx = bxy.col(0);
+    auto by = bxy.col(1);
     std::vector<double> diag(ni, 0.0);
     auto klein = [](const C& p) { return p * (2.0 / (1.0 + norm(p))); };
     for(std::size_t e = 0; e < P.edges.size(); ++e) {
@@ -317,7 +337,9 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
     solver.compute(Lm);
     if(!solver.definite())
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    const Eigen::VectorXd kx = solver.solve(bx), ky = solver.solve(by);
+    const Eigen::MatrixXd kxy = solver.solve(bxy);
+    const auto kx = kxy.col(0);
+    const auto ky = kxy.col(1);
     if(solver.info() != Eigen::Success)
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     for(int v = 0; v < P.n; ++v) {
@@ -387,6 +409,7 @@ public:
   double energy(const std::vector<double>& x) const
   {
     const std::size_t m = P_.edges.size();
+    terms_x_.clear(); // the per-edge terms no longer belong to one point
     edge_energy_.resize(m);
     for_each_edge([&](std::size_t e) {
       const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
@@ -453,6 +476,8 @@ public:
       }
       hessian_offset_ = 0;
     }
+    terms_x_ = x;
+    noise_.clear();
     // ...then summed in edge order: the same result bit for bit whatever the number of threads
     g.assign(P_.n_vars, 0.0);
     g_abs_.assign(P_.n_vars, 0.0);
@@ -544,8 +569,13 @@ private:
   void rounding_noise(const std::vector<double>& x, std::vector<double>& noise) const
   {
     const double u = std::numeric_limits<double>::epsilon() / 2;
-    evaluate(x, noise, nullptr); // the per-edge terms and forces at x
-    std::fill(noise.begin(), noise.end(), 0.0);
+    if(terms_x_ != x || terms_x_.empty())
+      evaluate(x, noise, nullptr); // the per-edge terms and forces at x
+    else if(!noise_.empty()) { // at the point of the last evaluation, and computed there already
+      noise = noise_;
+      return;
+    }
+    noise.assign(P_.n_vars, 0.0);
     int gi[4];
     for(std::size_t e = 0; e < P_.edges.size(); ++e) {
       const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
@@ -557,6 +587,7 @@ private:
       for(int i = 0; i < n; ++i)
         noise[gi[i]] += std::abs(edge_gradient_[4 * e + i]) * rel;
     }
+    noise_ = noise;
   }
 
 private:
@@ -648,39 +679,112 @@ private:
     return n;
   }
 
+  // Every edge's block is dense over the variables of its two ends' owners, so the pattern
+  // is built per owner: an owner's columns hold the rows of its neighbouring owners
+  // (itself included: the diagonal), in variable order; no triplets, no sorting of entries.
   void build_pattern() const
   {
-    std::vector<Eigen::Triplet<double> > trip;
-    trip.reserve(16 * P_.edges.size());
-    slot_begin_.assign(P_.edges.size() + 1, 0);
-    int gi[4];
-    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
-      const int n = local_variables(e, gi);
-      slot_begin_[e + 1] = slot_begin_[e] + n * n;
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j)
-          trip.emplace_back(gi[i], gi[j], 1.0);
+    const int nv = P_.n_vars;
+    const std::size_t m = P_.edges.size();
+    // owners as groups of consecutive variables: group of each variable, its start and size
+    std::vector<int> group_of(nv, -1), gstart, gdim;
+    for(int v = 0; v < P_.n; ++v)
+      if(P_.kind[v] == Free || P_.kind[v] == On_line) {
+        const int d = P_.kind[v] == Free ? 2 : 1;
+        for(int i = 0; i < d; ++i)
+          group_of[P_.var[v] + i] = static_cast<int>(gstart.size());
+        gstart.push_back(P_.var[v]);
+        gdim.push_back(d);
+      }
+    const int ng = static_cast<int>(gstart.size());
+    auto group_of_end = [&](std::size_t e, int s) {
+      const int v = P_.edges[e][s];
+      return P_.kind[v] == Fixed ? -1 : group_of[variable_owner(P_, v)];
+    };
+    // neighbouring groups (compressed rows, sorted by first variable, duplicates removed)
+    std::vector<int> first(ng + 1, 0);
+    for(std::size_t e = 0; e < m; ++e) {
+      const int ga = group_of_end(e, 0), gb = group_of_end(e, 1);
+      if(ga >= 0 && gb >= 0 && ga != gb) { ++first[ga + 1]; ++first[gb + 1]; }
     }
-    for(int i = 0; i < P_.n_vars; ++i) // the diagonal, always (shifts)
-      trip.emplace_back(i, i, 1.0);
-    pattern_.resize(P_.n_vars, P_.n_vars);
-    pattern_.setFromTriplets(trip.begin(), trip.end());
-    pattern_.makeCompressed();
-    slots_.resize(slot_begin_.back());
-    const int* outer = pattern_.outerIndexPtr();
-    const int* inner = pattern_.innerIndexPtr();
-    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
-      const int n = local_variables(e, gi);
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j) {
-          // entry (row gi[i], column gi[j])
-          const int* first = inner + outer[gi[j]];
-          const int* last = inner + outer[gi[j] + 1];
-          slots_[slot_begin_[e] + i * n + j] = static_cast<int>(std::lower_bound(first, last, gi[i]) - inner);
+    for(int g = 0; g < ng; ++g)
+      first[g + 1] += first[g] + 1; // + itself
+    std::vector<int> nb(first[ng]);
+    {
+      std::vector<int> fill(first.begin(), first.end() - 1);
+      for(int g = 0; g < ng; ++g)
+        nb[fill[g]++] = g;
+      for(std::size_t e = 0; e < m; ++e) {
+        const int ga = group_of_end(e, 0), gb = group_of_end(e, 1);
+        if(ga >= 0 && gb >= 0 && ga != gb) { nb[fill[ga]++] = gb; nb[fill[gb]++] = ga; }
+      }
+    }
+    // (groups are numbered in vertex order, their variables need not be: sort by variable)
+    std::vector<int> row_first(ng + 1, 0), row_offset(nb.size()); // per neighbour: its first row in the column
+    {
+      std::size_t w = 0;
+      for(int g = 0; g < ng; ++g) {
+        const std::size_t b = w;
+        std::sort(nb.begin() + first[g], nb.begin() + first[g + 1], [&](int p, int q) { return gstart[p] < gstart[q]; });
+        for(int k = first[g]; k < first[g + 1]; ++k)
+          if(w == b || nb[w - 1] != nb[k]) nb[w++] = nb[k];
+        first[g] = static_cast<int>(b);
+        int off = 0;
+        for(std::size_t k = b; k < w; ++k) {
+          row_offset[k] = off;
+          off += gdim[nb[k]];
         }
+        row_first[g + 1] = off; // rows per column of this group
+      }
+      first[ng] = static_cast<int>(w);
+      nb.resize(w);
+      row_offset.resize(w);
+    }
+    // compressed columns
+    pattern_.resize(nv, nv);
+    std::vector<int> outer(nv + 1, 0);
+    for(int c = 0; c < nv; ++c)
+      outer[c + 1] = outer[c] + row_first[group_of[c] + 1];
+    pattern_.resizeNonZeros(outer[nv]);
+    std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+    int* inner = pattern_.innerIndexPtr();
+    for(int c = 0; c < nv; ++c) {
+      const int g = group_of[c];
+      int k = outer[c];
+      for(int q = first[g]; q < first[g + 1]; ++q)
+        for(int i = 0; i < gdim[nb[q]]; ++i)
+          inner[k++] = gstart[nb[q]] + i;
     }
     std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
     pattern_nnz_ = pattern_.nonZeros();
+    // per edge, the position of each entry of its block
+    slot_begin_.assign(m + 1, 0);
+    int gi[4];
+    for(std::size_t e = 0; e < m; ++e) {
+      const int n = local_variables(e, gi);
+      slot_begin_[e + 1] = slot_begin_[e] + n * n;
+    }
+    slots_.resize(slot_begin_.back());
+    auto offset_in_column = [&](int g, int h) { // first row of group h in the columns of group g
+      const auto it = std::lower_bound(nb.begin() + first[g], nb.begin() + first[g + 1], h,
+                                       [&](int p, int q) { return gstart[p] < gstart[q]; });
+      return row_offset[it - nb.begin()];
+    };
+    for(std::size_t e = 0; e < m; ++e) {
+      const int n = local_variables(e, gi);
+      if(n == 0)
+        continue;
+      const int g0 = group_of[gi[0]], g1 = group_of[gi[n - 1]];
+      const int off[2][2] = {{offset_in_column(g0, g0), offset_in_column(g0, g1)},
+                             {offset_in_column(g1, g0), offset_in_column(g1, g1)}};
+      for(int j = 0; j < n; ++j) {
+        const int col = gi[j], gc = group_of[col];
+        for(int i = 0; i < n; ++i) {
+          const int gr = group_of[gi[i]];
+          slots_[slot_begin_[e] + i * n + j] = outer[col] + off[gc == g1][gr == g1] + (gi[i] - gstart[gr]);
+        }
+      }
+    }
   }
 
   static void project_psd(Eigen::Matrix4d& M, int n)
@@ -722,6 +826,8 @@ private:
   mutable std::vector<int> slot_begin_, slots_;
   mutable std::vector<double> edge_energy_, edge_gradient_, edge_hessian_;
   mutable std::size_t hessian_offset_ = 0; // slot of the first edge of the chunk in edge_hessian_
+  mutable std::vector<double> terms_x_;     // the point of the last evaluate(): the per-edge terms are its
+  mutable std::vector<double> noise_;       // rounding_noise() there, once computed
 };
 
 // Preconditioner of the Newton systems: the Hessian of E = (1/2) sum w d^2 is, for short

@@ -5,38 +5,73 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SEAM_MESH_STORAGE_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SEAM_MESH_STORAGE_H
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+
 #include <CGAL/boost/graph/Seam_mesh.h>
 
-#include <boost/functional/hash.hpp>
 #include <boost/property_map/property_map.hpp>
 
-#include <unordered_map>
+#include <vector>
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
-// A CGAL::Seam_mesh over a const mesh, its seam flags held in hash maps (so the input
-// mesh is not modified), all flags false at construction.
+// A read-write property map of flags: one char per descriptor of a range, found through
+// its dense index (a vector for Surface_mesh, a flat hash table for handles), not a
+// std::unordered_map per lookup: Seam_mesh asks for these flags in every target().
+template <class Descriptor>
+class Dense_flag_map
+{
+public:
+  typedef Descriptor key_type;
+  typedef bool value_type;
+  typedef bool reference;
+  typedef boost::read_write_property_map_tag category;
+
+  Dense_flag_map(const Dense_index<Descriptor>* index, std::vector<char>* flags) : index_(index), flags_(flags) {}
+
+  friend bool get(const Dense_flag_map& m, const Descriptor& d)
+  {
+    const std::size_t i = (*m.index_)(d);
+    return i != Dense_index<Descriptor>::npos && (*m.flags_)[i] != 0;
+  }
+  friend void put(const Dense_flag_map& m, const Descriptor& d, bool b)
+  {
+    const std::size_t i = (*m.index_)(d);
+    if(i != Dense_index<Descriptor>::npos)
+      (*m.flags_)[i] = b ? 1 : 0;
+  }
+
+private:
+  const Dense_index<Descriptor>* index_;
+  std::vector<char>* flags_;
+};
+
+// A CGAL::Seam_mesh over a const mesh, its seam flags held apart (so that the input mesh
+// is not modified), all flags false at construction. Not copyable: the mesh's property
+// maps point into this object.
 template <class TriangleMesh>
 struct Seam_mesh_storage
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
-  typedef std::unordered_map<edge_descriptor, bool, boost::hash<edge_descriptor> > Edge_flags;
-  typedef std::unordered_map<vertex_descriptor, bool, boost::hash<vertex_descriptor> > Vertex_flags;
-  typedef boost::associative_property_map<Edge_flags> SEM;
-  typedef boost::associative_property_map<Vertex_flags> SVM;
+  typedef Dense_flag_map<edge_descriptor> SEM;
+  typedef Dense_flag_map<vertex_descriptor> SVM;
   typedef CGAL::Seam_mesh<TriangleMesh, SEM, SVM> Mesh;
   typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
 
-  Edge_flags edge_flags;
-  Vertex_flags vertex_flags;
+  Dense_index<edge_descriptor> edge_index;
+  Dense_index<vertex_descriptor> vertex_index;
+  std::vector<char> edge_flags, vertex_flags;
   Mesh mesh;
 
   explicit Seam_mesh_storage(const TriangleMesh& tm)
-    : edge_flags(initial_edges(tm)), vertex_flags(initial_vertices(tm)), mesh(tm, SEM(edge_flags), SVM(vertex_flags))
+    : edge_index(edges(tm)), vertex_index(vertices(tm)), edge_flags(edge_index.size(), 0),
+      vertex_flags(vertex_index.size(), 0), mesh(tm, SEM(&edge_index, &edge_flags), SVM(&vertex_index, &vertex_flags))
   {}
+  Seam_mesh_storage(const Seam_mesh_storage&) = delete;
+  Seam_mesh_storage& operator=(const Seam_mesh_storage&) = delete;
 
   // a halfedge on the border of the cut mesh; false if there is none (nothing cut)
   bool border_halfedge(halfedge_descriptor& bhd) const
@@ -48,22 +83,53 @@ struct Seam_mesh_storage
       }
     return false;
   }
+};
+
+// Points of the vertices of a Seam_mesh over `TriangleMesh` (a Seam_mesh vertex descriptor
+// is a halfedge of the mesh): a vector through the dense index of the mesh's halfedges.
+// `map()` is the writable property map (key: the seam mesh's vertex descriptor).
+template <class SeamMesh, class Point>
+class Seam_vertex_points
+{
+  typedef typename SeamMesh::TriangleMesh TM;
+  typedef typename boost::graph_traits<TM>::halfedge_descriptor TM_halfedge;
+
+public:
+  typedef typename boost::graph_traits<SeamMesh>::vertex_descriptor vertex_descriptor;
+
+  class Map
+  {
+  public:
+    typedef vertex_descriptor key_type;
+    typedef Point value_type;
+    typedef const Point& reference;
+    typedef boost::read_write_property_map_tag category;
+    explicit Map(Seam_vertex_points* s) : s_(s) {}
+    friend const Point& get(const Map& m, const key_type& v) { return m.s_->at(v); }
+    friend void put(const Map& m, const key_type& v, const Point& p) { m.s_->set(v, p); }
+
+  private:
+    Seam_vertex_points* s_;
+  };
+
+  explicit Seam_vertex_points(const TM& tm) : index_(halfedges(tm)), points_(index_.size()) {}
+  Seam_vertex_points(const Seam_vertex_points&) = delete;
+  Seam_vertex_points& operator=(const Seam_vertex_points&) = delete;
+
+  Map map() { return Map(this); }
+  const Point& at(const vertex_descriptor& v) const { return points_[slot(v)]; }
+  void set(const vertex_descriptor& v, const Point& p) { points_[slot(v)] = p; }
 
 private:
-  static Edge_flags initial_edges(const TriangleMesh& tm)
+  std::size_t slot(const vertex_descriptor& v) const
   {
-    Edge_flags f;
-    for(edge_descriptor e : edges(tm))
-      f.emplace(e, false);
-    return f;
+    const std::size_t i = index_(v.hd.tmhd);
+    CGAL_assertion(i != Dense_index<TM_halfedge>::npos);
+    return i;
   }
-  static Vertex_flags initial_vertices(const TriangleMesh& tm)
-  {
-    Vertex_flags f;
-    for(vertex_descriptor v : vertices(tm))
-      f.emplace(v, false);
-    return f;
-  }
+
+  Dense_index<TM_halfedge> index_;
+  std::vector<Point> points_;
 };
 
 } // namespace internal
