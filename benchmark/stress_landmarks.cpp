@@ -345,7 +345,7 @@ int main(int argc, char** argv)
         line.setf(std::ios::fixed);
         line.precision(3);
         if(certified) {
-          line << "certified " << run.seconds << "s its=" << st.iterations;
+          line << "certified " << run.seconds << "s its=" << st.iterations << " repaired=" << st.repaired_vertices;
         } else {
           // landmarks joined by a mesh edge (a reason for the cut to be impossible)
           const std::set<std::size_t> lmset(idx.begin(), idx.end());

@@ -792,31 +792,40 @@ TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
   }
 }
 
-// The energy has one minimiser (it is geodesically convex): the preconditioned solver (gradient
-// steps and Newton-CG with the connection Laplacian) and the direct one (the Hessian factored
-// at every Newton step) must reach the same embedding, vertex by vertex.
+// The energy has one minimiser (it is geodesically convex): the preconditioned solver
+// (Newton-CG with the connection Laplacian, from the start or after preconditioned gradient
+// steps) and the direct one (the Hessian factored at every Newton step) must reach the same
+// embedding, vertex by vertex.
 static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std::vector<double>& x0, const std::string& what,
                                 const HOT::internal::Interior_laplacian* interior = nullptr)
 {
-  HOT::internal::Solver_options fast, direct;
+  HOT::internal::Solver_options direct;
   direct.direct_solver = true;
-  fast.verbose = direct.verbose = getenv("HOT_VERBOSE") != nullptr;
-  std::vector<double> xf = x0, xd = x0;
-  HOT::internal::Solver_statistics sf, sd;
-  CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf, interior) == HOT::OK, what << ": preconditioned solver");
+  direct.verbose = getenv("HOT_VERBOSE") != nullptr;
+  std::vector<double> xd = x0;
+  HOT::internal::Solver_statistics sd;
   CHECK_MSG(HOT::internal::minimize_energy(P, xd, direct, sd) == HOT::OK, what << ": direct solver");
-  double worst = 0;
-  for(int v = 0; v < P.n; ++v) {
-    const C a = HOT::internal::position(P, xf, v), b = HOT::internal::position(P, xd, v);
-    const double dd = norm(a - b) / ((1 - norm(a)) * (1 - norm(b)));
-    worst = std::max(worst, 2 * std::asinh(std::sqrt(dd))); // hyperbolic distance
+  for(const bool gradient_steps : {false, true}) {
+    HOT::internal::Solver_options fast;
+    fast.gradient_steps = gradient_steps;
+    fast.verbose = direct.verbose;
+    const std::string name = what + (gradient_steps ? ", gradient steps first" : "");
+    std::vector<double> xf = x0;
+    HOT::internal::Solver_statistics sf;
+    CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf, interior) == HOT::OK, name << ": preconditioned solver");
+    double worst = 0;
+    for(int v = 0; v < P.n; ++v) {
+      const C a = HOT::internal::position(P, xf, v), b = HOT::internal::position(P, xd, v);
+      const double dd = norm(a - b) / ((1 - norm(a)) * (1 - norm(b)));
+      worst = std::max(worst, 2 * std::asinh(std::sqrt(dd))); // hyperbolic distance
+    }
+    std::cout << "  " << name << ": preconditioned " << sf.iterations << " steps (" << sf.cg_iterations << " CG, "
+              << sf.preconditioner_factorizations << " refactorisations), direct " << sd.iterations
+              << " steps; largest hyperbolic distance between the two " << worst << std::endl;
+    CHECK(sf.cg_failures == 0);
+    CHECK_MSG(worst < 1e-7, name << ": the two solvers differ by " << worst);
+    CHECK(std::abs(sf.energy - sd.energy) <= 1e-12 * sd.energy);
   }
-  std::cout << "  " << what << ": preconditioned " << sf.iterations << " steps (" << sf.cg_iterations << " CG, "
-            << sf.preconditioner_factorizations << " refactorisations), direct " << sd.iterations
-            << " steps; largest hyperbolic distance between the two " << worst << std::endl;
-  CHECK(sf.cg_failures == 0);
-  CHECK_MSG(worst < 1e-7, what << ": the two solvers differ by " << worst);
-  CHECK(std::abs(sf.energy - sd.energy) <= 1e-12 * sd.energy);
 }
 
 TEST_CASE(preconditioned_and_direct_solvers_agree)
@@ -1204,14 +1213,17 @@ TEST_CASE(camel_with_clustered_landmarks_is_embedded_with_recentring)
   std::cout << "  camel, clustered landmarks: recentred, frame " << st.frame << ", defect " << defect << std::endl;
 }
 
-// Solved to the floor of double, the cow with these landmarks (a stress run's) still had one
-// flipped face in a region squeezed to 1e-12 whose triangles are nearly flat; the one-ring
-// repair could not fix it, a valid position a few units in the last place away does.
+// Solved to the floor of double, the cow with these landmarks (found by a stress run) still
+// has flipped faces where its triangles are nearly flat at the resolution of double; the
+// one-ring repair moves 33 vertices but leaves one flipped face, and a valid position a few
+// units in the last place away mends it. (Which landmark sets need this depends on the last
+// bits of the solution: before Newton ran from the first step it was 1220, 1367, 1606, 2060,
+// 2878.)
 TEST_CASE(flipped_face_at_the_resolution_of_double)
 {
   Mesh m;
   CHECK(read_demo_mesh("cow", m));
-  std::vector<vertex_descriptor> lm = vertex_list({1220, 1367, 1606, 2060, 2878});
+  std::vector<vertex_descriptor> lm = vertex_list({917, 1224, 1362, 1565, 2583});
   const Embedding_run r = embed(m, lm, HOT::Cotangent, HOT::Tsp_order);
   CHECK_MSG(r.ec == HOT::OK, r.st.message);
   CHECK(r.st.certificate.is_bijective());
