@@ -22,6 +22,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 /// \file Hyperbolic_orbifold_Tutte_parameterizer_3.h

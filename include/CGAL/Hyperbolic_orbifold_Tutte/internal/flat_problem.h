@@ -15,7 +15,6 @@
 
 #include <array>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {

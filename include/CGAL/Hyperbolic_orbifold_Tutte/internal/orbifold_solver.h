@@ -192,15 +192,9 @@ public:
 #endif
     return simplicial_.info() == Eigen::Success && (simplicial_.vectorD().array().real() > 0).all();
   }
-  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> solve(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& b) const
-  {
-#ifdef CGAL_HOT_USE_CHOLMOD
-    if(use_cholmod_) return cholmod_.solve(b);
-#endif
-    return simplicial_.solve(b);
-  }
+  // one right-hand side or several (columns)
   template <class Rhs>
-  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> solve(const Rhs& b) const
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Rhs& b) const
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
     if(use_cholmod_) return cholmod_.solve(b);
