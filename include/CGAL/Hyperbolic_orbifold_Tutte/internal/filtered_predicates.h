@@ -12,6 +12,7 @@
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
+#include <cmath>
 #include <type_traits>
 
 namespace CGAL {
@@ -48,11 +49,67 @@ poincare_orientation_sign(const NT& px, const NT& py, const NT& qx, const NT& qy
   return CGAL::sign(det);
 }
 
-// Filtered, exact evaluation on double input: interval arithmetic first,
-// exact rationals (GMP) only when the interval result is uncertain.
+// The first stage of the filter: the same determinant in double precision, with a
+// rigorous bound on its rounding error; true and the sign in `s` when the sign is certain.
+//
+// With r's row kept and a3 = wp - wr written a1 (px + rx) + a2 (py + ry) (likewise b3),
+// every difference of inputs is a leaf computed with one rounding (relative error u = 2^-53
+// of its own value), so the bound scales with the triangle: a tiny triangle is decided here
+// as well as a large one.  Expanded, fl(det) is a sum of monomials each multiplied by at
+// most 10 factors (1 + delta), |delta| <= u (rx m1: rx exact, m1's monomials carry 7: the
+// leaves a2 or a1, s1 (2), their product and sum (2), b3's leaf and the product (2), the
+// difference (1); then the product, the difference and the sum: 10), so
+// |fl(det) - det| <= gamma_10 E, E the sum of the monomials' absolute values: the same tree
+// on the absolute values of the leaves with every difference made a sum.  E computed in
+// double (every term positive) is at least E (1 - u)^10.  The test |fl(det)| > 12 u fl(E)
+// therefore decides the sign (a fused multiply-add only removes roundings).  Inputs are
+// bounded by 4 (no overflow; points of the disk and their images in a walk are well
+// inside) and E above 1e-250 (underflowed products, below 1e-300 in all, cannot matter);
+// otherwise, or for NaN: not certain.
+inline bool poincare_orientation_sign_semi_static(double px, double py, double qx, double qy, double rx, double ry,
+                                                  Sign& s)
+{
+  const double lim = 4.0;
+  if(!(std::abs(px) <= lim && std::abs(py) <= lim && std::abs(qx) <= lim && std::abs(qy) <= lim &&
+       std::abs(rx) <= lim && std::abs(ry) <= lim))
+    return false; // also NaN
+  const double a1 = px - rx, a2 = py - ry, b1 = qx - rx, b2 = qy - ry;
+  const double s1 = px + rx, s2 = py + ry, t1 = qx + rx, t2 = qy + ry;
+  const double a3 = a1 * s1 + a2 * s2; // = wp - wr
+  const double b3 = b1 * t1 + b2 * t2; // = wq - wr
+  const double wr = 1.0 + rx * rx + ry * ry;
+  const double m1 = a2 * b3 - a3 * b2;
+  const double m2 = a1 * b3 - a3 * b1;
+  const double m3 = a1 * b2 - a2 * b1;
+  const double det = (rx * m1 - ry * m2) + wr * m3;
+  const double A1 = std::abs(a1), A2 = std::abs(a2), B1 = std::abs(b1), B2 = std::abs(b2);
+  const double A3 = A1 * std::abs(s1) + A2 * std::abs(s2);
+  const double B3 = B1 * std::abs(t1) + B2 * std::abs(t2);
+  const double E = (std::abs(rx) * (A2 * B3 + A3 * B2) + std::abs(ry) * (A1 * B3 + A3 * B1)) + wr * (A1 * B2 + A2 * B1);
+  if(!(E > 1e-250))
+    return false;
+  const double bound = 12.0 * 1.1102230246251565e-16 * E; // 12 u E
+  if(det > bound) {
+    s = POSITIVE;
+    return true;
+  }
+  if(det < -bound) {
+    s = NEGATIVE;
+    return true;
+  }
+  return false;
+}
+
+// Filtered, exact evaluation on double input: a semi-static filter first, then interval
+// arithmetic, exact rationals (GMP) only when the interval result is uncertain.
 inline Sign poincare_orientation_sign_filtered(double px, double py, double qx, double qy,
                                                double rx, double ry)
 {
+  {
+    Sign s;
+    if(poincare_orientation_sign_semi_static(px, py, qx, qy, rx, ry, s))
+      return s;
+  }
   {
     Protect_FPU_rounding<true> protection;
     typedef Interval_nt_advanced I;

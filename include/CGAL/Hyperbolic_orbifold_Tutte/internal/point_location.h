@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -35,7 +36,6 @@
 #include <limits>
 #include <queue>
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -348,6 +348,75 @@ private:
     return k;
   }
 
+  // The corners by their points' bits (open addressing, linear probing): for a point, the
+  // first corner (face, j), in face order, at exactly that point
+  class Corner_table
+  {
+  public:
+    // empty, with room for about n points
+    void reset(std::size_t n)
+    {
+      std::size_t capacity = 16;
+      while(capacity < 2 * n)
+        capacity *= 2;
+      slots_.assign(capacity, Slot());
+      size_ = 0;
+    }
+    // keeps the first corner inserted at a point
+    void insert(const Key& k, int f, int j)
+    {
+      if(2 * (size_ + 1) > slots_.size())
+        grow();
+      Slot& s = slots_[probe(k)];
+      if(s.f < 0) {
+        s.k = k;
+        s.f = f;
+        s.j = j;
+        ++size_;
+      }
+    }
+    // the corner at k, if any
+    bool find(const Key& k, std::pair<int, int>& out) const
+    {
+      if(slots_.empty())
+        return false;
+      const Slot& s = slots_[probe(k)];
+      if(s.f < 0)
+        return false;
+      out = std::make_pair(s.f, s.j);
+      return true;
+    }
+
+  private:
+    struct Slot
+    {
+      Key k{0, 0};
+      int f = -1;
+      int j = 0;
+    };
+    std::size_t probe(const Key& k) const // the slot holding k, or the empty one where it goes
+    {
+      const std::size_t mask = slots_.size() - 1;
+      std::uint64_t h = k.a * 0x9e3779b97f4a7c15ULL ^ (k.b + 0x632be59bd9b4e019ULL) * 0xff51afd7ed558ccdULL;
+      h ^= h >> 29;
+      std::size_t i = static_cast<std::size_t>(h) & mask;
+      while(slots_[i].f >= 0 && !(slots_[i].k == k))
+        i = (i + 1) & mask;
+      return i;
+    }
+    void grow()
+    {
+      std::vector<Slot> old;
+      old.swap(slots_);
+      slots_.assign((std::max)(std::size_t(16), 2 * old.size()), Slot());
+      for(const Slot& s : old)
+        if(s.f >= 0)
+          slots_[probe(s.k)] = s;
+    }
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
+  };
+
   static int orient(const C& a, const C& b, const C& c)
   {
     const Traits::Hyperbolic_orientation_2 o;
@@ -429,21 +498,19 @@ private:
     valid_ = true;
     message_.clear();
     transitions_.assign(1, Isometry());
+    corner_table_.reset(num_vertices(tm) + num_vertices(tm) / 8); // cut vertices have several points
     for(int s = 0; s < tile_.number_of_sides(); ++s)
       transitions_.push_back(tile_.side_pairing(s)); // index 1 + s
 
-    std::unordered_map<vertex_descriptor, int, boost::hash<vertex_descriptor> > vindex;
-    vindex.reserve(num_vertices(tm));
-    for(vertex_descriptor v : vertices(tm)) {
-      vindex.emplace(v, static_cast<int>(vertices_.size()));
-      vertices_.push_back(v);
-    }
+    const Dense_index<vertex_descriptor> vindex(vertices(tm));
+    vertices_.assign(vertices(tm).begin(), vertices(tm).end());
     std::vector<std::array<halfedge_descriptor, 3> > fh;
     fh.reserve(num_faces(tm));
     faces_.reserve(num_faces(tm));
     fd_.reserve(num_faces(tm));
-    std::unordered_map<halfedge_descriptor, std::pair<int, int>, boost::hash<halfedge_descriptor> > edge_of;
-    edge_of.reserve(3 * num_faces(tm));
+    // per halfedge of a face: (the face's index, the edge's index in it)
+    const Dense_index<halfedge_descriptor> hindex(halfedges(tm));
+    std::vector<std::pair<int, int> > edge_of(hindex.size(), std::make_pair(-1, -1));
     for(face_descriptor f : faces(tm)) {
       const halfedge_descriptor h0 = halfedge(f, tm), h1 = next(h0, tm), h2 = next(h1, tm);
       if(next(h2, tm) != h0)
@@ -456,12 +523,12 @@ private:
         F.z[j] = to_c(get(uv, fh.back()[j]));
         if(!std::isfinite(F.z[j].re) || !std::isfinite(F.z[j].im) || !(norm(F.z[j]) < 1.0))
           return fail("a corner point is not inside the unit disk");
-        F.v[j] = vindex.at(target(fh.back()[j], tm));
+        F.v[j] = static_cast<int>(vindex(target(fh.back()[j], tm)));
         F.nf[j] = -1;
         F.ne[j] = -1;
         F.tr[j] = -1;
         F.mirror[j] = false;
-        edge_of[fh.back()[(j + 1) % 3]] = std::make_pair(fi, j); // edge j is halfedge h_{j+1}
+        edge_of[hindex(fh.back()[(j + 1) % 3])] = std::make_pair(fi, j); // edge j is halfedge h_{j+1}
       }
       fd_.push_back(F);
     }
@@ -485,7 +552,9 @@ private:
           ++n_border_edges_;
           continue;
         }
-        const std::pair<int, int> n = edge_of.at(o);
+        const std::pair<int, int> n = edge_of[hindex(o)];
+        if(n.first < 0)
+          return fail("the mesh's halfedges are not consistent");
         F.nf[j] = n.first;
         F.ne[j] = n.second;
         const Face_data& G = fd_[n.first];
@@ -528,7 +597,7 @@ private:
         ymax = (std::max)(ymax, c.im);
       }
       for(int j = 0; j < 3; ++j)
-        corner_hash_.emplace(key(F.z[j]), std::make_pair(static_cast<int>(fi), j));
+        corner_table_.insert(key(F.z[j]), static_cast<int>(fi), j);
     }
     if(n_good == 0)
       return fail("no face of the embedding is positively oriented with an inner centroid");
@@ -594,13 +663,13 @@ private:
 
   bool corner_hit(const C& q, const Isometry& element, Location& loc) const
   {
-    const auto it = corner_hash_.find(key(q));
-    if(it == corner_hash_.end())
+    std::pair<int, int> c;
+    if(!corner_table_.find(key(q), c))
       return false;
-    loc.face_index = static_cast<std::size_t>(it->second.first);
+    loc.face_index = static_cast<std::size_t>(c.first);
     loc.face = faces_[loc.face_index];
     loc.barycentric = {{0.0, 0.0, 0.0}};
-    loc.barycentric[it->second.second] = 1.0;
+    loc.barycentric[c.second] = 1.0;
     loc.min_raw_barycentric = 0.0;
     loc.element = element;
     loc.success = true;
@@ -833,7 +902,7 @@ private:
   std::vector<vertex_descriptor> vertices_;
   std::vector<Face_data> fd_;
   std::vector<C> centroid_;
-  std::unordered_map<Key, std::pair<int, int>, Key_hash> corner_hash_;
+  Corner_table corner_table_;
   std::vector<int> grid_;
   int grid_n_ = 1;
   double grid_x0_ = 0, grid_y0_ = 0, grid_cw_ = 1, grid_ch_ = 1;
