@@ -53,7 +53,8 @@ plane on top of a CGAL kernel. Points are Poincar&eacute;-disk coordinates store
 
 Predicates (`Hyperbolic_orientation_2`, `Side_of_oriented_hyperbolic_segment_2`,
 `Bounded_side_of_hyperbolic_triangle_2`) are exact on the input coordinates: with
-`Epick` they are filtered (interval arithmetic, then exact rationals when uncertain);
+`Epick` they are filtered (double with a proven error bound, interval arithmetic, then exact
+rationals when uncertain);
 with a kernel with an exact number type they are evaluated exactly. Constructions are
 computed in double precision.
 

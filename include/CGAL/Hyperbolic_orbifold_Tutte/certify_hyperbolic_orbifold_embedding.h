@@ -10,6 +10,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
@@ -22,7 +23,6 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 /// \file certify_hyperbolic_orbifold_embedding.h
@@ -131,18 +131,22 @@ Error_code certify_hyperbolic_orbifold_embedding(
     return fail(ec, why);
 
   // the point of each cut-mesh vertex, from any of its corners (they agree off the cut)
-  std::unordered_map<halfedge_descriptor, int, boost::hash<halfedge_descriptor> > index_of;
-  for(int i = 0; i < P.n; ++i)
-    index_of.emplace(cut_vertices[i].hd.tmhd, i);
+  const internal::Dense_index<halfedge_descriptor> hindex(halfedges(tm));
+  std::vector<int> index_of(hindex.size(), -1);
+  for(int i = 0; i < P.n; ++i) {
+    const std::size_t k = hindex(cut_vertices[i].hd.tmhd);
+    if(k != hindex.npos && index_of[k] < 0)
+      index_of[k] = i;
+  }
   std::vector<internal::Complex<double> > uv(P.n, internal::Complex<double>(2.0, 0.0));
   for(face_descriptor f : faces(tm))
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
       const auto vd = target(typename boost::graph_traits<Mesh>::halfedge_descriptor(h, false), mesh);
-      const auto it = index_of.find(vd.hd.tmhd);
-      if(it == index_of.end())
+      const std::size_t k = hindex(vd.hd.tmhd);
+      if(k == hindex.npos || index_of[k] < 0)
         return fail(ERROR_CUT_FAILED, "a corner could not be matched to a vertex of the cut mesh");
       const Point_2 p = get(uvmap, h);
-      uv[it->second] = internal::Complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      uv[index_of[k]] = internal::Complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
     }
   certificate = internal::certify_flat(P, tile, uv);
   return OK;

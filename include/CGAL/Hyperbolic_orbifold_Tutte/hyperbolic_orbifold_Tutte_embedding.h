@@ -9,6 +9,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
@@ -21,8 +22,6 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <chrono>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 /// \file hyperbolic_orbifold_Tutte_embedding.h
@@ -39,13 +38,11 @@ Check_result check_landmark_vertices(const TriangleMesh& tm,
                                      Orbifold_type type)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  std::unordered_map<vertex_descriptor, std::size_t, boost::hash<vertex_descriptor> > index;
-  for(vertex_descriptor v : vertices(tm))
-    index.emplace(v, index.size());
+  const Dense_index<vertex_descriptor> index(vertices(tm));
   std::vector<std::size_t> ids;
   for(std::size_t i = 0; i < landmarks.size(); ++i) {
-    auto it = index.find(landmarks[i]);
-    ids.push_back(it == index.end() ? index.size() + i : it->second);
+    const std::size_t id = index(landmarks[i]);
+    ids.push_back(id == index.npos ? index.size() + i : id);
   }
   std::vector<vertex_descriptor> out;
   return check_landmarks(tm, ids, type, out);
@@ -175,8 +172,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
     st.landmark_order = perm;
   }
 
-  // 3. the cut and the seam mesh (seams on edges and vertices held in hash maps, so that
-  //    the input mesh is not modified and may be const)
+  // 3. the cut and the seam mesh (seams on edges and vertices held in the storage's own
+  //    flags, so that the input mesh is not modified and may be const)
   internal::Seam_mesh_storage<TriangleMesh> seams(tm);
   typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
   Mesh& mesh = seams.mesh;
