@@ -16,6 +16,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
 #include <CGAL/Random.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <map>
 #ifdef CGAL_LINKED_WITH_TBB
@@ -349,6 +350,25 @@ TEST_CASE(disk_nefertiti) { check_disk_mesh("nefertiti", {5, 7, 12}, HOT::Cotang
 TEST_CASE(disk_lion_head) { check_disk_mesh("lion-head", {5, 10}, HOT::Cotangent); }
 TEST_CASE(disk_mannequin_devil) { check_disk_mesh("mannequin-devil", {6}, HOT::Cotangent); }
 TEST_CASE(heavy_disk_many_corners) { check_disk_mesh("mannequin-devil", {12, 30}, HOT::Cotangent); check_disk_mesh("lion-head", {50}, HOT::Mean_value); }
+
+// From 50K cut-mesh vertices on (with CHOLMOD) the initialisation and the solver share one
+// factorisation: man.off refined once by Loop subdivision (about 70K vertices), embedded
+// and certified through the one-call function
+TEST_CASE(heavy_sphere_shared_factorization)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("man", m));
+  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  CHECK(num_vertices(m) > 60000);
+  const Embedding_run r = embed(m, farthest_point_landmarks(m, 7), HOT::Cotangent, HOT::Tsp_order);
+  CHECK_MSG(r.ec == HOT::OK, r.st.message);
+  CHECK(r.st.certificate.is_bijective());
+  CHECK(r.st.converged);
+  CHECK(r.st.shared_factorization == HOT::internal::Laplacian_factorization<double>::can_keep_leading_block);
+  std::cout << "  man refined, " << num_vertices(m) << " vertices: " << r.st.iterations << " steps, " << r.st.cg_iterations
+            << " CG, shared factorisation " << r.st.shared_factorization << ", initialisation " << r.st.time_initialization
+            << " s, optimisation " << r.st.time_optimization << " s" << std::endl;
+}
 
 // ---- synthetic disks: boundary ears, Figure 8, the one-ring repair ------------
 
@@ -740,6 +760,8 @@ struct Sphere_problem
   HOT::internal::Flat_problem P;
   std::vector<double> x;
   HOT::internal::Interior_laplacian interior; // the initialisation's factorisation
+  HOT::Orbifold_tile<> tile;
+  std::vector<K::Point_3> pts;
 };
 
 static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& S)
@@ -756,16 +778,15 @@ static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& 
   if(!cut.ok || !HOT::internal::add_cut_to_seam_mesh(sm, m, cut)) return false;
   boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
   for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
-  HOT::Orbifold_tile<> tile;
-  HOT::make_orbifold_tile(HOT::Sphere_type, k, tile);
+  HOT::make_orbifold_tile(HOT::Sphere_type, k, S.tile);
   std::vector<vertex_descriptor> bv;
   std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
   std::string msg;
-  if(HOT::internal::build_flat_topology(sm, bhd, ordered, tile, S.P, bv, cv, msg) != HOT::OK) return false;
-  std::vector<K::Point_3> pts(S.P.n_base);
-  for(int i = 0; i < S.P.n_base; ++i) pts[i] = m.point(bv[i]);
-  HOT::internal::compute_edge_weights(S.P, pts, HOT::Cotangent, 1e-6);
-  return HOT::internal::initialize_embedding(S.P, tile, pts, S.x, &S.interior) == HOT::OK;
+  if(HOT::internal::build_flat_topology(sm, bhd, ordered, S.tile, S.P, bv, cv, msg) != HOT::OK) return false;
+  S.pts.resize(S.P.n_base);
+  for(int i = 0; i < S.P.n_base; ++i) S.pts[i] = m.point(bv[i]);
+  HOT::internal::compute_edge_weights(S.P, S.pts, HOT::Cotangent, 1e-6);
+  return HOT::internal::initialize_embedding(S.P, S.tile, S.pts, S.x, &S.interior) == HOT::OK;
 }
 
 TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
@@ -834,15 +855,122 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
     Sphere_problem S;
     CHECK(make_sphere_problem(c.first, c.second, S));
     // the gauge of the seam rotations from the preconditioner's own Laplacian, and from the
-    // initialisation's interior Laplacian (what the parameterizer does)
+    // initialisation's interior Laplacian (what the parameterizer does): a factorisation of its
+    // own, or (with CHOLMOD, from 50K vertices) the leading block of the preconditioner the
+    // initialisation made, which the solver then takes over
     check_solvers_agree(S.P, S.x, c.first + " k=" + std::to_string(c.second));
     check_solvers_agree(S.P, S.x, c.first + " k=" + std::to_string(c.second) + " (interior gauge)", &S.interior);
+    if(HOT::internal::Laplacian_factorization<double>::can_keep_leading_block) {
+      // (below CHOLMOD's size the parameterizer does not share: sharing forced here)
+      HOT::internal::Interior_laplacian shared;
+      shared.share_from = 0;
+      std::vector<double> x;
+      CHECK(HOT::internal::initialize_embedding(S.P, S.tile, S.pts, x, &shared) == HOT::OK);
+      CHECK(!shared.own_factor && shared.connection);
+      check_solvers_agree(S.P, x, c.first + " k=" + std::to_string(c.second) + " (interior gauge, shared factorisation)", &shared);
+    }
   }
   Mesh m;
   CHECK(read_demo_mesh("mushroom", m));
   Disk_problem D;
   CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
   check_solvers_agree(D.P, D.x, "mushroom (disk)");
+}
+
+// The factor of a matrix's leading block is the leading block of its factor when the order
+// keeps that block first: Laplacian_factorization::solve_leading() against a dense LL^T of the
+// block itself (a complex Hermitian positive definite matrix, random rotations on a grid)
+TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
+{
+  typedef std::complex<double> Cd;
+  if(!HOT::internal::Laplacian_factorization<Cd>::can_keep_leading_block) {
+    std::cout << "  (built without CHOLMOD: the leading block is never shared)" << std::endl;
+    return;
+  }
+  const int side = 30, n = side * side;
+  for(const int lead : {n - 1, n - 2 * side, n / 2}) {
+    std::vector<Eigen::Triplet<Cd> > trip;
+    std::vector<double> diag(n, 0.01);
+    for(int i = 0; i < side; ++i)
+      for(int j = 0; j < side; ++j)
+        for(const int d : {0, 1}) {
+          const int a = i * side + j, ni = i + (d == 0), nj = j + (d == 1);
+          if(ni >= side || nj >= side) continue;
+          const int b = ni * side + nj;
+          const double w = rng.get_double(0.1, 2.0);
+          const Cd v = -w * std::polar(1.0, rng.get_double(-3.0, 3.0));
+          trip.emplace_back(a, b, v);
+          trip.emplace_back(b, a, std::conj(v));
+          diag[a] += w;
+          diag[b] += w;
+        }
+    for(int i = 0; i < n; ++i) trip.emplace_back(i, i, Cd(diag[i], 0.0));
+    Eigen::SparseMatrix<Cd> A(n, n);
+    A.setFromTriplets(trip.begin(), trip.end());
+    HOT::internal::Laplacian_factorization<Cd> f;
+    f.keep_leading_block(lead);
+    CHECK(f.analyze(A));
+    f.factorize(A);
+    CHECK(f.definite() && f.keeps_leading_block());
+    Eigen::VectorXcd b(lead);
+    for(int i = 0; i < lead; ++i) b[i] = Cd(rng.get_double(-1, 1), rng.get_double(-1, 1));
+    const Eigen::VectorXcd x = f.solve_leading(b);
+    const Eigen::MatrixXcd block = Eigen::MatrixXcd(A).topLeftCorner(lead, lead);
+    const Eigen::VectorXcd y = block.llt().solve(b);
+    CHECK(x.size() == lead);
+    const double err = (x - y).norm() / y.norm(), res = (block * x - b).norm() / b.norm();
+    std::cout << "  leading block " << lead << " of " << n << ": relative difference to the dense solve " << err
+              << ", residual " << res << std::endl;
+    CHECK_MSG(err < 1e-10 && res < 1e-12, "leading block " << lead << ": " << err << ", residual " << res);
+    // the whole matrix still solves as a whole
+    Eigen::VectorXcd c = Eigen::VectorXcd::Random(n);
+    CHECK(((A * f.solve(c)) - c).norm() < 1e-10 * c.norm());
+  }
+}
+
+// The initialisation's Tutte embedding solved with the leading block of the solver's
+// connection Laplacian (one factorisation for both) is the one a factorisation of the interior
+// Laplacian of its own gives (the same linear system; the difference is the two solves' rounding)
+TEST_CASE(initialisation_shares_the_solver_factorisation)
+{
+  auto compare = [](const HOT::internal::Flat_problem& P, const std::vector<double>& xs, const std::vector<double>& xo,
+                    const std::string& what) {
+    double worst = 0;
+    for(int v = 0; v < P.n; ++v) {
+      const C a = HOT::internal::position(P, xs, v), b = HOT::internal::position(P, xo, v);
+      worst = std::max(worst, 2 * std::asinh(std::sqrt(norm(a - b) / ((1 - norm(a)) * (1 - norm(b))))));
+    }
+    std::cout << "  " << what << ": largest hyperbolic distance between the two initialisations " << worst << std::endl;
+    CHECK_MSG(worst < 1e-9, what << ": " << worst);
+  };
+  const bool shares = HOT::internal::Laplacian_factorization<double>::can_keep_leading_block;
+  for(const auto& c : std::vector<std::pair<std::string, int> >{{"hand", 7}, {"bear", 7}, {"bear", 23}}) {
+    Sphere_problem S; // (below 50K vertices: a factorisation of its own)
+    CHECK(make_sphere_problem(c.first, c.second, S));
+    CHECK(S.interior.own_factor && !S.interior.connection);
+    HOT::internal::Interior_laplacian shared;
+    shared.share_from = 0;
+    std::vector<double> x;
+    CHECK(HOT::internal::initialize_embedding(S.P, S.tile, S.pts, x, &shared) == HOT::OK);
+    CHECK((shared.connection != nullptr) == shares && shared.own_factor != shares);
+    compare(S.P, x, S.x, c.first + " k=" + std::to_string(c.second));
+    // the solver takes the initialisation's factorisation over (no factorisation of its own:
+    // the border, hence the seam rotations, has not moved)
+    if(shares)
+      CHECK(shared.connection->factored_at(x));
+  }
+  Mesh m;
+  CHECK(read_demo_mesh("mushroom", m));
+  Disk_problem D;
+  CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
+  HOT::internal::Interior_laplacian shared, own;
+  shared.share_from = 0;
+  own.share = false;
+  std::vector<double> xs, xo;
+  CHECK(HOT::internal::initialize_embedding(D.P, D.tile, D.pts, xs, &shared) == HOT::OK);
+  CHECK(HOT::internal::initialize_embedding(D.P, D.tile, D.pts, xo, &own) == HOT::OK);
+  CHECK((shared.connection != nullptr) == shares);
+  compare(D.P, xs, xo, "mushroom (disk)");
 }
 
 // The Riemannian Hessian is the second derivative of the energy along geodesics: move every

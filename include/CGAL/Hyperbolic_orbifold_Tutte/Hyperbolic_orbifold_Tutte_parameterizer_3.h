@@ -41,6 +41,10 @@ struct Embedding_statistics
   int iterations = 0;                 ///< steps of the solver (preconditioned gradient steps, then Newton steps)
   int cg_iterations = 0;              ///< conjugate-gradient iterations of the Newton steps, in all
   int preconditioner_factorizations = 0; ///< factorisations of the connection-Laplacian preconditioner after the first
+  /// `true` when the initialisation solved its Tutte system with the leading block of the
+  /// solver's factorisation, so that one factorisation served both (with CHOLMOD, from 50K
+  /// vertices of the cut mesh on; otherwise each factors a matrix of its own)
+  bool shared_factorization = false;
   double initial_energy = 0;          ///< Dirichlet energy of the Euclidean Tutte initialisation
   double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
   double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
@@ -259,6 +263,7 @@ public:
     internal::Interior_laplacian interior; // factored by the initialisation, reused by the solver
     ec = internal::initialize_embedding(P, tile, base_points, x, &interior);
     st.time_initialization = std::chrono::duration<double>(Clock::now() - t1).count();
+    st.shared_factorization = interior.connection != nullptr;
     if(ec != OK)
       return fail(ec, "the Euclidean Tutte initialisation failed");
 

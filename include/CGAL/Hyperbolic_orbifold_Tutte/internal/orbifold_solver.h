@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <Eigen/OrderingMethods>
 
 #ifdef CGAL_HOT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -27,6 +28,7 @@
 #include <complex>
 #include <limits>
 #include <cmath>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -154,6 +156,12 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
 // supernodal LL^T for large matrices where the build found SuiteSparse (CGAL_HOT_USE_CHOLMOD;
 // 3-5x faster beyond 100K vertices), else Eigen's simplicial LDL^T with AMD ordering. Both are definite
 // factorisations: `definite()` tells whether the matrix was found positive definite.
+//
+// With `keep_leading_block(m)` before `analyze()` (CHOLMOD only, see `can_keep_leading_block`),
+// the matrix is factored in its own order, which the caller has chosen to reduce fill, whatever
+// its size: the factor's first m columns are then the factor of the leading m x m block, and
+// `solve_leading()` solves with that block alone. (P A P^T = L L^*, P keeping the first m rows
+// first; with b = (r, 0): y = L^-1 P b = (L11^-1 r, *); its tail set to 0, L^-* y = (L11^-* L11^-1 r, 0).)
 template <class Scalar>
 class Laplacian_factorization
 {
@@ -161,14 +169,41 @@ public:
   typedef Eigen::SparseMatrix<Scalar> Matrix;
   // below this size Eigen's simplicial factorisation is as fast (no supernode overhead)
   static constexpr Eigen::Index cholmod_threshold = 50000;
+#ifdef CGAL_HOT_USE_CHOLMOD
+  static constexpr bool can_keep_leading_block = true;
+#else
+  static constexpr bool can_keep_leading_block = false;
+#endif
 
-  void analyze(const Matrix& A)
+  void keep_leading_block(Eigen::Index m) { lead_ = m; }
+
+  // false if the leading block could not be kept (the factorisation is then usable as a whole)
+  bool analyze(const Matrix& A)
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
-    use_cholmod_ = A.rows() >= cholmod_threshold;
-    if(use_cholmod_) { cholmod_.analyzePattern(A); return; }
+    use_cholmod_ = A.rows() >= cholmod_threshold || lead_ >= 0;
+    if(use_cholmod_) {
+      if(lead_ >= 0) {
+        cholmod_.cholmod().nmethods = 1;
+        cholmod_.cholmod().method[0].ordering = CHOLMOD_NATURAL;
+        cholmod_.cholmod().postorder = 1; // keeps the order's fill, groups supernodes
+      }
+      cholmod_.analyzePattern(A);
+      if(lead_ >= 0 && !leading_block_kept() && cholmod_.info() == Eigen::Success) {
+        cholmod_.cholmod().postorder = 0; // the order exactly as given
+        cholmod_.analyzePattern(A);
+      }
+      if(lead_ >= 0 && !leading_block_kept()) {
+        lead_ = -1;
+        return false;
+      }
+      return true;
+    }
 #endif
+    const bool wanted = lead_ >= 0;
+    lead_ = -1;
     simplicial_.analyzePattern(A);
+    return !wanted;
   }
   void factorize(const Matrix& A)
   {
@@ -201,158 +236,96 @@ public:
 #endif
     return simplicial_.solve(b);
   }
+  bool keeps_leading_block() const { return lead_ >= 0; }
+  // with the leading block kept (and factored): solves with that block, b of its size
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> solve_leading(const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& b) const
+  {
+    Eigen::Matrix<Scalar, Eigen::Dynamic, 1> x;
+#ifdef CGAL_HOT_USE_CHOLMOD
+    CGAL_precondition(lead_ >= 0 && b.size() == lead_);
+    const cholmod_factor* F = cholmod_.factor();
+    const int* perm = static_cast<const int*>(F->Perm);
+    const Eigen::Index n = static_cast<Eigen::Index>(F->n);
+    Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>::Zero(n);
+    for(Eigen::Index k = 0; k < lead_; ++k) // y = P (b, 0)
+      y[k] = b[perm[k]];
+    cholmod_dense* z = cholmod_.solve_system(CHOLMOD_L, y);
+    if(z == nullptr)
+      return x;
+    Scalar* zx = static_cast<Scalar*>(z->x);
+    for(Eigen::Index k = 0; k < lead_; ++k) // (the tail of y stays 0)
+      y[k] = zx[k];
+    cholmod_.free_dense(z);
+    z = cholmod_.solve_system(CHOLMOD_Lt, y);
+    if(z == nullptr)
+      return x;
+    zx = static_cast<Scalar*>(z->x);
+    x.resize(lead_);
+    for(Eigen::Index k = 0; k < lead_; ++k) // P^T
+      x[perm[k]] = zx[k];
+    cholmod_.free_dense(z);
+#else
+    CGAL_USE(b);
+#endif
+    return x;
+  }
 
 private:
+#ifdef CGAL_HOT_USE_CHOLMOD
+  // CHOLMOD's factor itself, for the triangular solves of `solve_leading()`
+  struct Cholmod : Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower>
+  {
+    const cholmod_factor* factor() const { return this->m_cholmodFactor; }
+    cholmod_dense* solve_system(int sys, Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& b) const
+    {
+      cholmod_dense bd = Eigen::viewAsCholmod(b);
+      return cholmod_solve(sys, this->m_cholmodFactor, &bd, &common());
+    }
+    void free_dense(cholmod_dense*& d) const { cholmod_free_dense(&d, &common()); }
+    cholmod_common& common() const { return const_cast<Cholmod*>(this)->cholmod(); } // (mutable in Eigen)
+  };
+  bool leading_block_kept() const
+  {
+    const cholmod_factor* F = cholmod_.factor();
+    if(F == nullptr || F->Perm == nullptr)
+      return false;
+    const int* perm = static_cast<const int*>(F->Perm);
+    for(Eigen::Index k = 0; k < lead_; ++k)
+      if(perm[k] >= lead_)
+        return false;
+    return true;
+  }
+#endif
+
   Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int> > simplicial_;
 #ifdef CGAL_HOT_USE_CHOLMOD
-  Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> cholmod_;
+  Cholmod cholmod_;
   bool use_cholmod_ = false;
 #endif
+  Eigen::Index lead_ = -1;
 };
 
 // The weighted Laplacian of the cut mesh's interior vertices (the border held fixed),
 // factored once by the initialisation and reused by the solver's preconditioner (gauge).
+class Connection_laplacian_preconditioner;
+
+// Either a factorisation of its own (`solver`) or, where CHOLMOD keeps the leading block
+// (see Laplacian_factorization), the leading block of the solver's connection Laplacian,
+// factored once for both (`connection`; the initialisation then needs no factorisation of
+// its own, and the solver takes that preconditioner over). Sharing starts where CHOLMOD
+// takes over anyway (`share_from` cut-mesh vertices): below, Eigen's simplicial
+// factorisations give the same bits on every machine, CHOLMOD's BLAS may not (its results
+// can change in the last bits with the BLAS's threads and the arrays' alignment).
 struct Interior_laplacian
 {
   std::vector<int> index;   // interior index of each cut-mesh vertex, -1 on the border
   int size = 0;
   Laplacian_factorization<double> solver;
+  bool own_factor = false;  // `solver` factored (definite or not)
+  bool share = Laplacian_factorization<double>::can_keep_leading_block; // try `connection` first
+  Eigen::Index share_from = Laplacian_factorization<double>::cholmod_threshold;
+  std::shared_ptr<Connection_laplacian_preconditioner> connection;
 };
-
-// Places the border: cone copies at their corners, other border vertices along their
-// tile side at the fraction of the 3D arc length between the side's corners (sphere:
-// p-side vertices on the side's geodesic, their twins follow by the pairing; disk: the
-// parameter t of the Klein segment). Interior vertices: Euclidean Tutte embedding in the
-// Klein model with the same weights (paper, section 5), mapped back to Poincare.
-template <class Point3, class Tile>
-Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const std::vector<Point3>& base_points,
-                                std::vector<double>& x, Interior_laplacian* keep = nullptr)
-{
-  Interior_laplacian local;
-  Interior_laplacian& lap = keep ? *keep : local;
-  typedef Complex<double> C;
-  typedef Hyperbolic_isometry_2<double> Isometry;
-  x.assign(P.n_vars, 0.0);
-  const std::vector<int>& loop = P.border_loop;
-  const int L = static_cast<int>(loop.size());
-  auto dist3 = [&](int a, int b) {
-    const Point3& p = base_points[P.base[a]];
-    const Point3& q = base_points[P.base[b]];
-    const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x()), dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y()),
-                 dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
-  };
-  // arc-length fraction along each side
-  std::vector<double> frac(P.n, 0.0);
-  {
-    int i = 0;
-    while(i < L) {
-      int j = i + 1;
-      while(j < L && P.corner[loop[j]] < 0)
-        ++j;
-      // corners at loop[i] and loop[j % L]
-      std::vector<double> acc(1, 0.0);
-      for(int q = i; q < j; ++q)
-        acc.push_back(acc.back() + dist3(loop[q], loop[(q + 1) % L]));
-      const double total = acc.back() > 0 ? acc.back() : 1.0;
-      for(int q = i + 1; q < j; ++q)
-        frac[loop[q]] = acc[q - i] / total;
-      i = j;
-    }
-  }
-  std::vector<C> z(P.n);
-  std::vector<char> is_border(P.n, 0);
-  for(int v : loop)
-    is_border[v] = 1;
-  for(int v : loop) {
-    if(P.corner[v] >= 0) {
-      z[v] = P.fixed[v];
-    } else if(P.kind[v] == Free) { // sphere p-side: on the side's geodesic
-      const int s = P.side[v];
-      const auto& a = tile.corner(tile.side_source(s));
-      const auto& b = tile.corner(tile.side_target(s));
-      const C ca(CGAL::to_double(a.x()), CGAL::to_double(a.y())), cb(CGAL::to_double(b.x()), CGAL::to_double(b.y()));
-      const Isometry to0 = Isometry::translation_to_origin(ca);
-      const C b0 = to0.apply(cb);
-      const double r = abs(b0);
-      const double rr = std::tanh(frac[v] * std::atanh(r));
-      z[v] = to0.inverse().apply(b0 * (rr / r));
-      x[P.var[v]] = z[v].re;
-      x[P.var[v] + 1] = z[v].im;
-    } else if(P.kind[v] == On_line) {
-      x[P.var[v]] = frac[v];
-    }
-  }
-  for(int v : loop)
-    if(P.kind[v] == Transformed || P.kind[v] == On_line)
-      z[v] = position(P, x, v);
-
-  // Tutte in Klein coordinates
-  std::vector<int>& interior_index = lap.index;
-  interior_index.assign(P.n, -1);
-  int ni = 0;
-  for(int v = 0; v < P.n; ++v)
-    if(!is_border[v])
-      interior_index[v] = ni++;
-  lap.size = ni;
-  if(ni > 0) {
-    typedef Eigen::SparseMatrix<double> SpMat;
-    std::vector<Eigen::Triplet<double> > trip;
-    trip.reserve(4 * P.edges.size() + ni);
-    Eigen::MatrixXd bxy = Eigen::MatrixXd::Zero(ni, 2); // both coordinates: one solve of two columns
-    auto bx = bxy.col(0);
-    auto by = bxy.col(1);
-    std::vector<double> diag(ni, 0.0);
-    auto klein = [](const C& p) { return p * (2.0 / (1.0 + norm(p))); };
-    for(std::size_t e = 0; e < P.edges.size(); ++e) {
-      const int a = P.edges[e][0], b = P.edges[e][1];
-      const double w = P.edge_weight[e];
-      const int ia = interior_index[a], ib = interior_index[b];
-      if(ia >= 0) diag[ia] += w;
-      if(ib >= 0) diag[ib] += w;
-      if(ia >= 0 && ib >= 0) {
-        trip.emplace_back(ia, ib, -w);
-        trip.emplace_back(ib, ia, -w);
-      } else if(ia >= 0) {
-        const C kb = klein(z[b]);
-        bx[ia] += w * kb.re;
-        by[ia] += w * kb.im;
-      } else if(ib >= 0) {
-        const C ka = klein(z[a]);
-        bx[ib] += w * ka.re;
-        by[ib] += w * ka.im;
-      }
-    }
-    for(int i = 0; i < ni; ++i)
-      trip.emplace_back(i, i, diag[i]);
-    SpMat Lm(ni, ni);
-    Lm.setFromTriplets(trip.begin(), trip.end());
-    auto& solver = lap.solver;
-    solver.compute(Lm);
-    if(!solver.definite())
-      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    const Eigen::MatrixXd kxy = solver.solve(bxy);
-    const auto kx = kxy.col(0);
-    const auto ky = kxy.col(1);
-    if(solver.info() != Eigen::Success)
-      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    for(int v = 0; v < P.n; ++v) {
-      const int i = interior_index[v];
-      if(i < 0)
-        continue;
-      const C k(kx[i], ky[i]);
-      const double s = 1.0 - norm(k);
-      if(!(s > 0) || !std::isfinite(k.re) || !std::isfinite(k.im))
-        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-      const C p = k / (1.0 + std::sqrt(s));
-      if(P.kind[v] == Free) {
-        x[P.var[v]] = p.re;
-        x[P.var[v] + 1] = p.im;
-      }
-    }
-  }
-  return OK;
-}
 
 struct Solver_options
 {
@@ -846,22 +819,95 @@ public:
 
   // `interior`: the initialisation's factored interior Laplacian, used for the gauge (else
   // the preconditioner factors a real Laplacian of its own for it)
-  explicit Connection_laplacian_preconditioner(const Flat_problem& P, const Interior_laplacian* interior = nullptr)
+  //
+  // `share_interior`: the vertices off the border loop are numbered first, in a fill-reducing
+  // (AMD) order of their Laplacian, the border's nodes after them, and the factorisation keeps
+  // that order. There is no rotation between two interior vertices, so the leading block is
+  // the Laplacian of the interior with the border fixed, and its factor the leading block of
+  // the factor: `solve_interior()` serves the initialisation and the gauge with no
+  // factorisation of their own (where `shares_interior()` says so after `factor()`).
+  explicit Connection_laplacian_preconditioner(const Flat_problem& P, const Interior_laplacian* interior = nullptr,
+                                               bool share_interior = false)
     : P_(P), interior_(interior)
   {
     node_.assign(P.n, -1);
     copy_.assign(P.n, -1);
+    std::vector<char> on_loop(P.n, 0);
+    for(int v : P.border_loop)
+      on_loop[v] = 1;
     for(int v = 0; v < P.n; ++v) {
-      if(P.kind[v] == Free || P.kind[v] == On_line) {
-        node_[v] = n_nodes_++;
-        owner_.push_back(v);
-      } else if(P.kind[v] == Transformed) {
+      if(P.kind[v] == Transformed) {
         copy_[P.twin[v]] = v;
         has_seams_ = true;
+      } else if(!on_loop[v] && P.kind[v] != Free) {
+        share_interior = false; // (not met: the vertices off the loop are all free)
       }
     }
-    if(interior_ && (interior_->index.size() != static_cast<std::size_t>(P.n) || !interior_->solver.definite()))
+    if(share_interior) {
+      std::vector<int> interior(P.n, -1);
+      for(int v = 0; v < P.n; ++v)
+        if(!on_loop[v])
+          interior[v] = n_interior_++;
+      // the interior Laplacian's pattern, ordered by AMD: position of interior vertex i = pinv[i]
+      std::vector<Eigen::Triplet<double> > trip;
+      trip.reserve(2 * P.edges.size() + n_interior_);
+      for(const auto& e : P.edges)
+        if(interior[e[0]] >= 0 && interior[e[1]] >= 0) {
+          trip.emplace_back(interior[e[0]], interior[e[1]], 1.0);
+          trip.emplace_back(interior[e[1]], interior[e[0]], 1.0);
+        }
+      for(int i = 0; i < n_interior_; ++i)
+        trip.emplace_back(i, i, 1.0);
+      Eigen::SparseMatrix<double> pattern(n_interior_, n_interior_);
+      pattern.setFromTriplets(trip.begin(), trip.end());
+      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
+      Eigen::AMDOrdering<int>()(pattern, perm);
+      const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> pinv = perm.inverse();
+      for(int v = 0; v < P.n; ++v)
+        if(interior[v] >= 0)
+          node_[v] = pinv.indices()[interior[v]];
+      n_nodes_ = n_interior_;
+      solver_.keep_leading_block(n_interior_);
+    }
+    for(int v = 0; v < P.n; ++v)
+      if((P.kind[v] == Free || P.kind[v] == On_line) && node_[v] < 0)
+        node_[v] = n_nodes_++;
+    owner_.assign(n_nodes_, -1);
+    for(int v = 0; v < P.n; ++v)
+      if(node_[v] >= 0)
+        owner_[node_[v]] = v;
+    shares_ = share_interior;
+    if(interior_ && (interior_->index.size() != static_cast<std::size_t>(P.n) || !interior_->own_factor ||
+                     !interior_->solver.definite()))
       interior_ = nullptr;
+  }
+
+  const Flat_problem& problem() const { return P_; }
+
+  // the first factor() kept the interior's block: solve_interior() works
+  bool shares_interior() const { return shares_; }
+  // position of v among the interior unknowns of solve_interior() (-1: border)
+  int interior_index(int v) const { return shares_ && node_[v] >= 0 && node_[v] < n_interior_ ? node_[v] : -1; }
+  int interior_size() const { return n_interior_; }
+
+  // solves with the interior Laplacian (the border fixed), in interior_index() order
+  bool solve_interior(const Eigen::VectorXcd& b, Eigen::VectorXcd& x) const
+  {
+    if(!shares_ || !factored_)
+      return false;
+    x = solver_.solve_leading(b);
+    return x.size() == b.size() && x.allFinite();
+  }
+
+  // factored with the seam rotations at x (the matrix depends on x through them only)
+  bool factored_at(const std::vector<double>& x) const
+  {
+    if(!factored_)
+      return false;
+    for(int v = 0; v < P_.n; ++v)
+      if(P_.kind[v] == Transformed && !(rotation(v, x) == rho0_[v]))
+        return false;
+    return true;
   }
 
   // assembles A with the seam rotations at x and factors it (symbolic analysis once)
@@ -892,10 +938,10 @@ public:
     CMat A(n_nodes_, n_nodes_);
     A.setFromTriplets(trip.begin(), trip.end());
     if(!analyzed_) {
-      solver_.analyze(A);
+      shares_ = solver_.analyze(A) && shares_;
       analyzed_ = true;
     }
-    if(has_seams_ && !interior_ && !gauge_factored_) {
+    if(has_seams_ && !interior_ && !shares_ && !gauge_factored_) {
       gauge_factored_ = true;
       // the real Laplacian (no rotations) for the gauge
       Eigen::SparseMatrix<double> L = A.real();
@@ -916,7 +962,8 @@ public:
     for(int v = 0; v < P_.n; ++v)
       if(P_.kind[v] == Transformed)
         rho0_[v] = rotation(v, x);
-    return solver_.definite();
+    factored_ = solver_.definite();
+    return factored_;
   }
 
   // the metric scaling at x
@@ -947,24 +994,34 @@ public:
         any = any || delta[v] != 0;
       }
     if(!any) return;
-    if(interior_) {
+    if(interior_ || shares_) {
       // harmonic in the interior, +delta/2 on a seam vertex's side, -delta/2 on its twin's
-      // side (the interior Laplacian with the border fixed: the initialisation's factorisation)
+      // side (the interior Laplacian with the border fixed: the leading block of this
+      // factorisation, or the initialisation's)
       auto border_value = [&](int v) {
         if(P_.kind[v] == Transformed) return -delta[v] / 2;
         if(P_.kind[v] == Free && copy_[v] >= 0) return delta[copy_[v]] / 2;
         return 0.0;
       };
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(interior_->size);
+      auto index = [&](int v) { return shares_ ? interior_index(v) : interior_->index[v]; };
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(shares_ ? n_interior_ : interior_->size);
       for(std::size_t e = 0; e < P_.edges.size(); ++e) {
         const int a = P_.edges[e][0], b = P_.edges[e][1];
-        const int ia = interior_->index[a], ib = interior_->index[b];
+        const int ia = index(a), ib = index(b);
         if(ia >= 0 && ib < 0) rhs[ia] += P_.edge_weight[e] * border_value(b);
         else if(ib >= 0 && ia < 0) rhs[ib] += P_.edge_weight[e] * border_value(a);
       }
-      const Eigen::VectorXd psi = interior_->solver.solve(rhs);
+      Eigen::VectorXd psi;
+      if(shares_) {
+        Eigen::VectorXcd c;
+        if(!solve_interior(rhs.cast<Cd>(), c))
+          return; // (cannot happen once factored; no gauge is a valid, weaker, preconditioner)
+        psi = c.real();
+      } else {
+        psi = interior_->solver.solve(rhs);
+      }
       for(int i = 0; i < n_nodes_; ++i) {
-        const int v = owner_[i], ii = interior_->index[v];
+        const int v = owner_[i], ii = index(v);
         gauge_[i] = std::polar(1.0, ii >= 0 ? psi[ii] : border_value(v));
       }
       return;
@@ -1028,8 +1085,9 @@ private:
 
   const Flat_problem& P_;
   std::vector<int> node_, owner_;
-  int n_nodes_ = 0;
+  int n_nodes_ = 0, n_interior_ = 0;
   const Interior_laplacian* interior_;
+  bool shares_ = false, factored_ = false;
   std::vector<int> copy_;      // the seam twin of a vertex, -1 if none
   bool has_seams_ = false, gauge_factored_ = false;
   std::vector<Cd> scale_, gauge_, rho0_;
@@ -1037,6 +1095,168 @@ private:
   Laplacian_factorization<Cd> solver_;
   bool analyzed_ = false;
 };
+
+// Places the border: cone copies at their corners, other border vertices along their
+// tile side at the fraction of the 3D arc length between the side's corners (sphere:
+// p-side vertices on the side's geodesic, their twins follow by the pairing; disk: the
+// parameter t of the Klein segment). Interior vertices: Euclidean Tutte embedding in the
+// Klein model with the same weights (paper, section 5), mapped back to Poincare.
+template <class Point3, class Tile>
+Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const std::vector<Point3>& base_points,
+                                std::vector<double>& x, Interior_laplacian* keep = nullptr)
+{
+  Interior_laplacian local;
+  Interior_laplacian& lap = keep ? *keep : local;
+  typedef Complex<double> C;
+  typedef Hyperbolic_isometry_2<double> Isometry;
+  x.assign(P.n_vars, 0.0);
+  const std::vector<int>& loop = P.border_loop;
+  const int L = static_cast<int>(loop.size());
+  auto dist3 = [&](int a, int b) {
+    const Point3& p = base_points[P.base[a]];
+    const Point3& q = base_points[P.base[b]];
+    const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x()), dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y()),
+                 dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  };
+  // arc-length fraction along each side
+  std::vector<double> frac(P.n, 0.0);
+  {
+    int i = 0;
+    while(i < L) {
+      int j = i + 1;
+      while(j < L && P.corner[loop[j]] < 0)
+        ++j;
+      // corners at loop[i] and loop[j % L]
+      std::vector<double> acc(1, 0.0);
+      for(int q = i; q < j; ++q)
+        acc.push_back(acc.back() + dist3(loop[q], loop[(q + 1) % L]));
+      const double total = acc.back() > 0 ? acc.back() : 1.0;
+      for(int q = i + 1; q < j; ++q)
+        frac[loop[q]] = acc[q - i] / total;
+      i = j;
+    }
+  }
+  std::vector<C> z(P.n);
+  std::vector<char> is_border(P.n, 0);
+  for(int v : loop)
+    is_border[v] = 1;
+  for(int v : loop) {
+    if(P.corner[v] >= 0) {
+      z[v] = P.fixed[v];
+    } else if(P.kind[v] == Free) { // sphere p-side: on the side's geodesic
+      const int s = P.side[v];
+      const auto& a = tile.corner(tile.side_source(s));
+      const auto& b = tile.corner(tile.side_target(s));
+      const C ca(CGAL::to_double(a.x()), CGAL::to_double(a.y())), cb(CGAL::to_double(b.x()), CGAL::to_double(b.y()));
+      const Isometry to0 = Isometry::translation_to_origin(ca);
+      const C b0 = to0.apply(cb);
+      const double r = abs(b0);
+      const double rr = std::tanh(frac[v] * std::atanh(r));
+      z[v] = to0.inverse().apply(b0 * (rr / r));
+      x[P.var[v]] = z[v].re;
+      x[P.var[v] + 1] = z[v].im;
+    } else if(P.kind[v] == On_line) {
+      x[P.var[v]] = frac[v];
+    }
+  }
+  for(int v : loop)
+    if(P.kind[v] == Transformed || P.kind[v] == On_line)
+      z[v] = position(P, x, v);
+
+  // Tutte in Klein coordinates. The interior Laplacian is the leading block of the solver's
+  // connection Laplacian (its rotations depend on the border's positions only, placed above):
+  // where that block can be kept, the solver's factorisation is made here and serves both.
+  std::vector<int>& interior_index = lap.index;
+  interior_index.assign(P.n, -1);
+  lap.own_factor = false;
+  lap.connection.reset();
+  if(lap.share && P.n >= lap.share_from) {
+    auto pre = std::make_shared<Connection_laplacian_preconditioner>(P, nullptr, true);
+    if(pre->factor(x) && pre->shares_interior())
+      lap.connection = pre;
+  }
+  int ni = 0;
+  for(int v = 0; v < P.n; ++v)
+    if(!is_border[v])
+      interior_index[v] = lap.connection ? lap.connection->interior_index(v) : ni++;
+  if(lap.connection)
+    ni = lap.connection->interior_size();
+  lap.size = ni;
+  if(ni > 0) {
+    typedef Eigen::SparseMatrix<double> SpMat;
+    const bool own = !lap.connection; // a factorisation of its own
+    std::vector<Eigen::Triplet<double> > trip;
+    if(own)
+      trip.reserve(4 * P.edges.size() + ni);
+    Eigen::MatrixXd bxy = Eigen::MatrixXd::Zero(ni, 2); // both coordinates: one solve of two columns
+    auto bx = bxy.col(0);
+    auto by = bxy.col(1);
+    std::vector<double> diag(own ? ni : 0, 0.0);
+    auto klein = [](const C& p) { return p * (2.0 / (1.0 + norm(p))); };
+    for(std::size_t e = 0; e < P.edges.size(); ++e) {
+      const int a = P.edges[e][0], b = P.edges[e][1];
+      const double w = P.edge_weight[e];
+      const int ia = interior_index[a], ib = interior_index[b];
+      if(ia >= 0 && own) diag[ia] += w;
+      if(ib >= 0 && own) diag[ib] += w;
+      if(ia >= 0 && ib >= 0) {
+        if(!own)
+          continue;
+        trip.emplace_back(ia, ib, -w);
+        trip.emplace_back(ib, ia, -w);
+      } else if(ia >= 0) {
+        const C kb = klein(z[b]);
+        bx[ia] += w * kb.re;
+        by[ia] += w * kb.im;
+      } else if(ib >= 0) {
+        const C ka = klein(z[a]);
+        bx[ib] += w * ka.re;
+        by[ib] += w * ka.im;
+      }
+    }
+    Eigen::MatrixXd kxy;
+    if(!own) { // both coordinates as one complex right-hand side
+      Eigen::VectorXcd k;
+      if(!lap.connection->solve_interior(bxy.col(0).cast<std::complex<double> >() +
+                                           std::complex<double>(0.0, 1.0) * bxy.col(1).cast<std::complex<double> >(), k))
+        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      kxy.resize(ni, 2);
+      kxy.col(0) = k.real();
+      kxy.col(1) = k.imag();
+    } else {
+      for(int i = 0; i < ni; ++i)
+        trip.emplace_back(i, i, diag[i]);
+      SpMat Lm(ni, ni);
+      Lm.setFromTriplets(trip.begin(), trip.end());
+      auto& solver = lap.solver;
+      solver.compute(Lm);
+      lap.own_factor = true;
+      if(!solver.definite())
+        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      kxy = solver.solve(bxy);
+      if(solver.info() != Eigen::Success)
+        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    }
+    const auto kx = kxy.col(0);
+    const auto ky = kxy.col(1);
+    for(int v = 0; v < P.n; ++v) {
+      const int i = interior_index[v];
+      if(i < 0)
+        continue;
+      const C k(kx[i], ky[i]);
+      const double s = 1.0 - norm(k);
+      if(!(s > 0) || !std::isfinite(k.re) || !std::isfinite(k.im))
+        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      const C p = k / (1.0 + std::sqrt(s));
+      if(P.kind[v] == Free) {
+        x[P.var[v]] = p.re;
+        x[P.var[v] + 1] = p.im;
+      }
+    }
+  }
+  return OK;
+}
 
 // The energy is geodesically convex, its Hessian in the disk's coordinates is not: this
 // subtracts the Christoffel terms of the metric (2/(1-|z|^2))^2 |dz|^2 at each free vertex,
@@ -1095,10 +1315,18 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   SpMat H;
   Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int> > direct;
   bool direct_analyzed = false;
-  Connection_laplacian_preconditioner pre(P, interior);
+  // the initialisation's preconditioner where it made one for this problem (it is factored
+  // again here only if the seam rotations have changed since), else one of our own
+  std::unique_ptr<Connection_laplacian_preconditioner> own_pre;
+  Connection_laplacian_preconditioner* pre_ptr = interior ? interior->connection.get() : nullptr;
+  if(pre_ptr == nullptr || &pre_ptr->problem() != &P) {
+    own_pre.reset(new Connection_laplacian_preconditioner(P, interior));
+    pre_ptr = own_pre.get();
+  }
+  Connection_laplacian_preconditioner& pre = *pre_ptr;
   bool use_direct = opt.direct_solver;
   auto t0 = Clock::now();
-  if(!use_direct && !pre.factor(x))
+  if(!use_direct && !pre.factored_at(x) && !pre.factor(x))
     use_direct = true;
   st.time_factor += seconds(t0);
 
