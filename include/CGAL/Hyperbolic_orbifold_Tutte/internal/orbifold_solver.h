@@ -157,7 +157,7 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
 // 3-5x faster beyond 100K vertices), else Eigen's simplicial LDL^T with AMD ordering. Both are definite
 // factorisations: `definite()` tells whether the matrix was found positive definite.
 //
-// With `keep_leading_block(m)` before `analyze()` (CHOLMOD only, see `can_keep_leading_block`),
+// With `keep_leading_block(m, max_fill)` before `analyze()` (CHOLMOD only, see `can_keep_leading_block`),
 // the matrix is factored in its own order, which the caller has chosen to reduce fill, whatever
 // its size: the factor's first m columns are then the factor of the leading m x m block, and
 // `solve_leading()` solves with that block alone. (P A P^T = L L^*, P keeping the first m rows
@@ -175,25 +175,37 @@ public:
   static constexpr bool can_keep_leading_block = false;
 #endif
 
-  void keep_leading_block(Eigen::Index m) { lead_ = m; }
+  void keep_leading_block(Eigen::Index m, double max_fill) { lead_ = m; max_fill_ = max_fill; }
 
-  // false if the leading block could not be kept (the factorisation is then usable as a whole)
+  // With a leading block to keep: false if it could not be kept, or if keeping it would fill
+  // the factor more than `max_fill` (see keep_leading_block) times CHOLMOD's own AMD order
+  // does (every solve would pay for it); the factorisation is then in that AMD order, usable
+  // as a whole.
   bool analyze(const Matrix& A)
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
     use_cholmod_ = A.rows() >= cholmod_threshold || lead_ >= 0;
     if(use_cholmod_) {
-      if(lead_ >= 0) {
-        cholmod_.cholmod().nmethods = 1;
-        cholmod_.cholmod().method[0].ordering = CHOLMOD_NATURAL;
-        cholmod_.cholmod().postorder = 1; // keeps the order's fill, groups supernodes
+      if(lead_ < 0) {
+        cholmod_.analyzePattern(A);
+        return true;
       }
+      cholmod_common& c = cholmod_.cholmod();
+      c.nmethods = 1;
+      c.method[0].ordering = CHOLMOD_AMD;
       cholmod_.analyzePattern(A);
-      if(lead_ >= 0 && !leading_block_kept() && cholmod_.info() == Eigen::Success) {
-        cholmod_.cholmod().postorder = 0; // the order exactly as given
+      const double amd_fill = c.lnz; // (the statistics of the last analysis)
+      c.method[0].ordering = CHOLMOD_NATURAL;
+      c.postorder = 1; // keeps the order's fill, groups supernodes
+      cholmod_.analyzePattern(A);
+      if(!leading_block_kept()) {
+        c.postorder = 0; // the order exactly as given
         cholmod_.analyzePattern(A);
       }
-      if(lead_ >= 0 && !leading_block_kept()) {
+      if(!leading_block_kept() || !(c.lnz <= max_fill_ * amd_fill)) {
+        c.method[0].ordering = CHOLMOD_AMD;
+        c.postorder = 1;
+        cholmod_.analyzePattern(A);
         lead_ = -1;
         return false;
       }
@@ -303,6 +315,7 @@ private:
   bool use_cholmod_ = false;
 #endif
   Eigen::Index lead_ = -1;
+  double max_fill_ = 1;
 };
 
 // The weighted Laplacian of the cut mesh's interior vertices (the border held fixed),
@@ -324,6 +337,11 @@ struct Interior_laplacian
   bool own_factor = false;  // `solver` factored (definite or not)
   bool share = Laplacian_factorization<double>::can_keep_leading_block; // try `connection` first
   Eigen::Index share_from = Laplacian_factorization<double>::cholmod_threshold;
+  // ... unless the order it needs fills the factor more than this many times CHOLMOD's AMD
+  // order. Measured with 7 landmarks, sharing saved 6% at a fill ratio of 0.97 (blob, 100K
+  // vertices) and 9% at 1.07 (igea, 134K); it cost 10% at 1.09 and 20% at 1.47 (the blob with
+  // 23 and 50 landmarks: longer cuts, and more solves to pay for the extra fill).
+  double share_max_fill = 1.08;
   std::shared_ptr<Connection_laplacian_preconditioner> connection;
 };
 
@@ -825,9 +843,11 @@ public:
   // that order. There is no rotation between two interior vertices, so the leading block is
   // the Laplacian of the interior with the border fixed, and its factor the leading block of
   // the factor: `solve_interior()` serves the initialisation and the gauge with no
-  // factorisation of their own (where `shares_interior()` says so after `factor()`).
+  // factorisation of their own. Where that order cannot be kept or fills the factor too much
+  // (a long cut, many landmarks: see Laplacian_factorization::analyze) the first `factor()`
+  // returns false without factoring: the caller then factors the interior Laplacian itself.
   explicit Connection_laplacian_preconditioner(const Flat_problem& P, const Interior_laplacian* interior = nullptr,
-                                               bool share_interior = false)
+                                               bool share_interior = false, double max_fill = 1.08)
     : P_(P), interior_(interior)
   {
     node_.assign(P.n, -1);
@@ -867,7 +887,7 @@ public:
         if(interior[v] >= 0)
           node_[v] = pinv.indices()[interior[v]];
       n_nodes_ = n_interior_;
-      solver_.keep_leading_block(n_interior_);
+      solver_.keep_leading_block(n_interior_, max_fill);
     }
     for(int v = 0; v < P.n; ++v)
       if((P.kind[v] == Free || P.kind[v] == On_line) && node_[v] < 0)
@@ -938,8 +958,11 @@ public:
     CMat A(n_nodes_, n_nodes_);
     A.setFromTriplets(trip.begin(), trip.end());
     if(!analyzed_) {
-      shares_ = solver_.analyze(A) && shares_;
       analyzed_ = true;
+      if(!solver_.analyze(A) && shares_) {
+        shares_ = false; // (only the initialisation asks to share: it factors its own Laplacian instead)
+        return factored_ = false;
+      }
     }
     if(has_seams_ && !interior_ && !shares_ && !gauge_factored_) {
       gauge_factored_ = true;
@@ -1166,13 +1189,14 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
 
   // Tutte in Klein coordinates. The interior Laplacian is the leading block of the solver's
   // connection Laplacian (its rotations depend on the border's positions only, placed above):
-  // where that block can be kept, the solver's factorisation is made here and serves both.
+  // where that block can be kept at little cost, the solver's factorisation is made here and
+  // serves both (else the analysis alone was spent, a few percent of a factorisation).
   std::vector<int>& interior_index = lap.index;
   interior_index.assign(P.n, -1);
   lap.own_factor = false;
   lap.connection.reset();
   if(lap.share && P.n >= lap.share_from) {
-    auto pre = std::make_shared<Connection_laplacian_preconditioner>(P, nullptr, true);
+    auto pre = std::make_shared<Connection_laplacian_preconditioner>(P, nullptr, true, lap.share_max_fill);
     if(pre->factor(x) && pre->shares_interior())
       lap.connection = pre;
   }
