@@ -881,9 +881,9 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
 
 // The factor of a matrix's leading block is the leading block of its factor when the order
 // keeps that block first: Laplacian_factorization::solve_leading() against a dense LL^T of the
-// block itself (a complex Hermitian positive definite matrix, random rotations on a grid; the
-// block's vertices in AMD order, the others last, as the solver orders them). An order that
-// fills the factor far more than AMD is refused, and the factorisation still solves as a whole.
+// block itself (a complex Hermitian positive definite matrix, random rotations on a grid, the
+// block's rows in AMD order or at random). Keeping a scattered half of the rows last fills the
+// factor far more than AMD's order: that is refused, and the factorisation still solves as a whole.
 TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
 {
   typedef std::complex<double> Cd;
@@ -892,22 +892,27 @@ TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
     return;
   }
   const int side = 30, n = side * side;
-  // last: none but one corner, the first grid row, the middle row (a cut), random (refused)
-  for(int variant = 0; variant < 4; ++variant) {
+  // last: one corner, the first grid row, the middle row (a cut), the middle row with the
+  // block's rows at random (CAMD orders them), a random half of the vertices (refused)
+  for(int variant = 0; variant < 5; ++variant) {
     std::vector<char> last(n, 0);
     if(variant == 0) last[n - 1] = 1;
     for(int j = 0; j < side; ++j) {
       if(variant == 1) last[j] = 1;
-      if(variant == 2) last[(side / 2) * side + j] = 1;
+      if(variant == 2 || variant == 3) last[(side / 2) * side + j] = 1;
     }
+    if(variant == 4)
+      for(int v = 0; v < n; ++v) last[v] = rng.get_int(0, 2) == 1;
     std::vector<int> order(n, -1); // grid vertex -> row of the matrix
     int lead = 0;
-    if(variant == 3) { // a random order: the fill of a dense matrix
-      std::vector<int> p(n);
-      for(int i = 0; i < n; ++i) p[i] = i;
-      for(int i = n - 1; i > 0; --i) std::swap(p[i], p[rng.get_int(0, i + 1)]);
-      for(int i = 0; i < n; ++i) order[i] = p[i];
-      lead = n - side;
+    if(variant >= 3) { // the block's rows at random, the others after them
+      std::vector<int> p;
+      for(int v = 0; v < n; ++v) if(!last[v]) p.push_back(v);
+      lead = static_cast<int>(p.size());
+      for(int i = lead - 1; i > 0; --i) std::swap(p[i], p[rng.get_int(0, i + 1)]);
+      for(int i = 0; i < lead; ++i) order[p[i]] = i;
+      int next = lead;
+      for(int v = 0; v < n; ++v) if(last[v]) order[v] = next++;
     } else {
       std::vector<int> inner(n, -1);
       for(int v = 0; v < n; ++v)
@@ -948,14 +953,14 @@ TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
     Eigen::SparseMatrix<Cd> A(n, n);
     A.setFromTriplets(trip.begin(), trip.end());
     HOT::internal::Laplacian_factorization<Cd> f;
-    f.keep_leading_block(lead, 4.0); // (Eigen's AMD for the block is not CHOLMOD's: some more fill)
+    f.keep_leading_block(lead, variant == 4 ? 1.0 : 1.5); // (more fill than the free order: refused)
     const bool kept = f.analyze(A);
     f.factorize(A);
     CHECK(f.definite());
     Eigen::VectorXcd c = Eigen::VectorXcd::Random(n); // the whole matrix solves as a whole
     CHECK(((A * f.solve(c)) - c).norm() < 1e-10 * c.norm());
-    if(variant == 3) {
-      CHECK_MSG(!kept && !f.keeps_leading_block(), "a random order was not refused");
+    if(variant == 4) {
+      CHECK_MSG(!kept && !f.keeps_leading_block(), "a scattered half kept last was not refused");
       continue;
     }
     CHECK_MSG(kept && f.keeps_leading_block(), "variant " << variant << ": the leading block was not kept");

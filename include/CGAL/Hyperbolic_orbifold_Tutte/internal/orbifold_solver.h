@@ -11,7 +11,6 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-#include <Eigen/OrderingMethods>
 
 #ifdef CGAL_HOT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -157,11 +156,12 @@ void compute_edge_weights(Flat_problem& P, const std::vector<Point3>& base_point
 // 3-5x faster beyond 100K vertices), else Eigen's simplicial LDL^T with AMD ordering. Both are definite
 // factorisations: `definite()` tells whether the matrix was found positive definite.
 //
-// With `keep_leading_block(m, max_fill)` before `analyze()` (CHOLMOD only, see `can_keep_leading_block`),
-// the matrix is factored in its own order, which the caller has chosen to reduce fill, whatever
-// its size: the factor's first m columns are then the factor of the leading m x m block, and
-// `solve_leading()` solves with that block alone. (P A P^T = L L^*, P keeping the first m rows
-// first; with b = (r, 0): y = L^-1 P b = (L11^-1 r, *); its tail set to 0, L^-* y = (L11^-* L11^-1 r, 0).)
+// With `keep_leading_block(m, max_fill)` before `analyze()` (CHOLMOD only, see
+// `can_keep_leading_block`), the matrix is factored, whatever its size, in a constrained
+// minimum-degree order (CAMD) that keeps its first m rows first: the factor's first m
+// columns are then the factor of the leading m x m block, and `solve_leading()` solves with
+// that block alone. (P A P^T = L L^*, P keeping the first m rows first; with b = (r, 0):
+// y = L^-1 P b = (L11^-1 r, *); its tail set to 0, L^-* y = (L11^-* L11^-1 r, 0).)
 template <class Scalar>
 class Laplacian_factorization
 {
@@ -195,14 +195,17 @@ public:
       c.method[0].ordering = CHOLMOD_AMD;
       cholmod_.analyzePattern(A);
       const double amd_fill = c.lnz; // (the statistics of the last analysis)
-      c.method[0].ordering = CHOLMOD_NATURAL;
+      // constrained minimum degree (CAMD): the leading rows before the others
+      std::vector<int> member(A.rows()), perm(A.rows());
+      for(Eigen::Index i = 0; i < A.rows(); ++i)
+        member[i] = i < lead_ ? 0 : 1;
       c.postorder = 1; // keeps the order's fill, groups supernodes
-      cholmod_.analyzePattern(A);
-      if(!leading_block_kept()) {
-        c.postorder = 0; // the order exactly as given
-        cholmod_.analyzePattern(A);
+      bool ordered = cholmod_.analyze_constrained(A, member.data(), perm.data());
+      if(ordered && !leading_block_kept()) {
+        c.postorder = 0; // the order exactly as found
+        ordered = cholmod_.analyze_given(A, perm.data());
       }
-      if(!leading_block_kept() || !(c.lnz <= max_fill_ * amd_fill)) {
+      if(!ordered || !leading_block_kept() || !(c.lnz <= max_fill_ * amd_fill)) {
         c.method[0].ordering = CHOLMOD_AMD;
         c.postorder = 1;
         cholmod_.analyzePattern(A);
@@ -294,6 +297,30 @@ private:
       return cholmod_solve(sys, this->m_cholmodFactor, &bd, &common());
     }
     void free_dense(cholmod_dense*& d) const { cholmod_free_dense(&d, &common()); }
+    // CAMD's order (`member`: the constraint set of each row), then the analysis in it
+    bool analyze_constrained(const Matrix& A, int* member, int* perm)
+    {
+      cholmod_sparse a = Eigen::viewAsCholmod(A.template selfadjointView<Eigen::Lower>());
+      return cholmod_camd(&a, nullptr, 0, member, perm, &common()) && analyze_given(A, perm);
+    }
+    bool analyze_given(const Matrix& A, int* perm)
+    {
+      cholmod_common& c = common();
+      if(this->m_cholmodFactor)
+        cholmod_free_factor(&this->m_cholmodFactor, &c);
+      cholmod_sparse a = Eigen::viewAsCholmod(A.template selfadjointView<Eigen::Lower>());
+      const int ordering = c.method[0].ordering, methods = c.nmethods;
+      c.nmethods = 1;
+      c.method[0].ordering = CHOLMOD_GIVEN;
+      this->m_cholmodFactor = cholmod_analyze_p(&a, perm, nullptr, 0, &c);
+      c.method[0].ordering = ordering;
+      c.nmethods = methods;
+      this->m_isInitialized = true;
+      this->m_info = Eigen::Success;
+      this->m_analysisIsOk = this->m_cholmodFactor != nullptr;
+      this->m_factorizationIsOk = false;
+      return this->m_cholmodFactor != nullptr;
+    }
     cholmod_common& common() const { return const_cast<Cholmod*>(this)->cholmod(); } // (mutable in Eigen)
   };
   bool leading_block_kept() const
@@ -337,11 +364,12 @@ struct Interior_laplacian
   bool own_factor = false;  // `solver` factored (definite or not)
   bool share = Laplacian_factorization<double>::can_keep_leading_block; // try `connection` first
   Eigen::Index share_from = Laplacian_factorization<double>::cholmod_threshold;
-  // ... unless the order it needs fills the factor more than this many times CHOLMOD's AMD
-  // order. Measured with 7 landmarks, sharing saved 6% at a fill ratio of 0.97 (blob, 100K
-  // vertices) and 9% at 1.07 (igea, 134K); it cost 10% at 1.09 and 20% at 1.47 (the blob with
-  // 23 and 50 landmarks: longer cuts, and more solves to pay for the extra fill).
-  double share_max_fill = 1.08;
+  // ... unless the order it needs (the cut last, CAMD) fills the factor more than this many
+  // times CHOLMOD's free AMD order does: sharing saves the interior Laplacian's factorisation,
+  // but each gauge solve then costs a complex solve instead of a real one, and extra fill
+  // costs every solve. Measured on the blob of 100K vertices: 5% saved with 7 landmarks (fill
+  // ratio 0.96), 7% lost with 23 (ratio 1.008: 39 CG iterations and 7 gauge solves to pay).
+  double share_max_fill = 1.0;
   std::shared_ptr<Connection_laplacian_preconditioner> connection;
 };
 
@@ -838,16 +866,16 @@ public:
   // `interior`: the initialisation's factored interior Laplacian, used for the gauge (else
   // the preconditioner factors a real Laplacian of its own for it)
   //
-  // `share_interior`: the vertices off the border loop are numbered first, in a fill-reducing
-  // (AMD) order of their Laplacian, the border's nodes after them, and the factorisation keeps
-  // that order. There is no rotation between two interior vertices, so the leading block is
+  // `share_interior`: the vertices off the border loop are numbered first, the border's nodes
+  // after them, and the factorisation keeps the first before the others (constrained AMD).
+  // There is no rotation between two interior vertices, so the leading block is
   // the Laplacian of the interior with the border fixed, and its factor the leading block of
   // the factor: `solve_interior()` serves the initialisation and the gauge with no
   // factorisation of their own. Where that order cannot be kept or fills the factor too much
   // (a long cut, many landmarks: see Laplacian_factorization::analyze) the first `factor()`
   // returns false without factoring: the caller then factors the interior Laplacian itself.
   explicit Connection_laplacian_preconditioner(const Flat_problem& P, const Interior_laplacian* interior = nullptr,
-                                               bool share_interior = false, double max_fill = 1.08)
+                                               bool share_interior = false, double max_fill = 1.0)
     : P_(P), interior_(interior)
   {
     node_.assign(P.n, -1);
@@ -864,30 +892,11 @@ public:
       }
     }
     if(share_interior) {
-      std::vector<int> interior(P.n, -1);
       for(int v = 0; v < P.n; ++v)
         if(!on_loop[v])
-          interior[v] = n_interior_++;
-      // the interior Laplacian's pattern, ordered by AMD: position of interior vertex i = pinv[i]
-      std::vector<Eigen::Triplet<double> > trip;
-      trip.reserve(2 * P.edges.size() + n_interior_);
-      for(const auto& e : P.edges)
-        if(interior[e[0]] >= 0 && interior[e[1]] >= 0) {
-          trip.emplace_back(interior[e[0]], interior[e[1]], 1.0);
-          trip.emplace_back(interior[e[1]], interior[e[0]], 1.0);
-        }
-      for(int i = 0; i < n_interior_; ++i)
-        trip.emplace_back(i, i, 1.0);
-      Eigen::SparseMatrix<double> pattern(n_interior_, n_interior_);
-      pattern.setFromTriplets(trip.begin(), trip.end());
-      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
-      Eigen::AMDOrdering<int>()(pattern, perm);
-      const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> pinv = perm.inverse();
-      for(int v = 0; v < P.n; ++v)
-        if(interior[v] >= 0)
-          node_[v] = pinv.indices()[interior[v]];
+          node_[v] = n_interior_++;
       n_nodes_ = n_interior_;
-      solver_.keep_leading_block(n_interior_, max_fill);
+      solver_.keep_leading_block(n_interior_, max_fill); // (ordered by constrained AMD there)
     }
     for(int v = 0; v < P.n; ++v)
       if((P.kind[v] == Free || P.kind[v] == On_line) && node_[v] < 0)
