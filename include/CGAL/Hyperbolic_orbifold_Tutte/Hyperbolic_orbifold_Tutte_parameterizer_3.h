@@ -43,7 +43,8 @@ struct Embedding_statistics
   int preconditioner_factorizations = 0; ///< factorisations of the connection-Laplacian preconditioner after the first
   /// `true` when the initialisation solved its Tutte system with the leading block of the
   /// solver's factorisation, so that one factorisation served both (with CHOLMOD, from 50K
-  /// vertices of the cut mesh on; otherwise each factors a matrix of its own)
+  /// vertices of the cut mesh on, where the order this needs fills the factor no more than
+  /// CHOLMOD's own; otherwise each factors a matrix of its own)
   bool shared_factorization = false;
   double initial_energy = 0;          ///< Dirichlet energy of the Euclidean Tutte initialisation
   double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
