@@ -352,7 +352,7 @@ TEST_CASE(disk_mannequin_devil) { check_disk_mesh("mannequin-devil", {6}, HOT::C
 TEST_CASE(heavy_disk_many_corners) { check_disk_mesh("mannequin-devil", {12, 30}, HOT::Cotangent); check_disk_mesh("lion-head", {50}, HOT::Mean_value); }
 
 // From 50K cut-mesh vertices on, CHOLMOD factors, and the initialisation and the solver share
-// one factorisation where the order that needs fills the factor little (here it does not:
+// one factorisation where the order this needs fills the factor little (here it does not:
 // the man refined once by Loop subdivision, about 70K vertices, takes the separate
 // factorisations; the sharing itself is tested above, forced on smaller meshes): embedded and
 // certified through the one-call function
@@ -814,6 +814,18 @@ TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
   }
 }
 
+// the largest hyperbolic distance between the positions of a vertex in two solutions
+static double largest_hyperbolic_distance(const HOT::internal::Flat_problem& P, const std::vector<double>& xa,
+                                          const std::vector<double>& xb)
+{
+  double worst = 0;
+  for(int v = 0; v < P.n; ++v) {
+    const C a = HOT::internal::position(P, xa, v), b = HOT::internal::position(P, xb, v);
+    worst = std::max(worst, 2 * std::asinh(std::sqrt(norm(a - b) / ((1 - norm(a)) * (1 - norm(b))))));
+  }
+  return worst;
+}
+
 // The energy has one minimiser (it is geodesically convex): the preconditioned solver
 // (Newton-CG with the connection Laplacian, from the start or after preconditioned gradient
 // steps) and the direct one (the Hessian factored at every Newton step) must reach the same
@@ -835,12 +847,7 @@ static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std:
     std::vector<double> xf = x0;
     HOT::internal::Solver_statistics sf;
     CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf, interior) == HOT::OK, name << ": preconditioned solver");
-    double worst = 0;
-    for(int v = 0; v < P.n; ++v) {
-      const C a = HOT::internal::position(P, xf, v), b = HOT::internal::position(P, xd, v);
-      const double dd = norm(a - b) / ((1 - norm(a)) * (1 - norm(b)));
-      worst = std::max(worst, 2 * std::asinh(std::sqrt(dd))); // hyperbolic distance
-    }
+    const double worst = largest_hyperbolic_distance(P, xf, xd);
     std::cout << "  " << name << ": preconditioned " << sf.iterations << " steps (" << sf.cg_iterations << " CG, "
               << sf.preconditioner_factorizations << " refactorisations), direct " << sd.iterations
               << " steps; largest hyperbolic distance between the two " << worst << std::endl;
@@ -882,7 +889,7 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
 // The factor of a matrix's leading block is the leading block of its factor when the order
 // keeps that block first: Laplacian_factorization::solve_leading() against a dense LL^T of the
 // block itself (a complex Hermitian positive definite matrix, random rotations on a grid, the
-// block's rows in AMD order or at random). Keeping a scattered half of the rows last fills the
+// block's rows in grid order or at random). Keeping a scattered half of the rows last fills the
 // factor far more than AMD's order: that is refused, and the factorisation still solves as a whole.
 TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
 {
@@ -903,37 +910,16 @@ TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
     }
     if(variant == 4)
       for(int v = 0; v < n; ++v) last[v] = rng.get_int(0, 2) == 1;
-    std::vector<int> order(n, -1); // grid vertex -> row of the matrix
-    int lead = 0;
-    if(variant >= 3) { // the block's rows at random, the others after them
-      std::vector<int> p;
-      for(int v = 0; v < n; ++v) if(!last[v]) p.push_back(v);
-      lead = static_cast<int>(p.size());
+    // the block's rows in grid order, or at random (CAMD orders them either way), the others after
+    std::vector<int> p;
+    for(int v = 0; v < n; ++v) if(!last[v]) p.push_back(v);
+    const int lead = static_cast<int>(p.size());
+    if(variant >= 3)
       for(int i = lead - 1; i > 0; --i) std::swap(p[i], p[rng.get_int(0, i + 1)]);
-      for(int i = 0; i < lead; ++i) order[p[i]] = i;
-      int next = lead;
-      for(int v = 0; v < n; ++v) if(last[v]) order[v] = next++;
-    } else {
-      std::vector<int> inner(n, -1);
-      for(int v = 0; v < n; ++v)
-        if(!last[v]) inner[v] = lead++;
-      std::vector<Eigen::Triplet<double> > pt;
-      for(int i = 0; i < side; ++i)
-        for(int j = 0; j < side; ++j) {
-          const int a = i * side + j;
-          if(inner[a] < 0) continue;
-          pt.emplace_back(inner[a], inner[a], 1.0);
-          if(i + 1 < side && inner[a + side] >= 0) { pt.emplace_back(inner[a], inner[a + side], 1.0); pt.emplace_back(inner[a + side], inner[a], 1.0); }
-          if(j + 1 < side && inner[a + 1] >= 0) { pt.emplace_back(inner[a], inner[a + 1], 1.0); pt.emplace_back(inner[a + 1], inner[a], 1.0); }
-        }
-      Eigen::SparseMatrix<double> pattern(lead, lead);
-      pattern.setFromTriplets(pt.begin(), pt.end());
-      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
-      Eigen::AMDOrdering<int>()(pattern, perm);
-      const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> pinv = perm.inverse();
-      int next = lead;
-      for(int v = 0; v < n; ++v) order[v] = inner[v] >= 0 ? pinv.indices()[inner[v]] : next++;
-    }
+    std::vector<int> order(n, -1); // grid vertex -> row of the matrix
+    for(int i = 0; i < lead; ++i) order[p[i]] = i;
+    int next = lead;
+    for(int v = 0; v < n; ++v) if(last[v]) order[v] = next++;
     std::vector<Eigen::Triplet<Cd> > trip;
     std::vector<double> diag(n, 0.01);
     for(int i = 0; i < side; ++i)
@@ -984,11 +970,7 @@ TEST_CASE(initialisation_shares_the_solver_factorisation)
 {
   auto compare = [](const HOT::internal::Flat_problem& P, const std::vector<double>& xs, const std::vector<double>& xo,
                     const std::string& what) {
-    double worst = 0;
-    for(int v = 0; v < P.n; ++v) {
-      const C a = HOT::internal::position(P, xs, v), b = HOT::internal::position(P, xo, v);
-      worst = std::max(worst, 2 * std::asinh(std::sqrt(norm(a - b) / ((1 - norm(a)) * (1 - norm(b))))));
-    }
+    const double worst = largest_hyperbolic_distance(P, xs, xo);
     std::cout << "  " << what << ": largest hyperbolic distance between the two initialisations " << worst << std::endl;
     CHECK_MSG(worst < 1e-9, what << ": " << worst);
   };

@@ -83,7 +83,8 @@ struct Embedding_statistics
   /// \var time_setup
   /// seconds spent checking the input, cutting the mesh and setting up the problem
   /// \var time_initialization
-  /// seconds spent in the Euclidean Tutte initialisation
+  /// seconds spent in the Euclidean Tutte initialisation (with `shared_factorization`, the
+  /// solver's factorisation is made there and counted there)
   /// \var time_optimization
   /// seconds spent in Newton's method
   /// \var time_certificate

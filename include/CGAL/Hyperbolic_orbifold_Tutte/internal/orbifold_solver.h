@@ -345,11 +345,11 @@ private:
   double max_fill_ = 1;
 };
 
-// The weighted Laplacian of the cut mesh's interior vertices (the border held fixed),
-// factored once by the initialisation and reused by the solver's preconditioner (gauge).
 class Connection_laplacian_preconditioner;
 
-// Either a factorisation of its own (`solver`) or, where CHOLMOD keeps the leading block
+// The weighted Laplacian of the cut mesh's interior vertices (the border held fixed), for the
+// initialisation and the preconditioner's gauge. Either a factorisation of its own (`solver`)
+// or, where CHOLMOD keeps the leading block
 // (see Laplacian_factorization), the leading block of the solver's connection Laplacian,
 // factored once for both (`connection`; the initialisation then needs no factorisation of
 // its own, and the solver takes that preconditioner over). Sharing starts where CHOLMOD
