@@ -5,7 +5,7 @@
 // parallelogram orbifold, cotangent weights), our hyperbolic embedding (cut, init, optimise,
 // certify) and the "Cholesky floor" (one factorisation + solve of the cotangent Laplacian, the
 // faster of Eigen's simplicial LDL^T and, where available, CHOLMOD's supernodal LL^T).
-//   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] (mesh.off | generated:N) [...]
+//   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] (mesh.off | generated:N) [...]
 // generated:N is a genus-0 blob with protrusions of about N vertices (made here);
 // mesh.off@cones.txt uses the landmarks listed in cones.txt instead of K farthest points.
 // Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
@@ -164,7 +164,7 @@ int main(int argc, char** argv)
 {
   std::size_t k = 7;
   std::size_t euclid_max = 500000; // CGAL's Euclidean solve takes minutes and > 4 GB beyond
-  bool with_map = true, with_floor = true;
+  bool with_map = true, with_floor = true, detail = false;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -172,10 +172,11 @@ int main(int argc, char** argv)
     else if(a == "--euclid-max" && i + 1 < argc) euclid_max = std::strtoul(argv[++i], nullptr, 10);
     else if(a == "--no-map") with_map = false;
     else if(a == "--no-floor") with_floor = false; // peak memory of the embedding alone
+    else if(a == "--detail") detail = true;        // the optimisation's parts, on a second line
     else files.push_back(a);
   }
   if(files.empty()) {
-    std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] (mesh.off | generated:N) [...]" << std::endl;
+    std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] (mesh.off | generated:N) [...]" << std::endl;
     return 1;
   }
   std::printf("%-24s %8s %3s | %9s | %7s %7s %7s %7s %8s | %10s %9s | %7s %9s %7s | %7s | %7s %s\n", "mesh", "vertices", "k",
@@ -255,6 +256,10 @@ int main(int argc, char** argv)
                 st.time_setup, st.time_initialization, st.time_optimization, st.time_certificate, total, st.iterations,
                 st.cg_iterations, st.preconditioner_factorizations, st.relative_gradient_norm, (eok && te > 0) ? total / te : -1.0, tc, tc > 0 ? total / tc : -1.0, tmap, peak_rss_mb(),
                 ec == HOT::OK && st.certificate.is_bijective() ? "bijective" : HOT::error_message(ec));
+    if(detail)
+      std::printf("  optimisation: assembly %.3f s, factorisations and solves %.3f s, line search %.3f s, other %.3f s\n",
+                  st.time_assembly, st.time_factorization, st.time_line_search,
+                  st.time_optimization - st.time_assembly - st.time_factorization - st.time_line_search);
     std::fflush(stdout);
   }
   return 0;

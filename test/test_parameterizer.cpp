@@ -852,6 +852,8 @@ static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std:
               << sf.preconditioner_factorizations << " refactorisations), direct " << sd.iterations
               << " steps; largest hyperbolic distance between the two " << worst << std::endl;
     CHECK(sf.cg_failures == 0);
+    if(interior && interior->connection) // (CHOLMOD's factor, shared: its solves are in single precision)
+      CHECK_MSG(interior->connection->solves_in_single_precision(), name << ": the shared factor was not rounded");
     CHECK_MSG(worst < 1e-7, name << ": the two solvers differ by " << worst);
     CHECK(std::abs(sf.energy - sd.energy) <= 1e-12 * sd.energy);
   }
@@ -961,6 +963,75 @@ TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
               << ", residual " << res << std::endl;
     CHECK_MSG(err < 1e-10 && res < 1e-12, "leading block " << lead << ": " << err << ", residual " << res);
   }
+}
+
+// A supernodal factor rounded to single precision (the preconditioner's solves): the solve
+// is one with a fixed matrix L~ L~^* within float rounding of A, so (rounding analysis) its
+// backward error is of the order of float's unit roundoff, the operator is Hermitian and
+// definite to double rounding, the portable and the AVX2 loops give the same bits, and a new
+// factorisation gives the double factor back
+TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
+{
+  typedef std::complex<double> Cd;
+  if(!HOT::internal::Laplacian_factorization<Cd>::can_keep_leading_block) {
+    std::cout << "  (built without CHOLMOD: no supernodal factor to round)" << std::endl;
+    return;
+  }
+  const int side = 60, n = side * side, lead = n - side; // the last grid row kept last
+  std::vector<Eigen::Triplet<Cd> > trip;
+  std::vector<double> diag(n, 1e-3);
+  for(int i = 0; i < side; ++i)
+    for(int j = 0; j < side; ++j)
+      for(const int d : {0, 1}) {
+        const int ni = i + (d == 0), nj = j + (d == 1);
+        if(ni >= side || nj >= side) continue;
+        const int a = i * side + j, b = ni * side + nj;
+        const double w = rng.get_double(0.1, 2.0);
+        const Cd v = -w * std::polar(1.0, rng.get_double(-3.0, 3.0));
+        trip.emplace_back(a, b, v);
+        trip.emplace_back(b, a, std::conj(v));
+        diag[a] += w;
+        diag[b] += w;
+      }
+  for(int i = 0; i < n; ++i) trip.emplace_back(i, i, Cd(diag[i], 0.0));
+  Eigen::SparseMatrix<Cd> A(n, n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  double normA = 0; // the largest row sum: at least the 2-norm (Hermitian)
+  for(int i = 0; i < n; ++i)
+    normA = std::max(normA, Eigen::MatrixXcd(A.row(i)).cwiseAbs().sum());
+  HOT::internal::Laplacian_factorization<Cd> f;
+  f.keep_leading_block(lead, 1.5);
+  CHECK(f.analyze(A));
+  f.factorize(A);
+  CHECK(f.definite() && !f.single_precision());
+  Eigen::VectorXcd b = Eigen::VectorXcd::Random(n), u = Eigen::VectorXcd::Random(n), bl = Eigen::VectorXcd::Random(lead);
+  const Eigen::VectorXcd xd = f.solve(b);
+  CHECK(f.round_to_single_precision() && f.single_precision());
+  const Eigen::VectorXcd xf = f.solve(b), sf_u = f.solve(u);
+  const double backward = (A * xf - b).norm() / (normA * xf.norm());
+  const double hermitian = std::abs(u.dot(f.solve(b)) - sf_u.dot(b)) / (u.norm() * xf.norm());
+  const double forward = (xf - xd).norm() / xd.norm();
+  std::cout << "  rounded factor: backward error " << backward << ", Hermitian to " << hermitian << ", differs from the double solve by "
+            << forward << std::endl;
+  CHECK_MSG(backward < 1e-5 && backward > 1e-11, "backward error " << backward); // (float's, not double's: it is rounded)
+  CHECK_MSG(hermitian < 1e-12, "not Hermitian: " << hermitian);
+  CHECK(u.dot(sf_u).real() > 0 && std::abs(u.dot(sf_u).imag()) < 1e-12 * std::abs(u.dot(sf_u).real()));
+  // the leading block alone
+  const Eigen::VectorXcd xl = f.solve_leading(bl);
+  const Eigen::MatrixXcd block = Eigen::MatrixXcd(A).topLeftCorner(lead, lead);
+  const double backward_lead = (block * xl - bl).norm() / (normA * xl.norm()); // (a block: no larger norm)
+  CHECK_MSG(xl.size() == lead && backward_lead < 1e-5, "leading block: backward error " << backward_lead);
+  // portable and AVX2 loops: the same bits
+  std::vector<double> wy, ww;
+  Eigen::VectorXcd x1, x2;
+  HOT::internal::solve_with_float_factor(f.single_precision_factor(), b, x1, -1, wy, ww, true);
+  HOT::internal::solve_with_float_factor(f.single_precision_factor(), b, x2, -1, wy, ww, false);
+  CHECK_MSG(x1 == x2 && x1 == xf, "the AVX2 and the portable loops differ");
+  // a new factorisation: double precision again
+  f.factorize(A);
+  CHECK(!f.single_precision());
+  const double again = (f.solve(b) - xd).norm() / xd.norm();
+  CHECK_MSG(again < 1e-13, "factored again after rounding: " << again);
 }
 
 // The initialisation's Tutte embedding solved with the leading block of the solver's

@@ -14,6 +14,7 @@
 
 #ifdef CGAL_HOT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/single_precision_factor.h>
 #endif
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -28,6 +29,7 @@
 #include <limits>
 #include <cmath>
 #include <memory>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -185,30 +187,40 @@ public:
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
     use_cholmod_ = A.rows() >= cholmod_threshold || lead_ >= 0;
+    single_ = false;
     if(use_cholmod_) {
       if(lead_ < 0) {
         cholmod_.analyzePattern(A);
         return true;
       }
+      // the fills of both orders, from the orderings alone (AMD's and CAMD's counts); then
+      // one symbolic analysis, in the order chosen
       cholmod_common& c = cholmod_.cholmod();
-      c.nmethods = 1;
+      c.nmethods = 1; // (where an order is not given: AMD alone)
       c.method[0].ordering = CHOLMOD_AMD;
-      cholmod_.analyzePattern(A);
-      const double amd_fill = c.lnz; // (the statistics of the last analysis)
-      // constrained minimum degree (CAMD): the leading rows before the others
-      std::vector<int> member(A.rows()), perm(A.rows());
-      for(Eigen::Index i = 0; i < A.rows(); ++i)
-        member[i] = i < lead_ ? 0 : 1;
-      c.postorder = 1; // keeps the order's fill, groups supernodes
-      bool ordered = cholmod_.analyze_constrained(A, member.data(), perm.data());
-      if(ordered && !leading_block_kept()) {
-        c.postorder = 0; // the order exactly as found
-        ordered = cholmod_.analyze_given(A, perm.data());
-      }
-      if(!ordered || !leading_block_kept() || !(c.lnz <= max_fill_ * amd_fill)) {
-        c.method[0].ordering = CHOLMOD_AMD;
-        c.postorder = 1;
+      std::vector<int> amd_perm(A.rows()), camd_perm(A.rows()), member(A.rows());
+      if(!cholmod_.order_free(A, amd_perm.data())) {
         cholmod_.analyzePattern(A);
+        lead_ = -1;
+        return false;
+      }
+      const double amd_fill = c.lnz;
+      for(Eigen::Index i = 0; i < A.rows(); ++i) // constrained minimum degree: the leading rows first
+        member[i] = i < lead_ ? 0 : 1;
+      bool ordered = cholmod_.order_constrained(A, member.data(), camd_perm.data()) && c.lnz <= max_fill_ * amd_fill;
+      c.postorder = 1; // keeps the order's fill, groups supernodes
+      if(ordered) {
+        ordered = cholmod_.analyze_given(A, camd_perm.data());
+        if(ordered && !leading_block_kept()) {
+          c.postorder = 0; // the order exactly as found
+          ordered = cholmod_.analyze_given(A, camd_perm.data());
+          c.postorder = 1;
+        }
+        ordered = ordered && leading_block_kept();
+      }
+      if(!ordered) {
+        if(!cholmod_.analyze_given(A, amd_perm.data()))
+          cholmod_.analyzePattern(A);
         lead_ = -1;
         return false;
       }
@@ -223,10 +235,37 @@ public:
   void factorize(const Matrix& A)
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
+    single_ = false; // (the factorisation writes double values anew)
     if(use_cholmod_) { cholmod_.factorize(A); return; }
 #endif
     simplicial_.factorize(A);
   }
+  // Rounds a complex supernodal (CHOLMOD) factor to single precision, in place: every solve
+  // until the next factorize() is then a solve with that rounded factor (in double
+  // arithmetic): see single_precision_factor.h. False, and nothing changed, for a simplicial
+  // or real factor or one not factored.
+  bool round_to_single_precision()
+  {
+#ifdef CGAL_HOT_USE_CHOLMOD
+    if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
+      if(!single_ && use_cholmod_ && cholmod_.info() == Eigen::Success)
+        single_ = round_supernodal_factor_to_float(cholmod_.mutable_factor(), single_factor_);
+      return single_;
+    }
+#endif
+    return false;
+  }
+  bool single_precision() const
+  {
+#ifdef CGAL_HOT_USE_CHOLMOD
+    return single_;
+#else
+    return false;
+#endif
+  }
+#ifdef CGAL_HOT_USE_CHOLMOD
+  const Supernodal_float_factor& single_precision_factor() const { return single_factor_; }
+#endif
   void compute(const Matrix& A) { analyze(A); factorize(A); }
   Eigen::ComputationInfo info() const
   {
@@ -247,6 +286,18 @@ public:
   Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Rhs& b) const
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
+    if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
+      if(single_) {
+        Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> x(b.rows(), b.cols());
+        Eigen::Matrix<Scalar, Eigen::Dynamic, 1> bj, xj;
+        for(Eigen::Index j = 0; j < b.cols(); ++j) {
+          bj = b.col(j);
+          solve_with_float_factor(single_factor_, bj, xj, -1, work_y_, work_w_);
+          x.col(j) = xj;
+        }
+        return x;
+      }
+    }
     if(use_cholmod_) return cholmod_.solve(b);
 #endif
     return simplicial_.solve(b);
@@ -258,6 +309,12 @@ public:
     Eigen::Matrix<Scalar, Eigen::Dynamic, 1> x;
 #ifdef CGAL_HOT_USE_CHOLMOD
     CGAL_precondition(lead_ >= 0 && b.size() == lead_);
+    if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
+      if(single_) {
+        solve_with_float_factor(single_factor_, b, x, static_cast<int>(lead_), work_y_, work_w_);
+        return x;
+      }
+    }
     const cholmod_factor* F = cholmod_.factor();
     const int* perm = static_cast<const int*>(F->Perm);
     const Eigen::Index n = static_cast<Eigen::Index>(F->n);
@@ -291,17 +348,24 @@ private:
   struct Cholmod : Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower>
   {
     const cholmod_factor* factor() const { return this->m_cholmodFactor; }
+    cholmod_factor* mutable_factor() { return this->m_cholmodFactor; }
     cholmod_dense* solve_system(int sys, Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& b) const
     {
       cholmod_dense bd = Eigen::viewAsCholmod(b);
       return cholmod_solve(sys, this->m_cholmodFactor, &bd, &common());
     }
     void free_dense(cholmod_dense*& d) const { cholmod_free_dense(&d, &common()); }
-    // CAMD's order (`member`: the constraint set of each row), then the analysis in it
-    bool analyze_constrained(const Matrix& A, int* member, int* perm)
+    // AMD's order of A (c.lnz: its fill), without the symbolic analysis
+    bool order_free(const Matrix& A, int* perm)
     {
       cholmod_sparse a = Eigen::viewAsCholmod(A.template selfadjointView<Eigen::Lower>());
-      return cholmod_camd(&a, nullptr, 0, member, perm, &common()) && analyze_given(A, perm);
+      return cholmod_amd(&a, nullptr, 0, perm, &common());
+    }
+    // CAMD's order (`member`: the constraint set of each row; c.lnz: its fill)
+    bool order_constrained(const Matrix& A, int* member, int* perm)
+    {
+      cholmod_sparse a = Eigen::viewAsCholmod(A.template selfadjointView<Eigen::Lower>());
+      return cholmod_camd(&a, nullptr, 0, member, perm, &common());
     }
     bool analyze_given(const Matrix& A, int* perm)
     {
@@ -340,6 +404,9 @@ private:
 #ifdef CGAL_HOT_USE_CHOLMOD
   Cholmod cholmod_;
   bool use_cholmod_ = false;
+  bool single_ = false;                    // the factor rounded to float (round_to_single_precision)
+  Supernodal_float_factor single_factor_;  // (a view of it)
+  mutable std::vector<double> work_y_, work_w_;
 #endif
   Eigen::Index lead_ = -1;
   double max_fill_ = 1;
@@ -391,6 +458,8 @@ struct Solver_options
   // converged embedding whose small regions need the last digits (see the parameterizer)
   bool polish = false;
   bool riemannian_hessian = true;    // Newton with the Riemannian Hessian (see minimize_energy)
+  // the preconditioner's CHOLMOD factor rounded to float for its solves (single_precision_factor.h)
+  bool single_precision_preconditioner = true;
   // converged also means: no vertex's own forces are out of balance by more than this
   // fraction of their sizes, unless rounding explains it (else Newton goes on to the floor)
   double vertex_imbalance = 1e-8;
@@ -995,8 +1064,20 @@ public:
       if(P_.kind[v] == Transformed)
         rho0_[v] = rotation(v, x);
     factored_ = solver_.definite();
+    if(factored_ && single_precision_)
+      solver_.round_to_single_precision();
     return factored_;
   }
+
+  // From now on (and after every new factorisation) the solves use the factor rounded to
+  // single precision where it is CHOLMOD's (see Laplacian_factorization::round_to_single_precision)
+  void solve_in_single_precision()
+  {
+    single_precision_ = true;
+    if(factored_)
+      solver_.round_to_single_precision();
+  }
+  bool solves_in_single_precision() const { return solver_.single_precision(); }
 
   // the metric scaling at x
   void set_scaling(const std::vector<double>& x)
@@ -1119,7 +1200,7 @@ private:
   std::vector<int> node_, owner_;
   int n_nodes_ = 0, n_interior_ = 0;
   const Interior_laplacian* interior_;
-  bool shares_ = false, factored_ = false;
+  bool shares_ = false, factored_ = false, single_precision_ = false;
   std::vector<int> copy_;      // the seam twin of a vertex, -1 if none
   bool has_seams_ = false, gauge_factored_ = false;
   std::vector<Cd> scale_, gauge_, rho0_;
@@ -1361,6 +1442,8 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   auto t0 = Clock::now();
   if(!use_direct && !pre.factored_at(x) && !pre.factor(x))
     use_direct = true;
+  if(opt.single_precision_preconditioner)
+    pre.solve_in_single_precision();
   st.time_factor += seconds(t0);
 
   // per-variable weights of the hyperbolic norm of a gradient (or residual)
