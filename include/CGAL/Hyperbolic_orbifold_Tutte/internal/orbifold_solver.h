@@ -20,6 +20,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #endif
 
 #include <algorithm>
@@ -193,21 +194,34 @@ public:
         cholmod_.analyzePattern(A);
         return true;
       }
-      // the fills of both orders, from the orderings alone (AMD's and CAMD's counts); then
-      // one symbolic analysis, in the order chosen
+      // the fills of both orders, from the orderings alone (AMD's and CAMD's counts, the two
+      // at once where TBB is available: each with its own CHOLMOD workspace); then one
+      // symbolic analysis, in the order chosen
       cholmod_common& c = cholmod_.cholmod();
       c.nmethods = 1; // (where an order is not given: AMD alone)
       c.method[0].ordering = CHOLMOD_AMD;
       std::vector<int> amd_perm(A.rows()), camd_perm(A.rows()), member(A.rows());
-      if(!cholmod_.order_free(A, amd_perm.data())) {
+      for(Eigen::Index i = 0; i < A.rows(); ++i) // constrained minimum degree: the leading rows first
+        member[i] = i < lead_ ? 0 : 1;
+      cholmod_common c_amd;
+      cholmod_start(&c_amd);
+      bool amd_ok = false, camd_ok = false;
+      auto free_order = [&]() { amd_ok = cholmod_.order_free(A, amd_perm.data(), c_amd); };
+      auto constrained_order = [&]() { camd_ok = cholmod_.order_constrained(A, member.data(), camd_perm.data()); };
+#ifdef CGAL_LINKED_WITH_TBB
+      tbb::parallel_invoke(free_order, constrained_order);
+#else
+      free_order();
+      constrained_order();
+#endif
+      const double amd_fill = c_amd.lnz, camd_fill = c.lnz;
+      cholmod_finish(&c_amd);
+      if(!amd_ok) {
         cholmod_.analyzePattern(A);
         lead_ = -1;
         return false;
       }
-      const double amd_fill = c.lnz;
-      for(Eigen::Index i = 0; i < A.rows(); ++i) // constrained minimum degree: the leading rows first
-        member[i] = i < lead_ ? 0 : 1;
-      bool ordered = cholmod_.order_constrained(A, member.data(), camd_perm.data()) && c.lnz <= max_fill_ * amd_fill;
+      bool ordered = camd_ok && camd_fill <= max_fill_ * amd_fill;
       c.postorder = 1; // keeps the order's fill, groups supernodes
       if(ordered) {
         ordered = cholmod_.analyze_given(A, camd_perm.data());
@@ -356,10 +370,10 @@ private:
     }
     void free_dense(cholmod_dense*& d) const { cholmod_free_dense(&d, &common()); }
     // AMD's order of A (c.lnz: its fill), without the symbolic analysis
-    bool order_free(const Matrix& A, int* perm)
+    bool order_free(const Matrix& A, int* perm, cholmod_common& c) const
     {
       cholmod_sparse a = Eigen::viewAsCholmod(A.template selfadjointView<Eigen::Lower>());
-      return cholmod_amd(&a, nullptr, 0, perm, &common());
+      return cholmod_amd(&a, nullptr, 0, perm, &c);
     }
     // CAMD's order (`member`: the constraint set of each row; c.lnz: its fill)
     bool order_constrained(const Matrix& A, int* member, int* perm)
