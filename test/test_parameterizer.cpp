@@ -1021,12 +1021,18 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
   const Eigen::MatrixXcd block = Eigen::MatrixXcd(A).topLeftCorner(lead, lead);
   const double backward_lead = (block * xl - bl).norm() / (normA * xl.norm()); // (a block: no larger norm)
   CHECK_MSG(xl.size() == lead && backward_lead < 1e-5, "leading block: backward error " << backward_lead);
-  // portable and AVX2 loops: the same bits
-  std::vector<double> wy, ww;
-  Eigen::VectorXcd x1, x2;
-  HOT::internal::solve_with_float_factor(f.single_precision_factor(), b, x1, -1, wy, ww, true);
-  HOT::internal::solve_with_float_factor(f.single_precision_factor(), b, x2, -1, wy, ww, false);
-  CHECK_MSG(x1 == x2 && x1 == xf, "the AVX2 and the portable loops differ");
+  // portable and AVX2 loops, two threads or one: the same bits
+  const HOT::internal::Supernodal_float_factor& F = f.single_precision_factor();
+  std::cout << "  schedule: " << F.group[0].size() << " and " << F.group[1].size() << " supernodes in the two groups, "
+            << F.top.size() << " on top" << std::endl;
+  CHECK(!F.group[0].empty() && !F.group[1].empty() && F.group[0].size() + F.group[1].size() + F.top.size() == std::size_t(F.nsuper));
+  std::vector<double> work;
+  for(const bool avx2 : {true, false})
+    for(const bool parallel : {true, false}) {
+      Eigen::VectorXcd xs;
+      HOT::internal::solve_with_float_factor(F, b, xs, -1, work, avx2, parallel);
+      CHECK_MSG(xs == xf, "AVX2 " << avx2 << ", two threads " << parallel << ": not the same bits");
+    }
   // a new factorisation: double precision again
   f.factorize(A);
   CHECK(!f.single_precision());

@@ -306,7 +306,7 @@ public:
         Eigen::Matrix<Scalar, Eigen::Dynamic, 1> bj, xj;
         for(Eigen::Index j = 0; j < b.cols(); ++j) {
           bj = b.col(j);
-          solve_with_float_factor(single_factor_, bj, xj, -1, work_y_, work_w_);
+          solve_with_float_factor(single_factor_, bj, xj, -1, work_);
           x.col(j) = xj;
         }
         return x;
@@ -325,7 +325,7 @@ public:
     CGAL_precondition(lead_ >= 0 && b.size() == lead_);
     if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
       if(single_) {
-        solve_with_float_factor(single_factor_, b, x, static_cast<int>(lead_), work_y_, work_w_);
+        solve_with_float_factor(single_factor_, b, x, static_cast<int>(lead_), work_);
         return x;
       }
     }
@@ -420,7 +420,7 @@ private:
   bool use_cholmod_ = false;
   bool single_ = false;                    // the factor rounded to float (round_to_single_precision)
   Supernodal_float_factor single_factor_;  // (a view of it)
-  mutable std::vector<double> work_y_, work_w_;
+  mutable std::vector<double> work_;
 #endif
   Eigen::Index lead_ = -1;
   double max_fill_ = 1;
