@@ -420,7 +420,7 @@ private:
   bool use_cholmod_ = false;
   bool single_ = false;                    // the factor rounded to float (round_to_single_precision)
   Supernodal_float_factor single_factor_;  // (a view of it)
-  mutable std::vector<double> work_;
+  mutable std::vector<double> work_;     // (the solves' workspace: one solve at a time per object)
 #endif
   Eigen::Index lead_ = -1;
   double max_fill_ = 1;
