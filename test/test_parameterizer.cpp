@@ -893,6 +893,34 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
 // block itself (a complex Hermitian positive definite matrix, random rotations on a grid, the
 // block's rows in grid order or at random). Keeping a scattered half of the rows last fills the
 // factor far more than AMD's order: that is refused, and the factorisation still solves as a whole.
+// A connection Laplacian on a side x side grid: random weights in [0.1, 2] and random
+// rotations on the edges, plus `shift` on the diagonal (definite); grid vertex v is row order[v]
+static Eigen::SparseMatrix<std::complex<double> > random_grid_connection_laplacian(int side, const std::vector<int>& order,
+                                                                                   double shift)
+{
+  typedef std::complex<double> Cd;
+  const int n = side * side;
+  std::vector<Eigen::Triplet<Cd> > trip;
+  std::vector<double> diag(n, shift);
+  for(int i = 0; i < side; ++i)
+    for(int j = 0; j < side; ++j)
+      for(const int d : {0, 1}) {
+        const int ni = i + (d == 0), nj = j + (d == 1);
+        if(ni >= side || nj >= side) continue;
+        const int a = order[i * side + j], b = order[ni * side + nj];
+        const double w = rng.get_double(0.1, 2.0);
+        const Cd v = -w * std::polar(1.0, rng.get_double(-3.0, 3.0));
+        trip.emplace_back(a, b, v);
+        trip.emplace_back(b, a, std::conj(v));
+        diag[a] += w;
+        diag[b] += w;
+      }
+  for(int i = 0; i < n; ++i) trip.emplace_back(i, i, Cd(diag[i], 0.0));
+  Eigen::SparseMatrix<Cd> A(n, n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  return A;
+}
+
 TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
 {
   typedef std::complex<double> Cd;
@@ -922,24 +950,7 @@ TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
     for(int i = 0; i < lead; ++i) order[p[i]] = i;
     int next = lead;
     for(int v = 0; v < n; ++v) if(last[v]) order[v] = next++;
-    std::vector<Eigen::Triplet<Cd> > trip;
-    std::vector<double> diag(n, 0.01);
-    for(int i = 0; i < side; ++i)
-      for(int j = 0; j < side; ++j)
-        for(const int d : {0, 1}) {
-          const int ni = i + (d == 0), nj = j + (d == 1);
-          if(ni >= side || nj >= side) continue;
-          const int a = order[i * side + j], b = order[ni * side + nj];
-          const double w = rng.get_double(0.1, 2.0);
-          const Cd v = -w * std::polar(1.0, rng.get_double(-3.0, 3.0));
-          trip.emplace_back(a, b, v);
-          trip.emplace_back(b, a, std::conj(v));
-          diag[a] += w;
-          diag[b] += w;
-        }
-    for(int i = 0; i < n; ++i) trip.emplace_back(i, i, Cd(diag[i], 0.0));
-    Eigen::SparseMatrix<Cd> A(n, n);
-    A.setFromTriplets(trip.begin(), trip.end());
+    const Eigen::SparseMatrix<Cd> A = random_grid_connection_laplacian(side, order, 0.01);
     HOT::internal::Laplacian_factorization<Cd> f;
     f.keep_leading_block(lead, variant == 4 ? 1.0 : 1.5); // (more fill than the free order: refused)
     const bool kept = f.analyze(A);
@@ -977,24 +988,9 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
 #else
   typedef std::complex<double> Cd;
   const int side = 60, n = side * side, lead = n - side; // the last grid row kept last
-  std::vector<Eigen::Triplet<Cd> > trip;
-  std::vector<double> diag(n, 1e-3);
-  for(int i = 0; i < side; ++i)
-    for(int j = 0; j < side; ++j)
-      for(const int d : {0, 1}) {
-        const int ni = i + (d == 0), nj = j + (d == 1);
-        if(ni >= side || nj >= side) continue;
-        const int a = i * side + j, b = ni * side + nj;
-        const double w = rng.get_double(0.1, 2.0);
-        const Cd v = -w * std::polar(1.0, rng.get_double(-3.0, 3.0));
-        trip.emplace_back(a, b, v);
-        trip.emplace_back(b, a, std::conj(v));
-        diag[a] += w;
-        diag[b] += w;
-      }
-  for(int i = 0; i < n; ++i) trip.emplace_back(i, i, Cd(diag[i], 0.0));
-  Eigen::SparseMatrix<Cd> A(n, n);
-  A.setFromTriplets(trip.begin(), trip.end());
+  std::vector<int> order(n);
+  for(int v = 0; v < n; ++v) order[v] = v;
+  const Eigen::SparseMatrix<Cd> A = random_grid_connection_laplacian(side, order, 1e-3);
   double normA = 0; // the largest row sum: at least the 2-norm (Hermitian)
   for(int i = 0; i < n; ++i)
     normA = std::max(normA, Eigen::MatrixXcd(A.row(i)).cwiseAbs().sum());
