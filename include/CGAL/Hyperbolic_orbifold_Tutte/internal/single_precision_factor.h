@@ -268,16 +268,17 @@ inline void backward_node(const Supernodal_float_factor& F, int q, double* Y, do
   }
 }
 
-// one group's forward solve (what it sends to the top into B), or backward solve
+// the forward solve of some supernodes, in increasing order (what they send to the top's
+// rows into B; B null: everything straight into y), or their backward solve, decreasing
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-inline void group_pass(const Supernodal_float_factor& F, int g, bool forward, double* Y, double* W, double* B)
+inline void nodes_pass(const Supernodal_float_factor& F, const std::vector<int>& nodes, bool forward, double* Y,
+                       double* W, double* B)
 {
-  const std::vector<int>& nodes = F.group[g];
   if(forward) {
     auto send = [&](int r, double re, double im) {
-      const int t = F.top_slot[r];
+      const int t = B ? F.top_slot[r] : -1;
       double* dst = t >= 0 ? B + 2 * static_cast<std::size_t>(t) : Y + 2 * static_cast<std::size_t>(r);
       dst[0] += re;
       dst[1] += im;
@@ -289,16 +290,17 @@ inline void group_pass(const Supernodal_float_factor& F, int g, bool forward, do
       backward_node(F, *it, Y, W);
   }
 }
-inline void group_pass_generic(const Supernodal_float_factor& F, int g, bool forward, double* Y, double* W, double* B)
+inline void nodes_pass_generic(const Supernodal_float_factor& F, const std::vector<int>& nodes, bool forward, double* Y,
+                               double* W, double* B)
 {
-  group_pass(F, g, forward, Y, W, B);
+  nodes_pass(F, nodes, forward, Y, W, B);
 }
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define CGAL_HOT_SUPERNODAL_AVX2 1
-__attribute__((target("avx2"))) inline void group_pass_avx2(const Supernodal_float_factor& F, int g, bool forward,
-                                                             double* Y, double* W, double* B)
+__attribute__((target("avx2"))) inline void nodes_pass_avx2(const Supernodal_float_factor& F, const std::vector<int>& nodes,
+                                                             bool forward, double* Y, double* W, double* B)
 {
-  group_pass(F, g, forward, Y, W, B);
+  nodes_pass(F, nodes, forward, Y, W, B);
 }
 inline bool has_avx2()
 {
@@ -363,25 +365,24 @@ void solve_with_float_factor(const Supernodal_float_factor& F, const Vector& b, 
     Y[2 * k] = v.real();
     Y[2 * k + 1] = v.imag();
   }
-  auto pass = [&](int g, bool forward) {
-    double* W = g == 0 ? W0 : W1;
-    double* B = g == 0 ? B0 : B1;
+  // the groups with their own workspace and buffer; the top (B null) with group 0's workspace
+  auto pass = [&](const std::vector<int>& nodes, bool forward, double* W, double* B) {
 #ifdef CGAL_HOT_SUPERNODAL_AVX2
     if(avx2 && has_avx2())
-      group_pass_avx2(F, g, forward, Y, W, B);
+      nodes_pass_avx2(F, nodes, forward, Y, W, B);
     else
 #endif
-      group_pass_generic(F, g, forward, Y, W, B);
+      nodes_pass_generic(F, nodes, forward, Y, W, B);
   };
   auto both = [&](bool forward) {
 #ifdef CGAL_LINKED_WITH_TBB
     if(parallel && !F.group[0].empty() && !F.group[1].empty()) {
-      tbb::parallel_invoke([&]() { pass(0, forward); }, [&]() { pass(1, forward); });
+      tbb::parallel_invoke([&]() { pass(F.group[0], forward, W0, B0); }, [&]() { pass(F.group[1], forward, W1, B1); });
       return;
     }
 #endif
-    pass(0, forward);
-    pass(1, forward);
+    pass(F.group[0], forward, W0, B0);
+    pass(F.group[1], forward, W1, B1);
   };
   // forward: the groups, their sends to the top (group 0's, then group 1's), the top
   both(true);
@@ -392,17 +393,11 @@ void solve_with_float_factor(const Supernodal_float_factor& F, const Vector& b, 
     Y[r] += B1[2 * t];
     Y[r + 1] += B1[2 * t + 1];
   }
-  auto direct = [&](int r, double re, double im) {
-    Y[2 * static_cast<std::size_t>(r)] += re;
-    Y[2 * static_cast<std::size_t>(r) + 1] += im;
-  };
-  for(int q : F.top)
-    forward_node(F, q, Y, W0, direct);
+  pass(F.top, true, W0, nullptr);
   if(lead >= 0)
     std::memset(Y + 2 * static_cast<std::size_t>(lead), 0, 2 * sizeof(double) * (n - static_cast<std::size_t>(lead)));
   // backward: the top, then the groups
-  for(auto it = F.top.rbegin(); it != F.top.rend(); ++it)
-    backward_node(F, *it, Y, W0);
+  pass(F.top, false, W0, nullptr);
   both(false);
   (void)avx2;
   (void)parallel;
