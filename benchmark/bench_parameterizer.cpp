@@ -173,8 +173,8 @@ int main(int argc, char** argv)
     else if(a == "--euclid-max" && i + 1 < argc) euclid_max = std::strtoul(argv[++i], nullptr, 10);
     else if(a == "--no-map") with_map = false;
     else if(a == "--no-floor") with_floor = false; // peak memory of the embedding alone
-    else if(a == "--detail") detail = true;
-    else if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));        // the optimisation's parts, on a second line
+    else if(a == "--detail") detail = true; // the optimisation's parts, on a second line
+    else if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
     else files.push_back(a);
   }
   if(files.empty()) {
