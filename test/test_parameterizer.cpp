@@ -1001,7 +1001,15 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
   CHECK(f.definite() && !f.single_precision());
   Eigen::VectorXcd b = Eigen::VectorXcd::Random(n), u = Eigen::VectorXcd::Random(n), bl = Eigen::VectorXcd::Random(lead);
   const Eigen::VectorXcd xd = f.solve(b);
+  const std::size_t memory_double = f.cholmod_memory_in_use();
   CHECK(f.round_to_single_precision() && f.single_precision());
+  // the factor's complex values, 16 bytes each in double, take 8 in float: CHOLMOD's own count
+  // of its memory drops by half of them (to within one value)
+  const std::size_t values = static_cast<std::size_t>(f.single_precision_factor().px[f.single_precision_factor().nsuper]);
+  const std::size_t memory_single = f.cholmod_memory_in_use();
+  std::cout << "  CHOLMOD's memory: " << memory_double << " bytes, " << memory_single << " rounded (" << values << " values)" << std::endl;
+  CHECK_MSG(memory_single + 8 * values <= memory_double + 16 && memory_single < memory_double,
+            "the rounded factor did not give back half of its values' memory");
   const Eigen::VectorXcd xf = f.solve(b), sf_u = f.solve(u);
   const double backward = (A * xf - b).norm() / (normA * xf.norm());
   const double hermitian = std::abs(u.dot(f.solve(b)) - sf_u.dot(b)) / (u.norm() * xf.norm());
@@ -1031,6 +1039,7 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
   // a new factorisation: double precision again
   f.factorize(A);
   CHECK(!f.single_precision());
+  CHECK_MSG(f.cholmod_memory_in_use() == memory_double, "factored again: " << f.cholmod_memory_in_use() << " bytes");
   const double again = (f.solve(b) - xd).norm() / xd.norm();
   CHECK_MSG(again < 1e-13, "factored again after rounding: " << again);
 #endif

@@ -189,6 +189,7 @@ public:
 #ifdef CGAL_HOT_USE_CHOLMOD
     use_cholmod_ = A.rows() >= cholmod_threshold || lead_ >= 0;
     single_ = false;
+    full_xsize_ = 0; // (the analysis below frees any factor: CHOLMOD knows its shrunk size)
     if(use_cholmod_) {
       if(lead_ < 0) {
         cholmod_.analyzePattern(A);
@@ -250,25 +251,53 @@ public:
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
     single_ = false; // (the factorisation writes double values anew)
-    if(use_cholmod_) { cholmod_.factorize(A); return; }
+    if(use_cholmod_) {
+      if(!restore_double_storage()) { // (out of memory: reported as a failed factorisation)
+        cholmod_.fail();
+        return;
+      }
+      cholmod_.factorize(A);
+      return;
+    }
 #endif
     simplicial_.factorize(A);
   }
   // Rounds a complex supernodal (CHOLMOD) factor to single precision, in place: every solve
   // until the next factorize() is then a solve with that rounded factor (in double
-  // arithmetic): see single_precision_factor.h. False, and nothing changed, for a simplicial
-  // or real factor or one not factored.
+  // arithmetic): see single_precision_factor.h. The floats take the first half of CHOLMOD's
+  // value array; the second half is given back (the factor's memory halves: 1 GB at a
+  // million vertices) and taken again by the next factorize(). False, and nothing changed,
+  // for a simplicial or real factor or one not factored.
   bool round_to_single_precision()
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
     if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
-      if(!single_ && use_cholmod_ && cholmod_.info() == Eigen::Success)
-        single_ = round_supernodal_factor_to_float(cholmod_.mutable_factor(), single_factor_);
+      if(!single_ && use_cholmod_ && cholmod_.info() == Eigen::Success) {
+        cholmod_factor* F = cholmod_.mutable_factor();
+        single_ = round_supernodal_factor_to_float(F, single_factor_);
+        const std::size_t entries = single_ ? static_cast<std::size_t>(static_cast<const int*>(F->px)[F->nsuper]) : 0;
+        if(single_ && entries <= F->xsize) {
+          // complex entries of x: `entries` floats pairs fit in (entries + 1) / 2 double pairs
+          const std::size_t full = F->xsize, half = (entries + 1) / 2;
+          std::size_t n = 2 * full; // (doubles)
+          void* p = cholmod_realloc(2 * half, sizeof(double), F->x, &n, &cholmod_.cholmod());
+          if(n == 2 * half) { // (else unchanged: the whole array is kept)
+            F->x = p;
+            F->xsize = half;
+            single_factor_.x = static_cast<const float*>(p);
+            full_xsize_ = full;
+          }
+        }
+      }
       return single_;
     }
 #endif
     return false;
   }
+#ifdef CGAL_HOT_USE_CHOLMOD
+  // the bytes CHOLMOD has allocated for this factorisation, by its own count
+  std::size_t cholmod_memory_in_use() const { return cholmod_.common().memory_inuse; }
+#endif
   bool single_precision() const
   {
 #ifdef CGAL_HOT_USE_CHOLMOD
@@ -400,7 +429,28 @@ private:
       return this->m_cholmodFactor != nullptr;
     }
     cholmod_common& common() const { return const_cast<Cholmod*>(this)->cholmod(); } // (mutable in Eigen)
+    void fail()
+    {
+      this->m_info = Eigen::NumericalIssue;
+      this->m_factorizationIsOk = false;
+    }
   };
+  // the value array of a factor shrunk by round_to_single_precision() to its full size again,
+  // before CHOLMOD writes double values into it; false if that memory is not available
+  bool restore_double_storage()
+  {
+    cholmod_factor* F = cholmod_.mutable_factor();
+    if(full_xsize_ == 0 || F == nullptr)
+      return true;
+    std::size_t n = 2 * F->xsize;
+    void* p = cholmod_realloc(2 * full_xsize_, sizeof(double), F->x, &n, &cholmod_.cholmod());
+    if(n != 2 * full_xsize_)
+      return false;
+    F->x = p;
+    F->xsize = full_xsize_;
+    full_xsize_ = 0;
+    return true;
+  }
   bool leading_block_kept() const
   {
     const cholmod_factor* F = cholmod_.factor();
@@ -419,6 +469,7 @@ private:
   Cholmod cholmod_;
   bool use_cholmod_ = false;
   bool single_ = false;                    // the factor rounded to float (round_to_single_precision)
+  std::size_t full_xsize_ = 0;             // its value array's size before it was shrunk (0: not shrunk)
   Supernodal_float_factor single_factor_;  // (a view of it)
   mutable std::vector<double> work_;     // (the solves' workspace: one solve at a time per object)
 #endif
@@ -503,7 +554,7 @@ public:
   // The Hessian's sparsity pattern (every entry any edge can touch, symmetric, compressed
   // column storage) and, per edge, the positions of its local block's entries in it: the
   // values are accumulated in place, no triplets, no sorting per iteration. The pattern is
-  // handed over to the first Hessian asked for (one copy in memory), copied for others.
+  // handed over to the first Hessian asked for (one copy in memory), built again for another.
 
   // returns +infinity for infeasible x (a point on or outside the unit circle)
   double energy(const std::vector<double>& x) const
@@ -558,7 +609,10 @@ public:
       if(H->nonZeros() != pattern_nnz_ || H->rows() != P_.n_vars || H->cols() != P_.n_vars) {
         if(pattern_given_) // rare (tests): build the pattern again
           build_pattern();
-        *H = std::move(pattern_);
+        // (swapped, not assigned: Eigen 3.4's SparseMatrix has no move assignment, so
+        // `*H = std::move(pattern_)` would copy it and keep both: 336 MB at a million vertices)
+        H->swap(pattern_);
+        Eigen::SparseMatrix<double>().swap(pattern_); // H's former storage freed
         pattern_given_ = true;
       }
       double* hv = H->valuePtr();
@@ -1049,6 +1103,7 @@ public:
       trip.emplace_back(i, i, Cd(diag[i], 0.0));
     CMat A(n_nodes_, n_nodes_);
     A.setFromTriplets(trip.begin(), trip.end());
+    std::vector<Eigen::Triplet<Cd> >().swap(trip); // (freed before the factorisation: 0.3 GB at a million vertices)
     if(!analyzed_) {
       analyzed_ = true;
       if(!solver_.analyze(A) && shares_) {
@@ -1357,6 +1412,7 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
         trip.emplace_back(i, i, diag[i]);
       SpMat Lm(ni, ni);
       Lm.setFromTriplets(trip.begin(), trip.end());
+      std::vector<Eigen::Triplet<double> >().swap(trip); // (freed before the factorisation)
       auto& solver = lap.solver;
       solver.compute(Lm);
       lap.own_factor = true;
@@ -1432,7 +1488,6 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   typedef Eigen::SparseMatrix<double> SpMat;
   typedef std::chrono::steady_clock Clock;
   auto seconds = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-  Energy_evaluator ev(P);
   st = Solver_statistics();
   if(P.n_vars == 0) {
     st.converged = true;
@@ -1459,6 +1514,8 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   if(opt.single_precision_preconditioner)
     pre.solve_in_single_precision();
   st.time_factor += seconds(t0);
+  // (the Hessian's pattern only now: a factor rounded to single precision has shrunk)
+  Energy_evaluator ev(P);
 
   // per-variable weights of the hyperbolic norm of a gradient (or residual)
   Eigen::VectorXd hw(nv);
