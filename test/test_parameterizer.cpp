@@ -1036,8 +1036,22 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
       HOT::internal::solve_with_float_factor(F, b, xs, -1, work, avx2, parallel);
       CHECK_MSG(xs == xf, "AVX2 " << avx2 << ", two threads " << parallel << ": not the same bits");
     }
+  // a new factorisation when the memory given back cannot be taken again (realloc fails):
+  // a failed factorisation, solves of NaN, no crash; then, with the memory, a good one
+  {
+    void* (*const system_realloc)(void*, std::size_t) = SuiteSparse_config.realloc_func;
+    SuiteSparse_config.realloc_func = [](void*, std::size_t) -> void* { return nullptr; };
+    const int print = f.cholmod_print_level(0); // (CHOLMOD would print its out-of-memory error)
+    f.factorize(A);
+    SuiteSparse_config.realloc_func = system_realloc;
+    f.cholmod_print_level(print);
+    CHECK(!f.definite() && !f.single_precision() && f.info() != Eigen::Success);
+    CHECK(!f.solve(b).allFinite() && !f.solve_leading(bl).allFinite());
+    CHECK_MSG(f.cholmod_memory_in_use() == memory_single, "after the failed factorisation: " << f.cholmod_memory_in_use() << " bytes");
+  }
   // a new factorisation: double precision again
   f.factorize(A);
+  CHECK(f.definite());
   CHECK(!f.single_precision());
   CHECK_MSG(f.cholmod_memory_in_use() == memory_double, "factored again: " << f.cholmod_memory_in_use() << " bytes");
   const double again = (f.solve(b) - xd).norm() / xd.norm();

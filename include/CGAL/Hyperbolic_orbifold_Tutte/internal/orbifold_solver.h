@@ -252,8 +252,8 @@ public:
 #ifdef CGAL_HOT_USE_CHOLMOD
     single_ = false; // (the factorisation writes double values anew)
     if(use_cholmod_) {
-      if(!restore_double_storage()) { // (out of memory: reported as a failed factorisation)
-        cholmod_.fail();
+      if(!restore_double_storage()) { // (out of memory: reported as a failed factorisation,
+        cholmod_.fail();              // and solves give NaN until a factorisation succeeds)
         return;
       }
       cholmod_.factorize(A);
@@ -297,6 +297,14 @@ public:
 #ifdef CGAL_HOT_USE_CHOLMOD
   // the bytes CHOLMOD has allocated for this factorisation, by its own count
   std::size_t cholmod_memory_in_use() const { return cholmod_.common().memory_inuse; }
+  // sets how much CHOLMOD prints (cholmod_common::print: 0 nothing, 3 its errors and warnings
+  // to stdout, its default), returns the former level
+  int cholmod_print_level(int level)
+  {
+    const int former = cholmod_.common().print;
+    cholmod_.common().print = level;
+    return former;
+  }
 #endif
   bool single_precision() const
   {
@@ -341,6 +349,9 @@ public:
         return x;
       }
     }
+    if(use_cholmod_ && full_xsize_ != 0) // (its values are floats, and half of them gone: NaN)
+      return Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime>::Constant(
+        b.rows(), b.cols(), Scalar(std::numeric_limits<double>::quiet_NaN()));
     if(use_cholmod_) return cholmod_.solve(b);
 #endif
     return simplicial_.solve(b);
@@ -358,6 +369,8 @@ public:
         return x;
       }
     }
+    if(full_xsize_ != 0) // (a failed factorisation left the shrunk float values: see factorize())
+      return Eigen::Matrix<Scalar, Eigen::Dynamic, 1>::Constant(b.size(), Scalar(std::numeric_limits<double>::quiet_NaN()));
     const cholmod_factor* F = cholmod_.factor();
     const int* perm = static_cast<const int*>(F->Perm);
     const Eigen::Index n = static_cast<Eigen::Index>(F->n);
