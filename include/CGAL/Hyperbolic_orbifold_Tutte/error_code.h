@@ -7,6 +7,8 @@
 
 /// \file error_code.h
 
+#include <string>
+
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 
@@ -88,6 +90,28 @@ inline const char* error_message(Error_code code)
     return "Unknown error code";
   return messages[i];
 }
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteEnums
+the outcome of an operation, the one way the package reports an error: `code == OK`, or an
+error code with a one-line message saying what is wrong and where (`message` may then be
+more specific than `error_message(code)`).
+*/
+struct Status
+{
+  Error_code code = OK;   ///< `OK` on success
+  std::string message;    ///< one line; empty on success
+  /// `true` on success
+  operator bool() const { return code == OK; }
+  /// a failure with `message`, or with `error_message(code)` when `message` is empty
+  static Status failure(Error_code code, const std::string& message = std::string())
+  {
+    Status s;
+    s.code = code;
+    s.message = message.empty() ? std::string(error_message(code)) : message;
+    return s;
+  }
+};
 
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL

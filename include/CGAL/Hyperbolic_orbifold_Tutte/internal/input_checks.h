@@ -89,13 +89,8 @@ namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
-/// The outcome of a check: `code == OK`, or an error code and a one-line message.
-struct Check_result
-{
-  Error_code code = OK;
-  std::string message;
-  operator bool() const { return code == OK; }
-};
+/// The outcome of a check (the package's `Status`).
+typedef Status Check_result;
 
 inline Check_result make_check_result(Error_code code, const std::string& message)
 {
