@@ -344,11 +344,11 @@ Error_code build_flat_topology(const SeamMesh& mesh,
       if(P.side[v] >= 0) {
         const int s = P.side[v];
         P.kind[v] = On_line;
-        const auto K = Poincare_disk_traits_2<>().construct_Klein_point_2_object();
+        const auto K = tile.traits().construct_Klein_point_2_object(); // (the tile's traits)
         const auto k0 = K(tile.corner(tile.side_source(s)));
         const auto k1 = K(tile.corner(tile.side_target(s)));
-        P.line_k0[v] = C(k0.x(), k0.y());
-        P.line_D[v] = C(k1.x() - k0.x(), k1.y() - k0.y());
+        P.line_k0[v] = C(CGAL::to_double(k0.x()), CGAL::to_double(k0.y()));
+        P.line_D[v] = C(CGAL::to_double(k1.x() - k0.x()), CGAL::to_double(k1.y() - k0.y()));
       }
   }
   // Disk type: an inner edge (not on the border loop) whose two ends lie on one closed

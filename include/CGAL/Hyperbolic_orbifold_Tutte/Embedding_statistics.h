@@ -1,0 +1,100 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_STATISTICS_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_STATISTICS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+/// \file Embedding_statistics.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+What a parameterization did: solver statistics, timings (seconds) and the certificate.
+*/
+struct Embedding_statistics
+{
+  int number_of_vertices = 0;         ///< vertices of the cut (seam) mesh
+  int number_of_variables = 0;        ///< unknowns after eliminating seam twins
+  int iterations = 0;                 ///< steps of the solver (preconditioned gradient steps, then Newton steps)
+  int cg_iterations = 0;              ///< conjugate-gradient iterations of the Newton steps, in all
+  int preconditioner_factorizations = 0; ///< factorisations of the connection-Laplacian preconditioner after the first
+  /// `true` when the initialisation solved its Tutte system with the leading block of the
+  /// solver's factorisation, so that one factorisation served both (with CHOLMOD, from 50K
+  /// vertices of the cut mesh on, where the order this needs fills the factor no more than
+  /// CHOLMOD's own; otherwise each factors a matrix of its own)
+  bool shared_factorization = false;
+  double initial_energy = 0;          ///< Dirichlet energy of the Euclidean Tutte initialisation
+  double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
+  double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
+  double relative_gradient_norm = 0;  ///< the same, relative to the norm of the sums of the absolute values of the edges' contributions (the forces' imbalance; its floor is the rounding error)
+  /// the force imbalance that rounding the coordinates to `double` alone would cause (an
+  /// estimate from each edge's length and how many digits its ends' coordinates give it):
+  /// about \f$10^{-15}\f$ on ordinary meshes, far more where cotangent weights are huge
+  /// (needle triangles) or vertices crowd towards the circle
+  double rounding_floor = 0;
+  /// `true` when the tolerance was out of reach of `double` and the solver stopped at the
+  /// floor instead: Newton's steps no longer reduced the imbalance and it is within
+  /// \f$10\times\f$ `rounding_floor` (the coordinates are then as accurate as `double` allows)
+  bool converged_at_rounding_floor = false;
+  /// `true` when the solver reached the gradient tolerance, or the rounding floor above it
+  bool converged = false;
+  /// Newton steps taken after the force imbalance reached the tolerance, because some vertex's
+  /// own forces were still out of balance by more than \f$10^{-8}\f$ of their sizes (beyond
+  /// what rounding explains), or because the certificate found a flipped face: the force
+  /// imbalance is a global measure, blind to a region squeezed so small (a protrusion
+  /// without landmarks, \f$10^{-12}\f$ across) that its forces are below the tolerance
+  /// times the largest ones; such a region is solved to the precision of `double` (steps
+  /// until rounding stops them), before the one-ring repair is tried
+  int polishing_iterations = 0;
+  int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
+  /// `true` when the coordinates were written in a moved frame (recentring allowed, and the
+  /// embedding in the canonical tile had triangles below what `double` resolves): the
+  /// written point of a vertex is `frame(z)`, where `z` is its position in the tile of
+  /// `make_orbifold_tile()`, and the embedding fills `tile.transformed(frame)`
+  bool recentred = false;
+  /// the isometry of the frame (the identity unless `recentred`): the translation that
+  /// moves the most squeezed region of the embedding to the origin
+  Hyperbolic_isometry_2<double> frame;
+  bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
+  std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
+  /// \var time_setup
+  /// seconds spent checking the input, cutting the mesh and setting up the problem
+  /// \var time_initialization
+  /// seconds spent in the Euclidean Tutte initialisation (with `shared_factorization`, the
+  /// solver's factorisation is made there and counted there)
+  /// \var time_optimization
+  /// seconds spent in Newton's method
+  /// \var time_certificate
+  /// seconds spent certifying the result (and repairing one-rings)
+  double time_setup = 0, time_initialization = 0, time_optimization = 0, time_certificate = 0;
+  /// \var time_assembly
+  /// seconds spent assembling the Newton systems (part of `time_optimization`)
+  /// \var time_factorization
+  /// seconds spent factoring the Newton matrices (part of `time_optimization`)
+  double time_assembly = 0, time_factorization = 0, time_line_search = 0; ///< parts of `time_optimization` (factorisation: the preconditioner's and the conjugate gradients)
+  /// the bijectivity certificate of the computed coordinates
+  Embedding_certificate certificate;
+  std::string message;                ///< one-line reason when the result is an error
+  /// mesh vertices named by the error, as indices in the order of `vertices(tm)`
+  /// (`ERROR_BOUNDARY_CHORD`: the ends of the offending edge)
+  std::vector<std::size_t> problem_vertices;
+};
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_STATISTICS_H

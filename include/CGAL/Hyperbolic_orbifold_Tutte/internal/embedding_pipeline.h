@@ -1,0 +1,271 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_EMBEDDING_PIPELINE_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_EMBEDDING_PIPELINE_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certify_and_repair.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_solver.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/recentring.h>
+
+#include <CGAL/boost/graph/properties.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+// The embedding of a cut (seam) mesh, the pipeline's solve stage, in one place: the flat
+// problem and its weights, the Euclidean Tutte initialisation, Newton, the certificate, and
+// the mends when it fails (Newton to the floor of double, recentring, one-ring repairs).
+// Hyperbolic_orbifold_Tutte_parameterizer_3 runs it; the one-call function, the collection
+// and the command line reach it through the parameterizer.
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// What the solve stage needs besides the mesh and the tile.
+template <class TM_edge_descriptor>
+struct Embedding_settings
+{
+  Weight_type weights = Cotangent;
+  double epsilon = 1e-6;            // the lower clamp of cotangent weights
+  Solver_options solver;
+  bool recentring = false;
+  std::function<double(const TM_edge_descriptor&)> user_weights; // empty: `weights`
+};
+
+template <class SeamMesh, class Tile>
+class Seam_mesh_embedding
+{
+public:
+  typedef typename SeamMesh::TriangleMesh Triangle_mesh;
+  typedef typename boost::graph_traits<SeamMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<SeamMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor TM_vertex_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::edge_descriptor TM_edge_descriptor;
+  typedef Embedding_settings<TM_edge_descriptor> Settings;
+  typedef Complex<double> C;
+
+  Seam_mesh_embedding(const SeamMesh& mesh, halfedge_descriptor bhd, const std::vector<TM_vertex_descriptor>& landmarks,
+                      const Tile& tile, const Settings& settings, Embedding_statistics& st)
+    : mesh_(mesh), bhd_(bhd), landmarks_(landmarks), tile_(tile), settings_(settings), st_(st)
+  {}
+
+  // Runs the stage; on `OK`, `uv()[v]` is the certified position of `cut_vertices()[v]`
+  // (in the frame `st.frame`). On failure `st.message` says why.
+  Error_code run()
+  {
+    const auto t0 = Clock::now();
+    Error_code ec = set_up();
+    if(ec != OK)
+      return ec;
+    st_.time_setup = seconds_since(t0);
+    const auto t1 = Clock::now();
+    ec = initialize_embedding(P_, tile_, base_points_, x_, &interior_); // factors what the solver reuses
+    st_.time_initialization = seconds_since(t1);
+    st_.shared_factorization = interior_.connection != nullptr;
+    if(ec != OK)
+      return fail(ec, "the Euclidean Tutte initialisation failed");
+    const auto t2 = Clock::now();
+    ec = minimize_energy(P_, x_, settings_.solver, solver_stats_, &interior_);
+    copy_solver_statistics();
+    st_.time_optimization = seconds_since(t2);
+    const bool recentring_tried = certify_and_mend(ec == OK);
+    return verdict(ec, recentring_tried);
+  }
+
+  const std::vector<C>& uv() const { return uv_; }
+  const std::vector<vertex_descriptor>& cut_vertices() const { return cut_vertices_; }
+
+private:
+  typedef std::chrono::steady_clock Clock;
+
+  static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+  Error_code fail(Error_code ec, const std::string& msg)
+  {
+    st_.message = msg.empty() ? std::string(error_message(ec)) : msg;
+    return ec;
+  }
+
+  // the flat problem of the cut mesh and its edge weights
+  Error_code set_up()
+  {
+    std::string msg;
+    const Error_code ec = build_flat_topology(mesh_, bhd_, landmarks_, tile_, P_, base_vertex_, cut_vertices_, msg);
+    if(ec != OK) {
+      st_.problem_vertices.assign(P_.problem_vertices.begin(), P_.problem_vertices.end());
+      return fail(ec, msg);
+    }
+    st_.number_of_vertices = P_.n;
+    st_.number_of_variables = P_.n_vars;
+    st_.landmark_order_reversed = P_.landmark_order_reversed;
+    const Triangle_mesh& tm = mesh_.mesh();
+    const auto vpm = get(vertex_point, tm);
+    base_points_.resize(P_.n_base);
+    for(int i = 0; i < P_.n_base; ++i)
+      base_points_[i] = get(vpm, base_vertex_[i]);
+    if(settings_.user_weights)
+      return set_user_weights(tm);
+    compute_edge_weights(P_, base_points_, settings_.weights, settings_.epsilon);
+    return OK;
+  }
+
+  // each base edge once in total: its copies (two along a seam) share the user's weight
+  Error_code set_user_weights(const Triangle_mesh& tm)
+  {
+    std::unordered_map<long long, int> copies;
+    auto key = [](int a, int b) { return (static_cast<long long>(std::min(a, b)) << 32) | std::max(a, b); };
+    for(const auto& e : P_.edges)
+      ++copies[key(P_.base[e[0]], P_.base[e[1]])];
+    P_.edge_weight.resize(P_.edges.size());
+    for(std::size_t i = 0; i < P_.edges.size(); ++i) {
+      const int a = P_.base[P_.edges[i][0]], b = P_.base[P_.edges[i][1]];
+      const auto e = edge(base_vertex_[a], base_vertex_[b], tm);
+      const double w = e.second ? settings_.user_weights(e.first) : 0.0;
+      if(!(w > 0) || !std::isfinite(w))
+        return fail(ERROR_WRONG_PARAMETER, "the user weight of the edge between mesh vertices " + std::to_string(a) +
+                                             " and " + std::to_string(b) + " is not a positive finite number");
+      P_.edge_weight[i] = w / copies[key(a, b)];
+    }
+    return OK;
+  }
+
+  void copy_solver_statistics()
+  {
+    const Solver_statistics& ss = solver_stats_;
+    st_.iterations = ss.iterations;
+    st_.cg_iterations = ss.cg_iterations;
+    st_.preconditioner_factorizations = ss.preconditioner_factorizations;
+    st_.initial_energy = ss.initial_energy;
+    st_.energy = ss.energy;
+    st_.gradient_norm = ss.gradient;
+    st_.relative_gradient_norm = ss.relative_gradient;
+    st_.converged = ss.converged;
+    st_.polishing_iterations = ss.polishing_iterations;
+    st_.rounding_floor = ss.rounding_floor;
+    st_.converged_at_rounding_floor = ss.at_rounding_floor;
+    st_.time_assembly = ss.time_assemble;
+    st_.time_factorization = ss.time_factor;
+    st_.time_line_search = ss.time_line_search;
+  }
+
+  // The certificate, and the mends where it fails: a region too small for the stopping test
+  // to see gets Newton to the floor of double; triangles below what double resolves get
+  // recentring (when allowed); flipped faces the one-ring repairs. Returns whether
+  // recentring was tried. The time of the mends that solve counts as optimisation.
+  bool certify_and_mend(bool solved)
+  {
+    uv_.assign(P_.n, C());
+    auto t3 = Clock::now();
+    certify(P_, tile_, x_, uv_, st_);
+    if(solved && flipped_only(st_)) {
+      const auto t4 = Clock::now();
+      polish_to_floor();
+      const auto dt = Clock::now() - t4; // solver time, not certificate time
+      st_.time_optimization += std::chrono::duration<double>(dt).count();
+      t3 += dt;
+      certify(P_, tile_, x_, uv_, st_);
+    }
+    tiny_ = unresolved_faces(P_, uv_, false);
+    // (triangles below what double resolves have unreliable angles too: angle-sum failures)
+    const Embedding_certificate& c = st_.certificate;
+    const bool local_failure = !c.is_bijective() && c.points_outside_disk == 0 && c.twin_failures == 0 &&
+                               c.cone_failures == 0 && c.border_failures == 0;
+    const bool recentring_tried = solved && local_failure && tiny_.count > 0 && settings_.recentring;
+    if(recentring_tried) {
+      const auto t4 = Clock::now();
+      recentre(mesh_, bhd_, landmarks_, cut_vertices_, tile_, P_, settings_.solver, uv_, st_);
+      const auto dt = Clock::now() - t4;
+      st_.time_optimization += std::chrono::duration<double>(dt).count();
+      t3 += dt;
+    } else {
+      repair(P_, tile_, x_, uv_, st_);
+    }
+    st_.time_certificate = seconds_since(t3);
+    return recentring_tried;
+  }
+
+  // Newton until rounding stops it, with every vertex's forces balanced to the floor
+  void polish_to_floor()
+  {
+    Solver_options polish = settings_.solver;
+    polish.polish = true;
+    polish.vertex_imbalance = 0;
+    Solver_statistics ps;
+    minimize_energy(P_, x_, polish, ps, &interior_); // only accepted (descent) steps change x
+    st_.polishing_iterations += ps.iterations;
+    st_.cg_iterations += ps.cg_iterations;
+    st_.energy = ps.energy;
+    st_.gradient_norm = ps.gradient;
+    st_.relative_gradient_norm = ps.relative_gradient;
+  }
+
+  // the solver's failure, or the certificate's, with what to do about it
+  Error_code verdict(Error_code ec, bool recentring_tried)
+  {
+    if(ec != OK) {
+      std::ostringstream os;
+      os << "the solver stopped at relative gradient norm " << solver_stats_.relative_gradient << " after "
+         << solver_stats_.iterations << " iterations (tolerance " << settings_.solver.gradient_tolerance
+         << ", rounding floor " << solver_stats_.rounding_floor << ")";
+      return fail(ec, os.str());
+    }
+    if(st_.certificate.is_bijective())
+      return OK;
+    std::ostringstream os;
+    os << "the embedding failed the certificate: " << st_.certificate;
+    // triangles double cannot resolve: their edges within a few hundred units in the last
+    // place of their coordinates (a protrusion without landmarks shrinks exponentially
+    // along its length, by e per radius for a tube: about 33 radii exhaust double)
+    if(tiny_.count > 0) {
+      os << "; " << tiny_.count << " triangles are below what double resolves (smallest edge " << tiny_.smallest
+         << "): a part of the mesh far from every landmark (a long protrusion) shrinks exponentially"
+            " in the embedding; put a landmark on it";
+      if(recentring_tried)
+        os << " (solving it again with its deepest point at the origin did not suffice)";
+      else if(!settings_.recentring)
+        os << ", or allow recentring (parameters::recentring(true); command line: --recentre)";
+    }
+    return fail(ERROR_NO_1_TO_1_MAPPING, os.str());
+  }
+
+  const SeamMesh& mesh_;
+  halfedge_descriptor bhd_;
+  const std::vector<TM_vertex_descriptor>& landmarks_;
+  const Tile& tile_;
+  const Settings& settings_;
+  Embedding_statistics& st_;
+
+  Flat_problem P_;
+  std::vector<TM_vertex_descriptor> base_vertex_;
+  std::vector<vertex_descriptor> cut_vertices_;
+  std::vector<typename boost::property_traits<typename boost::property_map<
+    Triangle_mesh, boost::vertex_point_t>::const_type>::value_type> base_points_;
+  std::vector<double> x_;
+  Interior_laplacian interior_; // factored by the initialisation, reused by the solver
+  Solver_statistics solver_stats_;
+  std::vector<C> uv_;
+  Unresolved_faces tiny_;
+};
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_EMBEDDING_PIPELINE_H
