@@ -37,6 +37,9 @@ written to `out` in the file's order, which is the order of the seam that
 
 \tparam TriangleMesh a model of `FaceGraph`
 \tparam VertexDescriptorOutputIterator an output iterator of `vertex_descriptor`s of `TriangleMesh`
+\param tm the mesh
+\param filename the selection file
+\param out receives the cones' vertex descriptors, in the file's order
 \param status if not null, receives the package's `Error_code` and a one-line message
 \return `SMP::OK`, or `SMP::ERROR_WRONG_PARAMETER` when the file cannot be read, its first
         line holds something other than non-negative integers or nothing, an index is not
