@@ -14,7 +14,9 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/klein_model.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Random.h>
 #ifdef CGAL_LINKED_WITH_TBB
@@ -24,6 +26,7 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
+#include <sstream>
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 using namespace hot_test;
@@ -33,7 +36,7 @@ typedef K::Point_2 Point_2;
 typedef K::Point_3 Point_3;
 typedef K::Vector_3 Vector_3;
 typedef Mesh::Property_map<halfedge_descriptor, Point_2> UV_map;
-typedef HOT::internal::Embedding_point_locator<Mesh, UV_map> Locator;
+typedef HOT::Embedding_locator<Mesh, UV_map> Locator;
 typedef Locator::Location Location;
 typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 typedef std::chrono::steady_clock Clock;
@@ -57,10 +60,10 @@ struct Embedded
   double diag = 1;
   std::unique_ptr<Locator> locator;    // Klein_linear barycentric coordinates
   std::unique_ptr<Locator> locator_h;  // Hyperboloid_linear
-  const Locator& loc(HOT::internal::Interpolation_model m) const { return m == HOT::internal::Klein_linear ? *locator : *locator_h; }
+  const Locator& loc(HOT::Interpolation_model m) const { return m == HOT::Klein_linear ? *locator : *locator_h; }
 };
-static const HOT::internal::Interpolation_model models[2] = {HOT::internal::Klein_linear, HOT::internal::Hyperboloid_linear};
-static const char* model_name(HOT::internal::Interpolation_model m) { return m == HOT::internal::Klein_linear ? "Klein" : "hyperboloid"; }
+static const HOT::Interpolation_model models[2] = {HOT::Klein_linear, HOT::Hyperboloid_linear};
+static const char* model_name(HOT::Interpolation_model m) { return m == HOT::Klein_linear ? "Klein" : "hyperboloid"; }
 typedef std::unique_ptr<Embedded> Embedded_ptr;
 
 static double bbox_diagonal(const Mesh& m)
@@ -92,7 +95,7 @@ static Embedded_ptr embed(const std::string& name, const Mesh& m, const std::vec
   if(e->ec == HOT::OK) {
     const HOT::Orbifold_type type = is_closed(e->mesh) ? HOT::Sphere_type : HOT::Disk_type;
     e->locator.reset(new Locator(e->mesh, e->uv, type, static_cast<int>(lm.size())));
-    e->locator_h.reset(new Locator(e->mesh, e->uv, type, static_cast<int>(lm.size()), HOT::internal::Hyperboloid_linear));
+    e->locator_h.reset(new Locator(e->mesh, e->uv, type, static_cast<int>(lm.size()), HOT::Hyperboloid_linear));
     CHECK_MSG(e->locator->is_valid() && e->locator_h->is_valid(), name << ": " << e->locator->message());
     CHECK(e->locator->number_of_inverted_faces() == 0);
     if(type == HOT::Sphere_type)
@@ -139,12 +142,12 @@ static Mesh deform(const Mesh& m, int variant, double amplitude = 1.0)
 
 static Point_3 surface_point(const Embedded& e, const Location& l)
 {
-  return HOT::internal::surface_point(l, *e.locator, get(CGAL::vertex_point, e.mesh));
+  return HOT::surface_point(l, *e.locator, get(CGAL::vertex_point, e.mesh));
 }
 
 // the image of a location of B on C: its disk point in B's fundamental domain, located in C
 static Location forward(const Embedded& b, const Location& l, const Embedded& c,
-                        HOT::internal::Interpolation_model m = HOT::internal::Klein_linear)
+                        HOT::Interpolation_model m = HOT::Klein_linear)
 {
   return c.loc(m).locate(b.loc(m).disk_point(l));
 }
@@ -222,10 +225,10 @@ static Location random_face_point(const Embedded& a)
 
 // A == B: every vertex maps to itself; random points of faces come back to themselves
 // through the disk (these go through the walk: they are no corner's point)
-static void check_identity(const Embedded& a, HOT::internal::Interpolation_model m)
+static void check_identity(const Embedded& a, HOT::Interpolation_model m)
 {
   const Locator& L = a.loc(m);
-  const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, L);
+  const std::vector<Location> locs = HOT::map_vertices(a.mesh, a.uv, L);
   CHECK(locs.size() == num_vertices(a.mesh));
   double worst = 0;
   std::size_t i = 0, failed = 0;
@@ -280,11 +283,11 @@ TEST_CASE(identity_map_disk)
 
 // ---- landmarks ---------------------------------------------------------------------
 
-static void check_landmarks(const Embedded& a, const Embedded& b, HOT::internal::Interpolation_model m)
+static void check_landmarks(const Embedded& a, const Embedded& b, HOT::Interpolation_model m)
 {
   CHECK(a.landmarks.size() == b.landmarks.size());
   const Locator& L = b.loc(m);
-  const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, L);
+  const std::vector<Location> locs = HOT::map_vertices(a.mesh, a.uv, L);
   std::vector<std::size_t> index(num_vertices(a.mesh));
   std::size_t i = 0;
   for(vertex_descriptor v : vertices(a.mesh)) index[v.idx()] = i++;
@@ -330,9 +333,9 @@ struct Error_stats
 
 // vertex v of A goes to a point of B; the identity would be vertex v of B (same triangulation)
 static Error_stats deformation_error(const Embedded& a, const Embedded& b,
-                                     HOT::internal::Interpolation_model m = HOT::internal::Klein_linear)
+                                     HOT::Interpolation_model m = HOT::Klein_linear)
 {
-  const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, b.loc(m));
+  const std::vector<Location> locs = HOT::map_vertices(a.mesh, a.uv, b.loc(m));
   Error_stats s;
   std::size_t i = 0, n = 0;
   for(vertex_descriptor v : vertices(a.mesh)) {
@@ -385,7 +388,7 @@ static void check_deformations(const Embedded& a, const std::vector<vertex_descr
       Embedded_ptr b = embed(a.name + "-deformed", deform(a.mesh, variant, amplitude[i]), landmarks);
       if(!ready({b.get()})) return;
       e[i] = deformation_error(a, *b);
-      const Error_stats eh = deformation_error(a, *b, HOT::internal::Hyperboloid_linear);
+      const Error_stats eh = deformation_error(a, *b, HOT::Hyperboloid_linear);
       d[i] = displacement(a, *b);
       std::cout << "  " << a.name << " -> deformation " << variant << " x " << amplitude[i] << " (displacement max "
                 << d[i].max << ", mean " << d[i].mean << "): vertex error max " << e[i].max << ", mean " << e[i].mean
@@ -425,9 +428,9 @@ TEST_CASE(deformation_map_is_close_to_identity)
 // ---- round trips and cycle consistency ------------------------------------------------
 
 // A -> B -> A: every vertex of A comes back to itself; also points inside A's faces
-static void check_round_trip(const Embedded& a, const Embedded& b, HOT::internal::Interpolation_model m)
+static void check_round_trip(const Embedded& a, const Embedded& b, HOT::Interpolation_model m)
 {
-  const std::vector<Location> ab = HOT::internal::map_vertices(a.mesh, a.uv, b.loc(m));
+  const std::vector<Location> ab = HOT::map_vertices(a.mesh, a.uv, b.loc(m));
   double worst = 0;
   std::size_t i = 0;
   for(vertex_descriptor v : vertices(a.mesh)) {
@@ -472,10 +475,10 @@ TEST_CASE(round_trip)
 }
 
 // f_BC(f_AB(x)) == f_AC(x) for every vertex x of A
-static void check_cycle(const Embedded& a, const Embedded& b, const Embedded& c, HOT::internal::Interpolation_model m)
+static void check_cycle(const Embedded& a, const Embedded& b, const Embedded& c, HOT::Interpolation_model m)
 {
-  const std::vector<Location> ab = HOT::internal::map_vertices(a.mesh, a.uv, b.loc(m));
-  const std::vector<Location> ac = HOT::internal::map_vertices(a.mesh, a.uv, c.loc(m));
+  const std::vector<Location> ab = HOT::map_vertices(a.mesh, a.uv, b.loc(m));
+  const std::vector<Location> ac = HOT::map_vertices(a.mesh, a.uv, c.loc(m));
   double worst = 0;
   for(std::size_t i = 0; i < ab.size(); ++i) {
     CHECK(ab[i].success && ac[i].success);
@@ -514,7 +517,7 @@ struct Point_checker
   const Locator& L;
   std::size_t n = 0, failed = 0, searched = 0;
   double worst_min_bary = 0, worst_consistency = 0, worst_consistency_inner = 0;
-  Point_checker(const Embedded& e, HOT::internal::Interpolation_model m) : b(e), L(e.loc(m)) {}
+  Point_checker(const Embedded& e, HOT::Interpolation_model m) : b(e), L(e.loc(m)) {}
   Location operator()(const Point_2& z)
   {
     ++n;
@@ -549,7 +552,7 @@ struct Point_checker
   }
 };
 
-static void check_hostile_points(const Embedded& b, HOT::internal::Interpolation_model m)
+static void check_hostile_points(const Embedded& b, HOT::Interpolation_model m)
 {
   const Locator& L = b.loc(m);
   const HOT::Orbifold_tile<>& tile = L.tile();
@@ -665,7 +668,7 @@ TEST_CASE(every_point_is_located)
   Mesh hand;
   if(read_demo_mesh("hand", hand)) {
     Embedded_ptr e = embed("hand-k23", hand, farthest_point_landmarks(hand, 23, 5), HOT::Tsp_order);
-    if(ready({e.get()})) check_hostile_points(*e, HOT::internal::Klein_linear);
+    if(ready({e.get()})) check_hostile_points(*e, HOT::Klein_linear);
   }
 }
 
@@ -721,7 +724,7 @@ TEST_CASE(points_on_edges_and_vertices)
       CHECK(n_cut > 0);
       CHECK_MSG(worst_inner < 1e-9, b->name << " inner edges: " << worst_inner);
       CHECK(worst_vertex == 0);
-      if(m == HOT::internal::Hyperboloid_linear)
+      if(m == HOT::Hyperboloid_linear)
         CHECK_MSG(worst_cut < 1e-9, b->name << " cut edges (hyperboloid coordinates): " << worst_cut);
     }
   }
@@ -781,7 +784,7 @@ TEST_CASE(polyhedron_3_locator)
   typedef boost::graph_traits<Polyhedron>::halfedge_descriptor P_halfedge;
   typedef std::unordered_map<P_halfedge, Point_2> P_uv_storage;
   typedef boost::associative_property_map<P_uv_storage> P_uv;
-  typedef HOT::internal::Embedding_point_locator<Polyhedron, P_uv> P_locator;
+  typedef HOT::Embedding_locator<Polyhedron, P_uv> P_locator;
   Sphere_family& f = sphere_family();
   if(!ready({f.hand.get()})) return;
   Polyhedron poly;
@@ -798,18 +801,18 @@ TEST_CASE(polyhedron_3_locator)
   const P_locator L(poly, P_uv(storage), HOT::Sphere_type, 7);
   CHECK_MSG(L.is_valid(), L.message());
   CHECK(L.number_of_faces() == num_faces(f.hand->mesh) && L.number_of_cut_edges() > 0);
-  const std::vector<P_locator::Location> locs = HOT::internal::map_vertices(f.hand->mesh, f.hand->uv, L);
+  const std::vector<P_locator::Location> locs = HOT::map_vertices(f.hand->mesh, f.hand->uv, L);
   double worst = 0;
   std::size_t i = 0;
   for(vertex_descriptor v : vertices(f.hand->mesh)) {
     const P_locator::Location& l = locs[i++];
     CHECK(l.success);
     if(!l.success) continue;
-    const K::Point_3 p = HOT::internal::surface_point(l, L, get(CGAL::vertex_point, poly));
+    const K::Point_3 p = HOT::surface_point(l, L, get(CGAL::vertex_point, poly));
     worst = std::max(worst, dist3(p, f.hand->mesh.point(v)) / f.hand->diag);
   }
   // and back: the polyhedron's vertices onto the surface mesh
-  const std::vector<Location> back = HOT::internal::map_vertices(poly, P_uv(storage), *f.hand->locator);
+  const std::vector<Location> back = HOT::map_vertices(poly, P_uv(storage), *f.hand->locator);
   i = 0;
   for(P_vertex v : vertices(poly)) {
     const Location& l = back[i++];
@@ -822,7 +825,7 @@ TEST_CASE(polyhedron_3_locator)
     const P_locator::Location l = L.locate(f.hand->locator->disk_point(l0));
     CHECK(l.success);
     if(l.success)
-      worst = std::max(worst, dist3(HOT::internal::surface_point(l, L, get(CGAL::vertex_point, poly)),
+      worst = std::max(worst, dist3(HOT::surface_point(l, L, get(CGAL::vertex_point, poly)),
                                     surface_point(*f.hand, l0)) / f.hand->diag);
   }
   std::cout << "  hand (Surface_mesh) <-> hand (Polyhedron_3): worst " << worst << " x diagonal" << std::endl;
@@ -837,8 +840,8 @@ TEST_CASE(transfer_matrix)
   if(!ready({f.hand.get(), f.hand1.get(), f.homer.get()})) return;
   for(const Embedded* b : {f.hand.get(), f.hand1.get(), f.homer.get()}) {
     const Embedded& a = *f.hand;
-    const std::vector<Location> locs = HOT::internal::map_vertices(a.mesh, a.uv, *b->locator);
-    const Eigen::SparseMatrix<double> T = HOT::internal::transfer_matrix(locs, *b->locator);
+    const std::vector<Location> locs = HOT::map_vertices(a.mesh, a.uv, *b->locator);
+    const Eigen::SparseMatrix<double> T = HOT::transfer_matrix(locs, *b->locator);
     CHECK(T.rows() == Eigen::Index(num_vertices(a.mesh)) && T.cols() == Eigen::Index(num_vertices(b->mesh)));
     // rows are convex combinations of at most 3 vertices of B
     double worst_sum = 0;
@@ -876,7 +879,7 @@ TEST_CASE(transfer_matrix)
     for(vertex_descriptor v : vertices(b->mesh)) vb[v] = b->mesh.point(v) - CGAL::ORIGIN;
     Mesh& am = const_cast<Mesh&>(a.mesh);
     auto va = am.add_property_map<vertex_descriptor, Vector_3>("v:transferred", Vector_3(1e9, 1e9, 1e9)).first;
-    const std::size_t written = HOT::internal::transfer_vertex_property(a.mesh, locs, *b->locator, vb, va);
+    const std::size_t written = HOT::transfer_vertex_property(a.mesh, locs, *b->locator, vb, va);
     CHECK(written == num_vertices(a.mesh));
     double worst_helper = 0;
     for(vertex_descriptor v : vertices(a.mesh)) {
@@ -916,7 +919,7 @@ TEST_CASE(armadillo_deformation_26k)
     std::vector<Location> locs;
     for(int rep = 0; rep < 3; ++rep) {
       t0 = Clock::now();
-      locs = HOT::internal::map_vertices(a->mesh, a->uv, L);
+      locs = HOT::map_vertices(a->mesh, a->uv, L);
       t_map = std::min(t_map, seconds_since(t0));
     }
     std::size_t failed = 0, searched = 0, steps = 0, max_steps = 0;
@@ -938,7 +941,7 @@ TEST_CASE(armadillo_deformation_26k)
 #ifdef CGAL_LINKED_WITH_TBB
     { // the vertices are located in parallel: one thread gives the same locations bit for bit
       std::vector<Location> one;
-      tbb::task_arena(1).execute([&] { one = HOT::internal::map_vertices(a->mesh, a->uv, L); });
+      tbb::task_arena(1).execute([&] { one = HOT::map_vertices(a->mesh, a->uv, L); });
       CHECK(one.size() == locs.size());
       std::size_t differ = 0;
       for(std::size_t i = 0; i < one.size() && i < locs.size(); ++i)
@@ -1022,6 +1025,100 @@ TEST_CASE(collection_parallel_and_cycle_consistent)
   bad.add_mesh(base, lm);
   bad.add_mesh(base, std::vector<vertex_descriptor>(lm.begin(), lm.begin() + 6));
   CHECK(bad.embed() == HOT::ERROR_WRONG_PARAMETER);
+}
+
+// The collection is generic over FaceGraph models: Polyhedron_3 meshes (hand, an identical
+// copy of it and two deformations, read from the OFF text of the Surface_mesh ones). Facts
+// checked from outside: landmarks map onto landmarks, the map onto the identical copy is the
+// identity, cycle consistency, the progress callback and the timings, and the same maps as
+// the Surface_mesh collection of the same meshes.
+TEST_CASE(collection_polyhedron_3)
+{
+  typedef CGAL::Polyhedron_3<K> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor P_vertex;
+  typedef HOT::Orbifold_collection<Polyhedron, CGAL::Parallel_tag> P_collection;
+  Mesh base;
+  CHECK(read_demo_mesh("hand", base));
+  if(num_vertices(base) == 0) return;
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(base, 7);
+  std::vector<Mesh> meshes(4, base); // mesh 1: an identical copy of mesh 0
+  for(int d = 2; d < 4; ++d)
+    for(vertex_descriptor v : vertices(meshes[d])) {
+      const K::Point_3 p = base.point(v);
+      meshes[d].point(v) = K::Point_3(p.x() + 0.02 * d * std::sin(3 * p.y()), p.y() * (1 + 0.1 * d), p.z() + 0.01 * d * std::cos(5 * p.x()));
+    }
+  HOT::Orbifold_collection<Mesh, CGAL::Parallel_tag> sm;
+  P_collection pc;
+  std::vector<std::vector<P_vertex> > pv(4);
+  for(int d = 0; d < 4; ++d) {
+    std::stringstream off;
+    CHECK(CGAL::IO::write_OFF(off, meshes[d], CGAL::parameters::stream_precision(17)));
+    Polyhedron poly;
+    CHECK(bool(off >> poly));
+    pv[d].assign(vertices(poly).begin(), vertices(poly).end());
+    CHECK(pv[d].size() == num_vertices(base));
+    if(pv[d].size() != num_vertices(base)) return;
+    std::vector<P_vertex> plm;
+    for(vertex_descriptor v : lm) plm.push_back(pv[d][v.idx()]);
+    sm.add_mesh(meshes[d], lm);
+    pc.add_mesh(poly, plm);
+    pv[d].assign(vertices(pc.mesh(d)).begin(), vertices(pc.mesh(d)).end()); // the collection's copy
+  }
+  std::size_t embedded = 0, mapped = 0, last_done = 0, last_total = 0;
+  pc.set_progress_callback([&](const P_collection::Progress& p) {
+    if(p.stage == P_collection::Progress::Mesh_embedded) {
+      ++embedded;
+      CHECK(p.code == HOT::OK && p.source == p.target && p.total == 4);
+    } else {
+      ++mapped;
+      last_done = std::max(last_done, p.done);
+      last_total = p.total;
+    }
+  });
+  const HOT::Error_code ep = pc.embed(), es = sm.embed();
+  CHECK_MSG(ep == HOT::OK, pc.message());
+  CHECK_MSG(es == HOT::OK, sm.message());
+  if(ep != HOT::OK || es != HOT::OK) return;
+  CHECK(embedded == 4 && pc.order() == sm.order());
+  pc.compute_all_maps();
+  sm.compute_all_maps();
+  CHECK(mapped == 12 && last_done == 12 && last_total == 12);
+  const double diag = bbox_diagonal(meshes[0]);
+  double worst_landmark = 0, worst_identity = 0, worst_cycle = 0, worst_types = 0;
+  std::size_t failed = 0;
+  for(std::size_t a = 0; a < 4; ++a)
+    for(std::size_t b = 0; b < 4; ++b) {
+      if(a == b) continue;
+      CHECK(pc.map_seconds(a, b) > 0);
+      const auto& fp = pc.map(a, b);
+      const auto& fs = sm.map(a, b);
+      const auto vpm = get(CGAL::vertex_point, pc.mesh(b));
+      for(std::size_t v = 0; v < fp.size(); ++v) {
+        failed += !fp[v].success;
+        if(!fp[v].success || !fs[v].success) continue;
+        const K::Point_3 p = HOT::surface_point(fp[v], pc.locator(b), vpm);
+        // the same maps on both mesh types (the embeddings agree up to the solver's tolerance)
+        worst_types = std::max(worst_types, dist3(p, HOT::surface_point(fs[v], sm.locator(b), get(CGAL::vertex_point, sm.mesh(b)))) / diag);
+        if((a == 0 && b == 1) || (a == 1 && b == 0)) // the identical copy: the identity
+          worst_identity = std::max(worst_identity, dist3(p, pv[b][v]->point()) / diag);
+      }
+      for(std::size_t i = 0; i < lm.size(); ++i) {
+        const auto& l = fp[lm[i].idx()];
+        CHECK(l.success);
+        if(l.success)
+          worst_landmark = std::max(worst_landmark, dist3(HOT::surface_point(l, pc.locator(b), vpm), pc.landmarks(b)[i]->point()));
+      }
+      for(std::size_t c = 0; c < 4; ++c)
+        if(c != a && c != b) worst_cycle = std::max(worst_cycle, pc.cycle_consistency_error(a, b, c));
+    }
+  std::cout << "  Polyhedron_3 collection of 4: landmarks " << worst_landmark << ", identity " << worst_identity
+            << " x diagonal, cycle consistency " << worst_cycle << ", Surface_mesh vs Polyhedron_3 maps " << worst_types
+            << " x diagonal" << std::endl;
+  CHECK(failed == 0);
+  CHECK(worst_landmark == 0);
+  CHECK(worst_identity == 0);
+  CHECK(worst_cycle < 1e-9);
+  CHECK(worst_types < 1e-6);
 }
 
 HOT_TEST_MAIN

@@ -14,7 +14,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Random.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -1383,7 +1383,7 @@ TEST_CASE(recentring_goes_past_the_limit_of_double)
       CHECK(cec != HOT::OK || !in_tile.is_bijective());
     }
     if(L > 40) { // a map needs the tile itself: the locator refuses the moved embedding
-      const HOT::internal::Embedding_point_locator<Mesh, UV_map> locator(m, uv, HOT::Sphere_type, 5);
+      const HOT::Embedding_locator<Mesh, UV_map> locator(m, uv, HOT::Sphere_type, 5);
       CHECK(!locator.is_valid());
     }
   }

@@ -15,18 +15,18 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/point_location.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/svg_writer.h>
 
 #include <sys/stat.h>
 
-#include <atomic>
+#include <array>
 #include <cerrno>
-#include <memory>
-#include <mutex>
-#include <thread>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -249,8 +249,8 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
 
 // OUT.obj of `embed`: v = input vertices, vt = one Poincare point per cut-mesh vertex,
 // f = input faces in input order with their corners' vt
-void write_embedding_obj(std::ostream& os, const Surface_mesh& m,
-                         const Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2>& uv)
+template <class HalfedgeUVMap>
+void write_embedding_obj(std::ostream& os, const Surface_mesh& m, const HalfedgeUVMap& uv)
 {
   std::vector<std::vector<std::pair<Kernel::Point_2, std::size_t> > > vts(num_vertices(m));
   std::vector<Kernel::Point_2> vt_points;
@@ -434,11 +434,12 @@ void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const st
     throw Failure{ec, name + ": " + e.stats.message};
 }
 
-typedef HOT::internal::Embedding_point_locator<Surface_mesh, Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> > Locator;
+typedef HOT::Embedding_locator<Surface_mesh, Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> > Locator;
 
 // barycentric coordinates w.r.t. the face's vertices in input order (read_mesh() builds face f
 // with source(halfedge(f)) = its first vertex in the file)
-std::array<double, 3> input_order_barycentric(const Surface_mesh& m, const Locator& loc, const Locator::Location& l)
+template <class SM_locator>
+std::array<double, 3> input_order_barycentric(const Surface_mesh& m, const SM_locator& loc, const typename SM_locator::Location& l)
 {
   std::array<double, 3> b{{0, 0, 0}};
   int j = 0;
@@ -478,8 +479,8 @@ int run_map(int argc, char** argv)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
                                               "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
-  const Locator locB(B.mesh, B.uv, B.type, k, HOT::internal::Hyperboloid_linear);
-  const std::vector<Locator::Location> f = HOT::internal::map_vertices(A.mesh, A.uv, locB);
+  const Locator locB(B.mesh, B.uv, B.type, k, HOT::Hyperboloid_linear);
+  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
@@ -495,8 +496,8 @@ int run_map(int argc, char** argv)
     written.push_back(out);
     if(opt.has("colors-out")) {
       // a smooth colouring of A (its bounding box mapped to RGB), carried to B by f_BA
-      const Locator locA(A.mesh, A.uv, A.type, k, HOT::internal::Hyperboloid_linear);
-      const std::vector<Locator::Location> g = HOT::internal::map_vertices(B.mesh, B.uv, locA);
+      const Locator locA(A.mesh, A.uv, A.type, k, HOT::Hyperboloid_linear);
+      const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, locA);
       const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(A.mesh);
       auto colour = [&](const Kernel::Point_3& p) {
         return Kernel::Vector_3((p.x() - bb.xmin()) / (bb.xmax() - bb.xmin() + 1e-300),
@@ -540,12 +541,12 @@ int run_map(int argc, char** argv)
   return EXIT_SUCCESS;
 }
 
-int run_collection(int argc, char** argv)
+typedef HOT::Orbifold_collection<Surface_mesh, CGAL::Parallel_tag> Collection;
+typedef std::vector<std::pair<std::string, std::string> > Manifest; // (mesh path, cones path) per line
+
+// the manifest's entries, relative paths resolved against the manifest's folder
+Manifest read_manifest(const std::string& manifest)
 {
-  typedef std::chrono::steady_clock Clock;
-  const Options opt(argc, argv, 2, {"manifest", "out"}, {"all-pairs"});
-  const std::string manifest = opt.get("manifest"), dir = opt.get("out");
-  const bool all_pairs = opt.has("all-pairs");
   std::string manifest_text; // a missing file, a directory etc. get their own reason
   const HOT::internal::Check_result mr = HOT::internal::io_impl::read_file_contents(manifest, manifest_text);
   if(!mr)
@@ -553,7 +554,7 @@ int run_collection(int argc, char** argv)
   std::istringstream in(manifest_text);
   const std::string base = manifest.find('/') == std::string::npos ? std::string(".") : manifest.substr(0, manifest.find_last_of('/'));
   auto resolve = [&](const std::string& f) { return (!f.empty() && f[0] == '/') ? f : base + "/" + f; };
-  std::vector<std::pair<std::string, std::string> > entries;
+  Manifest entries;
   std::string line;
   std::size_t line_no = 0;
   while(std::getline(in, line)) {
@@ -573,104 +574,161 @@ int run_collection(int argc, char** argv)
   if(entries.size() < 2)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, manifest + ": the manifest lists " + std::to_string(entries.size()) +
                                               " mesh" + (entries.size() == 1 ? "" : "es") + ", a collection needs at least 2"};
-  const std::size_t N = entries.size();
-  std::vector<Embedded> E(N);
-  for(std::size_t i = 0; i < N; ++i) {
-    read_and_check(entries[i].first, entries[i].second, E[i]);
-    if(E[i].type != E[0].type || E[i].landmarks.size() != E[0].landmarks.size())
+  return entries;
+}
+
+// reads and checks every mesh of the manifest into the collection; returns the orbifold type
+HOT::Orbifold_type read_collection(const Manifest& entries, Collection& coll)
+{
+  HOT::Orbifold_type type = HOT::Sphere_type;
+  std::size_t k = 0;
+  for(std::size_t i = 0; i < entries.size(); ++i) {
+    Embedded e;
+    read_and_check(entries[i].first, entries[i].second, e);
+    if(i == 0) {
+      type = e.type;
+      k = e.landmarks.size();
+    }
+    if(e.type != type || e.landmarks.size() != k)
       throw Failure{HOT::ERROR_WRONG_PARAMETER, entries[i].first + ": its topology or number of landmarks differs from the first mesh's"};
+    coll.add_mesh(e.mesh, e.landmarks);
   }
-  std::vector<std::size_t> order(E[0].landmarks.size());
-  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  if(E[0].type == HOT::Sphere_type) {
-    order = HOT::internal::compute_tsp_landmark_order(E[0].mesh, E[0].landmarks, get(CGAL::vertex_point, E[0].mesh));
-    if(order.size() != E[0].landmarks.size())
-      throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the first mesh"};
-  }
-  // embeddings, in parallel (each is independent: the result does not depend on the threads)
-  std::vector<double> embed_time(N, 0);
-  std::vector<std::string> errors(N);
+  return type;
+}
+
+// embeds the collection (in parallel), progress on stderr; a failure names the mesh's file
+void embed_collection(const Manifest& entries, Collection& coll)
+{
+  const std::size_t N = entries.size();
   std::vector<HOT::Error_code> codes(N, HOT::OK);
-  {
-    std::atomic<std::size_t> next(0), done(0);
-    std::mutex io;
-    auto worker = [&]() {
-      for(std::size_t i = next++; i < N; i = next++) {
-        const auto t = Clock::now();
-        try {
-          embed_in_order(E[i], order, entries[i].first);
-        } catch(const Failure& f) {
-          codes[i] = f.code;
-          errors[i] = f.message;
-        }
-        embed_time[i] = std::chrono::duration<double>(Clock::now() - t).count();
-        std::lock_guard<std::mutex> lock(io);
-        std::cerr << "  embedded " << ++done << "/" << N << ": " << entries[i].first << " (" << embed_time[i] << " s)" << std::endl;
-      }
-    };
-    const unsigned nt = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(N)));
-    std::vector<std::thread> threads;
-    for(unsigned t = 0; t < nt; ++t) threads.emplace_back(worker);
-    for(auto& t : threads) t.join();
-  }
+  coll.set_progress_callback([&](const Collection::Progress& p) {
+    if(p.stage == Collection::Progress::Mesh_embedded) {
+      codes[p.source] = p.code;
+      std::cerr << "  embedded " << p.done << "/" << p.total << ": " << entries[p.source].first << " (" << p.seconds << " s)" << std::endl;
+    } else if(p.done == p.total || p.done % std::max<std::size_t>(1, p.total / 20) == 0) {
+      std::cerr << "  mapped " << p.done << "/" << p.total << " pairs (last: " << p.source << " -> " << p.target << ", "
+                << p.seconds << " s)" << std::endl;
+    }
+  });
+  const HOT::Error_code ec = coll.embed();
+  if(ec == HOT::OK)
+    return;
   for(std::size_t i = 0; i < N; ++i)
     if(codes[i] != HOT::OK)
-      throw Failure{codes[i], errors[i]};
+      throw Failure{codes[i], entries[i].first + ": " + coll.statistics(i).message};
   for(std::size_t i = 1; i < N; ++i)
-    if(E[i].stats.landmark_order_reversed != E[0].stats.landmark_order_reversed)
+    if(coll.statistics(i).landmark_order_reversed != coll.statistics(0).landmark_order_reversed)
       throw Failure{HOT::ERROR_WRONG_PARAMETER, entries[i].first + ": its landmarks run around the boundary the other way than the first mesh's: "
                                                 "the correspondence would reverse orientation"};
-  const int k = static_cast<int>(order.size());
-  std::vector<std::unique_ptr<Locator> > loc(N);
-  for(std::size_t i = 0; i < N; ++i)
-    loc[i].reset(new Locator(E[i].mesh, E[i].uv, E[i].type, k, HOT::internal::Hyperboloid_linear));
-  auto stem = [&](std::size_t i) {
-    std::string f = entries[i].first.substr(entries[i].first.find_last_of('/') + 1);
-    return std::to_string(i) + "_" + f.substr(0, f.find_last_of('.'));
-  };
-  // maps: f_ab for every ordered pair (needed for the files and for cycle consistency)
-  std::vector<std::vector<std::vector<Locator::Location> > > maps(N, std::vector<std::vector<Locator::Location> >(N));
-  std::vector<std::vector<double> > map_time(N, std::vector<double>(N, 0));
-  auto get_map = [&](std::size_t a, std::size_t b) -> const std::vector<Locator::Location>& {
-    if(maps[a][b].empty()) {
-      const auto t = Clock::now();
-      maps[a][b] = HOT::internal::map_vertices(E[a].mesh, E[a].uv, *loc[b]);
-      map_time[a][b] = std::chrono::duration<double>(Clock::now() - t).count();
-      for(std::size_t v = 0; v < maps[a][b].size(); ++v)
-        if(!maps[a][b][v].success)
-          throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(v) + " of mesh " + std::to_string(a) + " could not be located on mesh " + std::to_string(b)};
-    }
-    return maps[a][b];
-  };
-  // cycle consistency: f_bc(f_ab(x)) against f_ac(x), relative to c's bounding-box diagonal,
-  // over every triple (all of them up to 6 meshes, else N consecutive triples)
+  if(ec == HOT::ERROR_CUT_FAILED && coll.order().size() != coll.landmarks(0).size())
+    throw Failure{ec, "the landmark tour could not be computed on the first mesh"};
+  throw Failure{ec, coll.message()};
+}
+
+// the maps the command needs, and the cycle consistency: f_bc(f_ab(x)) against f_ac(x),
+// relative to c's bounding-box diagonal, over every triple (all of them up to 6 meshes, else N
+// consecutive triples); with --all-pairs f_ab for every ordered pair too
+struct Collection_maps
+{
+  std::vector<std::vector<char> > used; // used[a][b]: f_ab computed (and reported)
   double cycle = 0;
   std::size_t triples = 0;
-  auto check_triple = [&](std::size_t a, std::size_t b, std::size_t c) {
-    const auto& fab = get_map(a, b);
-    const auto& fac = get_map(a, c);
-    const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(E[c].mesh);
-    const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) + CGAL::square(bb.zmax() - bb.zmin()));
-    for(std::size_t v = 0; v < fab.size(); ++v) {
-      const Locator::Location lc = loc[c]->locate(loc[b]->disk_point(fab[v]));
-      if(!lc.success)
-        throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "a point of mesh " + std::to_string(b) + " could not be located on mesh " + std::to_string(c)};
-      const auto p1 = HOT::internal::surface_point(lc, *loc[c], get(CGAL::vertex_point, E[c].mesh));
-      const auto p2 = HOT::internal::surface_point(fac[v], *loc[c], get(CGAL::vertex_point, E[c].mesh));
-      cycle = std::max(cycle, std::sqrt(CGAL::squared_distance(p1, p2)) / diag);
-    }
-    ++triples;
-  };
+};
+
+Collection_maps map_collection(Collection& coll, bool all_pairs)
+{
+  const std::size_t N = coll.number_of_meshes();
+  std::vector<std::array<std::size_t, 3> > triples;
   if(N >= 3) {
     if(N <= 6) {
       for(std::size_t a = 0; a < N; ++a)
         for(std::size_t b = 0; b < N; ++b)
           for(std::size_t c = 0; c < N; ++c)
-            if(a != b && b != c && a != c) check_triple(a, b, c);
+            if(a != b && b != c && a != c) triples.push_back({{a, b, c}});
     } else {
-      for(std::size_t a = 0; a < N; ++a) check_triple(a, (a + 1) % N, (a + 2) % N);
+      for(std::size_t a = 0; a < N; ++a) triples.push_back({{a, (a + 1) % N, (a + 2) % N}});
     }
   }
+  std::vector<std::pair<std::size_t, std::size_t> > pairs;
+  for(const auto& t : triples) {
+    pairs.emplace_back(t[0], t[1]);
+    pairs.emplace_back(t[0], t[2]);
+  }
+  if(all_pairs)
+    for(std::size_t a = 0; a < N; ++a)
+      for(std::size_t b = 0; b < N; ++b)
+        if(a != b) pairs.emplace_back(a, b);
+  coll.compute_maps(pairs); // in parallel
+  // failures are reported in the order the maps are used
+  Collection_maps r;
+  r.used.assign(N, std::vector<char>(N, 0));
+  auto use_map = [&](std::size_t a, std::size_t b) {
+    const std::vector<Collection::Location>& f = coll.map(a, b);
+    if(r.used[a][b]) return;
+    r.used[a][b] = 1;
+    for(std::size_t v = 0; v < f.size(); ++v)
+      if(!f[v].success)
+        throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(v) + " of mesh " + std::to_string(a) + " could not be located on mesh " + std::to_string(b)};
+  };
+  for(const auto& t : triples) {
+    use_map(t[0], t[1]);
+    use_map(t[0], t[2]);
+    const double e = coll.cycle_consistency_error(t[0], t[1], t[2]);
+    if(std::isinf(e))
+      throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "a point of mesh " + std::to_string(t[1]) + " could not be located on mesh " + std::to_string(t[2])};
+    r.cycle = std::max(r.cycle, e);
+    ++r.triples;
+  }
+  if(all_pairs)
+    for(std::size_t a = 0; a < N; ++a)
+      for(std::size_t b = 0; b < N; ++b)
+        if(a != b) use_map(a, b);
+  return r;
+}
+
+void write_collection_report(std::ostream& os, const Manifest& entries, Collection& coll, HOT::Orbifold_type type,
+                             const Collection_maps& maps)
+{
+  const std::size_t N = entries.size();
+  os.precision(17);
+  os << "{\n  \"meshes\": [\n";
+  for(std::size_t i = 0; i < N; ++i) {
+    const HOT::Embedding_statistics& st = coll.statistics(i);
+    os << "    {\"index\": " << i << ", \"mesh\": \"" << json_escape(entries[i].first) << "\", \"vertices\": "
+       << num_vertices(coll.mesh(i)) << ", \"embedding_seconds\": "
+       << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << ", \"iterations\": "
+       << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
+       << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false") << "}" << (i + 1 < N ? "," : "") << "\n";
+  }
+  os << "  ],\n  \"orbifold\": \"" << (type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << coll.order().size()
+     << ",\n  \"landmark_order_used\": [";
+  for(std::size_t i = 0; i < coll.order().size(); ++i) os << (i ? ", " : "") << coll.order()[i];
+  os << "],\n  \"pairs\": [\n";
+  bool first = true;
+  for(std::size_t a = 0; a < N; ++a)
+    for(std::size_t b = 0; b < N; ++b)
+      if(maps.used[a][b]) {
+        os << (first ? "" : ",\n") << "    {\"source\": " << a << ", \"target\": " << b << ", \"map_seconds\": " << coll.map_seconds(a, b) << "}";
+        first = false;
+      }
+  os << "\n  ],\n  \"triples_checked\": " << maps.triples << ",\n  \"cycle_consistency_max_rel_error\": " << maps.cycle << "\n}\n";
+}
+
+int run_collection(int argc, char** argv)
+{
+  const Options opt(argc, argv, 2, {"manifest", "out"}, {"all-pairs"});
+  const std::string manifest = opt.get("manifest"), dir = opt.get("out");
+  const bool all_pairs = opt.has("all-pairs");
+  const Manifest entries = read_manifest(manifest);
+  const std::size_t N = entries.size();
+  Collection coll;
+  const HOT::Orbifold_type type = read_collection(entries, coll);
+  embed_collection(entries, coll);
+  const Collection_maps maps = map_collection(coll, all_pairs);
+  auto stem = [&](std::size_t i) {
+    std::string f = entries[i].first.substr(entries[i].first.find_last_of('/') + 1);
+    return std::to_string(i) + "_" + f.substr(0, f.find_last_of('.'));
+  };
   // files
   if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
     throw std::runtime_error("cannot create the folder '" + dir + "'");
@@ -678,53 +736,33 @@ int run_collection(int argc, char** argv)
   try {
     for(std::size_t i = 0; i < N; ++i) {
       const std::string path = dir + "/" + stem(i) + ".obj";
-      write_file_atomically(path, [&](std::ostream& os) { write_embedding_obj(os, E[i].mesh, E[i].uv); });
+      write_file_atomically(path, [&](std::ostream& os) { write_embedding_obj(os, coll.mesh(i), coll.uv_map(i)); });
       written.push_back(path);
     }
     if(all_pairs)
       for(std::size_t a = 0; a < N; ++a)
         for(std::size_t b = 0; b < N; ++b) {
           if(a == b) continue;
-          const auto& f = get_map(a, b);
+          const auto& f = coll.map(a, b);
           const std::string path = dir + "/" + std::to_string(a) + "_to_" + std::to_string(b) + ".map.txt";
           write_file_atomically(path, [&](std::ostream& os) {
             os.precision(17);
-            for(const Locator::Location& l : f) {
-              const std::array<double, 3> bc = input_order_barycentric(E[b].mesh, *loc[b], l);
+            for(const Collection::Location& l : f) {
+              const std::array<double, 3> bc = input_order_barycentric(coll.mesh(b), coll.locator(b), l);
               os << l.face_index << " " << bc[0] << " " << bc[1] << " " << bc[2] << "\n";
             }
           });
           written.push_back(path);
         }
     const std::string rep = dir + "/report.json";
-    write_file_atomically(rep, [&](std::ostream& os) {
-      os.precision(17);
-      os << "{\n  \"meshes\": [\n";
-      for(std::size_t i = 0; i < N; ++i)
-        os << "    {\"index\": " << i << ", \"mesh\": \"" << json_escape(entries[i].first) << "\", \"vertices\": "
-           << num_vertices(E[i].mesh) << ", \"embedding_seconds\": " << embed_time[i] << ", \"iterations\": "
-           << E[i].stats.iterations << ", \"relative_gradient_norm\": " << E[i].stats.relative_gradient_norm
-           << ", \"bijective\": " << (E[i].stats.certificate.is_bijective() ? "true" : "false") << "}" << (i + 1 < N ? "," : "") << "\n";
-      os << "  ],\n  \"orbifold\": \"" << (E[0].type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << k
-         << ",\n  \"landmark_order_used\": [";
-      for(std::size_t i = 0; i < order.size(); ++i) os << (i ? ", " : "") << order[i];
-      os << "],\n  \"pairs\": [\n";
-      bool first = true;
-      for(std::size_t a = 0; a < N; ++a)
-        for(std::size_t b = 0; b < N; ++b)
-          if(!maps[a][b].empty()) {
-            os << (first ? "" : ",\n") << "    {\"source\": " << a << ", \"target\": " << b << ", \"map_seconds\": " << map_time[a][b] << "}";
-            first = false;
-          }
-      os << "\n  ],\n  \"triples_checked\": " << triples << ",\n  \"cycle_consistency_max_rel_error\": " << cycle << "\n}\n";
-    });
+    write_file_atomically(rep, [&](std::ostream& os) { write_collection_report(os, entries, coll, type, maps); });
     written.push_back(rep);
   } catch(...) {
     for(const std::string& w : written) std::remove(w.c_str());
     throw;
   }
   std::cout << "collection of " << N << " meshes embedded" << (all_pairs ? " and mapped pairwise" : "") << "; "
-            << triples << " triples checked, cycle consistency " << cycle << "; wrote " << dir << std::endl;
+            << maps.triples << " triples checked, cycle consistency " << maps.cycle << "; wrote " << dir << std::endl;
   return EXIT_SUCCESS;
 }
 

@@ -11,6 +11,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
@@ -22,6 +23,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H

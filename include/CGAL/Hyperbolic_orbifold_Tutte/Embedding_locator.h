@@ -1,0 +1,288 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_LOCATOR_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_LOCATOR_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/klein_model.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/lifted_triangulation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_build.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_search.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_walk.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+/// \file Embedding_locator.h
+
+// Algorithm (Embedding_locator::locate):
+//  1. z is reduced into the tile (Orbifold_tile::reduce_to_tile, exact side tests):
+//     q = r(z).
+//  2. A start triangle near q is read from a uniform grid over B's triangle centroids
+//     (built in linear time); its Klein centroid p is strictly inside it (checked
+//     exactly when the grid is built).
+//  3. Straight walk from p to q in the lifted triangulation (B's triangles and their
+//     images by the group, which tile the disk when Phi_B is bijective). The segment
+//     [p, q] is fixed; the walk carries the group element h of the current copy. When it
+//     crosses a cut edge (sphere type: the side pairing that glues the two sides, found
+//     once per edge from the corner coordinates) or a border edge (disk type: the
+//     reflection in the tile side holding it), h is composed with that element and only
+//     the new triangle's third corner is computed as h(uv); the two corners of the
+//     crossed edge are reused bit for bit, so consecutive triangles share their edge
+//     exactly and no sliver opens between copies. All side tests use the exact
+//     predicate Poincare_disk_traits_2<>::Hyperbolic_orientation_2 on these doubles; a
+//     vertex on the line (p, q) counts as left of it (a symbolic perturbation of the
+//     line), so the walk is the straight walk of a segment that meets no vertex.
+//     Termination: every new triangle is checked to be positively oriented, so the exit
+//     point along [p, q] strictly advances at each step; no triangle is entered twice,
+//     and only the finitely many lifted triangles meeting the segment are visited. The
+//     walk ends in the (closed) triangle containing q.
+//  4. Safety net, for inputs where a check of step 3 fails (a rounded third corner
+//     flipping a needle triangle, an embedding that is not bijective, a step count
+//     beyond 4 x (number of faces) + 1000): a best-first search over lifted triangles
+//     (face, group element), ordered by hyperbolic distance from q to the triangle's
+//     centroid, with a visited set. Before the triangle containing q is expanded only
+//     triangles closer than the farthest one along some path from the start to it can
+//     be expanded, a finite set (the group acts properly discontinuously), so it ends.
+//     (Capped at 64 x (number of faces) + 100000 expansions for input that is not an
+//     embedding; then the candidate with the largest smallest coordinate is returned,
+//     with success only if that coordinate is above -1e-9.)
+//
+// The reported element is g = h^{-1} r (g(z) is in the face); the barycentric coordinates
+// are those of g(z) = h^{-1}(q) w.r.t. the face's stored corners, in Klein coordinates of
+// B's own frame (isometries are projective, not affine, maps of the Klein disk, so the
+// coordinates w.r.t. the developed corners h(uv) would be different ones), or, on request,
+// in the hyperboloid model, where they are invariant under the group (Interpolation_model).
+// Points given exactly at a corner's coordinates are returned at that corner with the
+// barycentric coordinates (1, 0, 0) (up to the corner's position), exactly.
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+
+exact point location in the embedding of a triangle mesh `B` into a hyperbolic orbifold,
+given as the per-corner map written by `hyperbolic_orbifold_Tutte_embedding()` (for every
+halfedge `h` of a face, the Poincar&eacute; point of corner `target(h)` in `face(h)`).
+
+The embedding (one copy of the fundamental domain: the cut mesh) and its images under the
+orbifold group tile the Poincar&eacute; disk. `locate(z)` returns, for any point `z` of the
+disk, the face of `B` and the barycentric coordinates of the copy `g(z)` of `z` under the
+group that lies in that face's triangle, and `g`. It reduces `z` into the tile, then walks
+straight through `B`'s triangles and their images from a start triangle read from a grid,
+with exact orientation tests; an exhaustive best-first search over the lifted triangles is
+the safety net, so it never gives up on a bijective embedding. Points given exactly at a
+corner's coordinates are returned at that corner, exactly.
+
+Built once in linear time; `locate()` is then thread-safe (const, no shared state).
+
+\tparam TriangleMesh a model of `FaceGraph` with triangular faces
+\tparam HalfedgeUVMap a model of `ReadablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and a point type
+        with `x()` and `y()` as value type
+
+\sa `map_vertices()`, `surface_point()`, `Orbifold_collection`
+*/
+template <class TriangleMesh, class HalfedgeUVMap>
+class Embedding_locator
+{
+public:
+  /// \name Types
+  /// @{
+  typedef boost::graph_traits<TriangleMesh> GT;                     ///< graph traits of the mesh
+  typedef typename GT::vertex_descriptor vertex_descriptor;         ///< vertex of the mesh
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;     ///< halfedge of the mesh
+  typedef typename GT::face_descriptor face_descriptor;             ///< face of the mesh
+  typedef Poincare_disk_traits_2<> Traits;                          ///< traits of the tile
+  typedef Traits::Point_2 Point_2;                                  ///< point of the Poincar&eacute; disk
+  typedef Orbifold_tile<Traits> Tile;                               ///< the orbifold's tile
+  typedef Hyperbolic_isometry_2<double> Isometry;                   ///< element of the orbifold group
+  /// @}
+
+#ifndef DOXYGEN_RUNNING
+  typedef internal::Complex<double> C;
+#endif
+
+  /// the face index of a location that was not found
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+  /// the answer of `locate()`
+  struct Location
+  {
+    std::size_t face_index = npos;         ///< index of the face in `faces(B)` order
+    face_descriptor face;                  ///< the face
+    /// barycentric coordinates (see `Interpolation_model`) w.r.t. the corners of the face in
+    /// the order of `halfedges_around_face(halfedge(face))`, clamped to be >= 0 and renormalised
+    std::array<double, 3> barycentric{{0.0, 0.0, 0.0}};
+    Isometry element;                      ///< g with g(z) in the face
+    double min_raw_barycentric = 0;        ///< the smallest coordinate before clamping
+    bool success = false;                  ///< whether the point was located
+    std::size_t steps = 0;                 ///< triangles visited
+    bool used_search = false;              ///< the walk failed a check; the fallback search answered
+  };
+
+  /// an invalid locator
+  Embedding_locator() {}
+
+  /// builds the locator of the embedding `uv` of `tm` into the orbifold of `tile`
+  Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, const Tile& tile,
+                    Interpolation_model model = Hyperboloid_linear)
+  {
+    lt_.model = model;
+    build(tm, uv, tile);
+  }
+
+  /// builds the locator of the embedding `uv` of `tm` into the orbifold of the given type with `k` cones
+  Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, Orbifold_type type, int k,
+                    Interpolation_model model = Hyperboloid_linear)
+  {
+    lt_.model = model;
+    Tile tile;
+    if(make_orbifold_tile(type, k, tile) != OK) {
+      lt_.fail("the orbifold with " + std::to_string(k) + " cones is not hyperbolic");
+      return;
+    }
+    build(tm, uv, tile);
+  }
+
+  /// \name Access
+  /// @{
+  /// whether the locator was built (see `message()` otherwise)
+  bool is_valid() const { return lt_.valid; }
+  /// how barycentric coordinates are defined (see `Interpolation_model`)
+  Interpolation_model interpolation_model() const { return lt_.model; }
+  /// why the locator is not valid, or a warning (faces not positively oriented)
+  const std::string& message() const { return lt_.message; }
+  /// the orbifold's tile
+  const Tile& tile() const { return lt_.tile; }
+  /// the number of faces of the mesh
+  std::size_t number_of_faces() const { return faces_.size(); }
+  /// the number of vertices of the mesh
+  std::size_t number_of_vertices() const { return vertices_.size(); }
+  /// face `i` in `faces(B)` order
+  face_descriptor face(std::size_t i) const { return faces_[i]; }
+  /// vertex `i` in `vertices(B)` order
+  vertex_descriptor vertex(std::size_t i) const { return vertices_[i]; }
+  /// index (in `vertices(B)` order) of corner `j` of face `i`
+  std::size_t corner_vertex_index(std::size_t i, int j) const { return static_cast<std::size_t>(lt_.faces[i].v[j]); }
+  /// the stored Poincar&eacute; point of corner `j` of face `i`
+  Point_2 corner_point(std::size_t i, int j) const { return Point_2(lt_.faces[i].z[j].re, lt_.faces[i].z[j].im); }
+  /// edges whose two sides carry different corner points (sphere type)
+  std::size_t number_of_cut_edges() const { return lt_.n_cut_edges; }
+  /// mesh border edges (disk type), glued to themselves by the reflection in a tile side
+  std::size_t number_of_border_edges() const { return lt_.n_border_edges; }
+  /// faces not positively oriented (exact test): zero for a bijective embedding
+  std::size_t number_of_inverted_faces() const { return lt_.n_inverted; }
+  /// @}
+
+  /// the Poincar&eacute; point of face `i` with barycentric coordinates `b` (combination of its corners)
+  Point_2 disk_point(std::size_t i, const std::array<double, 3>& b) const
+  {
+    const internal::Lifted_face& F = lt_.faces[i];
+    for(int j = 0; j < 3; ++j)
+      if(b[(j + 1) % 3] == 0.0 && b[(j + 2) % 3] == 0.0)
+        return Point_2(F.z[j].re, F.z[j].im); // a corner: its own point, bitwise
+    C k;
+    double s = 0;
+    for(int j = 0; j < 3; ++j) {
+      // Klein weights: the coordinates themselves, or lambda_j / w_j (hyperboloid)
+      const double mu = (lt_.model == Klein_linear) ? b[j] : b[j] / internal::hyperboloid_weight(F.z[j]);
+      k += mu * internal::poincare_to_klein(F.z[j]);
+      s += mu;
+    }
+    const C z = internal::klein_to_poincare(k / s);
+    return Point_2(z.re, z.im);
+  }
+  /// the Poincar&eacute; point of a location
+  Point_2 disk_point(const Location& l) const { return disk_point(l.face_index, l.barycentric); }
+
+  /// locates `z` (Poincar&eacute; coordinates, \f$|z| < 1\f$)
+  Location locate(const Point_2& z) const
+  {
+    Location loc;
+    if(!lt_.valid || lt_.faces.empty())
+      return loc;
+    const C z0(CGAL::to_double(z.x()), CGAL::to_double(z.y()));
+    if(!(norm(z0) < 1.0) || !std::isfinite(z0.re) || !std::isfinite(z0.im))
+      return loc;
+    // a corner's point, bitwise (before reduction: a vertex of B outside the tile is found too)
+    if(lt_.corner_hit(z0, Isometry(), loc))
+      return with_face(loc);
+    const typename Tile::Reduction r = lt_.tile.reduce_to_tile(Point_2(z0.re, z0.im));
+    const C q(CGAL::to_double(r.point.x()), CGAL::to_double(r.point.y()));
+    if(lt_.corner_hit(q, r.element, loc))
+      return with_face(loc);
+
+    const int start = lt_.grid.start_face(q);
+    Isometry h;
+    if(internal::walk_to(lt_, q, start, loc, h)) {
+      loc.element = h.inverse() * r.element;
+      return with_face(loc);
+    }
+    // safety net
+    const std::size_t steps = loc.steps;
+    loc = Location();
+    internal::search_lifted(lt_, q, start, loc, h);
+    loc.steps += steps;
+    loc.used_search = true;
+    loc.element = h.inverse() * r.element;
+    return with_face(loc);
+  }
+
+  /// locates `z` with the fallback search only (for testing it; much slower than `locate()`)
+  Location locate_by_search(const Point_2& z) const
+  {
+    Location loc;
+    if(!lt_.valid || lt_.faces.empty())
+      return loc;
+    const typename Tile::Reduction r = lt_.tile.reduce_to_tile(z);
+    const C q(CGAL::to_double(r.point.x()), CGAL::to_double(r.point.y()));
+    Isometry h;
+    internal::search_lifted(lt_, q, lt_.grid.start_face(q), loc, h);
+    loc.used_search = true;
+    loc.element = h.inverse() * r.element;
+    return with_face(loc);
+  }
+
+private:
+  void build(const TriangleMesh& tm, HalfedgeUVMap uv, const Tile& tile)
+  {
+    lt_.reset(tile, num_vertices(tm));
+    internal::Face_halfedges<TriangleMesh> fhs(tm);
+    if(internal::read_lifted_faces(tm, uv, lt_, fhs, faces_, vertices_) && internal::link_lifted_faces(tm, fhs, lt_))
+      lt_.place_start_points();
+  }
+
+  // the internal code fills the face's index only
+  Location& with_face(Location& loc) const
+  {
+    if(loc.face_index != npos)
+      loc.face = faces_[loc.face_index];
+    return loc;
+  }
+
+  internal::Lifted_triangulation lt_;
+  std::vector<face_descriptor> faces_;
+  std::vector<vertex_descriptor> vertices_;
+};
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EMBEDDING_LOCATOR_H

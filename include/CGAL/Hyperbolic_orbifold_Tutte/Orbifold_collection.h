@@ -1,0 +1,407 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_ORBIFOLD_COLLECTION_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_ORBIFOLD_COLLECTION_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+/// \file Orbifold_collection.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+
+a collection of meshes with corresponding landmarks (landmark `i` of every mesh is the
+same feature), embedded into one hyperbolic orbifold with one cone order, so that maps
+between any two of them are bijective, seamless, interpolate the landmarks and are
+cycle consistent (the paper's section 7).
+
+Landmarks may be given in a class-wide order: the collection orders them once (the
+paper's tour on the first mesh, for sphere-type meshes) and uses that order for all.
+Embeddings are computed by `embed()`, in parallel with `ConcurrencyTag = CGAL::Parallel_tag`
+when CGAL is linked with TBB (the results do not depend on the number of threads); maps
+are computed on demand and cached, or in parallel by `compute_maps()` and `compute_all_maps()`.
+An optional progress callback is told of every mesh embedded and every pair mapped.
+
+\tparam TriangleMesh a model of `FaceGraph` with triangular faces, copy constructible
+        (e.g. `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`); the embeddings are stored in
+        dynamic halfedge property maps (`CGAL::dynamic_halfedge_property_t`) of the
+        collection's copies of the meshes
+\tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+*/
+template <class TriangleMesh, class ConcurrencyTag = CGAL::Sequential_tag>
+class Orbifold_collection
+{
+public:
+  /// vertex of a mesh
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// halfedge of a mesh
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  /// the meshes' vertex point map
+  typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type Vertex_point_map;
+  /// the kernel of the meshes' points
+  typedef typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel Kernel;
+  /// a point of the Poincar&eacute; disk
+  typedef typename Kernel::Point_2 Point_2;
+  /// the per-corner Poincar&eacute; map of each mesh (a dynamic halfedge property map of the mesh)
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<Point_2> >::type UV_map;
+  /// the locator of each embedding
+  typedef Embedding_locator<TriangleMesh, UV_map> Locator;
+  /// a location on a mesh
+  typedef typename Locator::Location Location;
+
+  /// what the progress callback is told: a mesh embedded or a pair mapped
+  struct Progress
+  {
+    /// the step that just ended
+    enum Stage
+    {
+      Mesh_embedded, ///< mesh `source` was embedded (`code` tells how it went)
+      Pair_mapped    ///< the map from mesh `source` to mesh `target` was computed
+    };
+    Stage stage;         ///< the step
+    std::size_t done;    ///< the number of steps of this stage ended so far in this call (this one included)
+    std::size_t total;   ///< the number of steps of this stage in this call
+    std::size_t source;  ///< the mesh embedded, or the source of the map
+    std::size_t target;  ///< the target of the map (the mesh itself for `Mesh_embedded`)
+    double seconds;      ///< the step's wall-clock time
+    Error_code code;     ///< `OK`, or the embedding's error
+  };
+  /// the progress callback: called from one thread at a time (the collection serialises the calls)
+  typedef std::function<void(const Progress&)> Progress_callback;
+
+  /// adds a mesh (copied) with its landmarks in the class-wide order; returns its index
+  std::size_t add_mesh(const TriangleMesh& mesh, const std::vector<vertex_descriptor>& landmarks)
+  {
+    Item it;
+    it.mesh.reset(new TriangleMesh(mesh));
+    // the copy lists its vertices in the original's order: a landmark is the copy's vertex
+    // at the original's position
+    const internal::Dense_index<vertex_descriptor> index(vertices(mesh));
+    const std::vector<vertex_descriptor> copied(vertices(*it.mesh).begin(), vertices(*it.mesh).end());
+    for(vertex_descriptor v : landmarks) {
+      const std::size_t i = index(v);
+      it.landmarks.push_back(i < copied.size() ? copied[i] : v);
+    }
+    items_.push_back(std::move(it));
+    return items_.size() - 1;
+  }
+
+  /// the number of meshes
+  std::size_t number_of_meshes() const { return items_.size(); }
+  /// mesh `i` (the collection's copy, which holds the embedding's property map)
+  const TriangleMesh& mesh(std::size_t i) const { return *items_[i].mesh; }
+  /// the landmarks of mesh `i` (vertices of `mesh(i)`), in the class-wide order
+  const std::vector<vertex_descriptor>& landmarks(std::size_t i) const { return items_[i].landmarks; }
+  /// the embedding of mesh `i` (valid after `embed()` returned `OK`)
+  const UV_map& uv_map(std::size_t i) const { return items_[i].uv; }
+  /// the statistics and certificate of the embedding of mesh `i`, with its timings
+  const Embedding_statistics& statistics(std::size_t i) const { return items_[i].stats; }
+  /// the cone order used: landmark `order()[c]` of every mesh is at cone `c`
+  const std::vector<std::size_t>& order() const { return order_; }
+  /// the one-line reason of the last failure
+  const std::string& message() const { return message_; }
+  /// sets the progress callback (an empty function: none)
+  void set_progress_callback(const Progress_callback& callback) { progress_ = callback; }
+
+  /// embeds every mesh; returns `OK` or the first failure (see `message()`)
+  Error_code embed()
+  {
+    Orbifold_type type = Sphere_type;
+    Error_code ec = check_meshes(type);
+    if(ec != OK)
+      return ec;
+    type_ = type;
+    ec = compute_order();
+    if(ec != OK)
+      return ec;
+    ec = embed_all();
+    if(ec != OK)
+      return ec;
+    locators_.clear();
+    maps_.clear();
+    map_seconds_.clear();
+    embedded_ = true;
+    return OK;
+  }
+
+  /// the locator of mesh `i` (built on first use)
+  const Locator& locator(std::size_t i)
+  {
+    auto it = locators_.find(i);
+    if(it == locators_.end())
+      it = locators_.emplace(i, new_locator(i)).first;
+    return *it->second;
+  }
+
+  /// the map from mesh `a` to mesh `b`: one location on `b` per vertex of `a` (cached)
+  /// \pre `embed()` returned `OK`
+  const std::vector<Location>& map(std::size_t a, std::size_t b)
+  {
+    const std::pair<std::size_t, std::size_t> ab(a, b);
+    auto it = maps_.find(ab);
+    if(it == maps_.end()) {
+      const Locator& lb = locator(b);
+      const Clock::time_point t0 = Clock::now();
+      it = maps_.emplace(ab, map_vertices(*items_[a].mesh, items_[a].uv, lb)).first;
+      map_seconds_[ab] = seconds_since(t0);
+      Reporter report(progress_, 1);
+      report(Progress::Pair_mapped, a, b, map_seconds_[ab], OK);
+    }
+    return it->second;
+  }
+
+  /// the wall-clock seconds spent computing the map from mesh `a` to mesh `b` (0 if not computed)
+  double map_seconds(std::size_t a, std::size_t b) const
+  {
+    auto it = map_seconds_.find(std::make_pair(a, b));
+    return it == map_seconds_.end() ? 0.0 : it->second;
+  }
+
+  /// computes the maps of the given ordered pairs of distinct meshes (and the locators they
+  /// need), in parallel with `CGAL::Parallel_tag`; afterwards `map()` only reads its cache for
+  /// them. The maps are the same, bit for bit, whatever the number of threads.
+  /// \pre `embed()` returned `OK`
+  void compute_maps(const std::vector<std::pair<std::size_t, std::size_t> >& requested)
+  {
+    std::vector<std::pair<std::size_t, std::size_t> > pairs;
+    std::set<std::pair<std::size_t, std::size_t> > seen;
+    for(const auto& p : requested)
+      if(p.first != p.second && maps_.find(p) == maps_.end() && seen.insert(p).second)
+        pairs.push_back(p);
+    build_locators(pairs);
+    std::vector<std::vector<Location> > results(pairs.size());
+    std::vector<double> seconds(pairs.size(), 0);
+    Reporter report(progress_, pairs.size());
+    auto run = [&](std::size_t p) {
+      const Clock::time_point t0 = Clock::now();
+      results[p] = map_vertices(*items_[pairs[p].first].mesh, items_[pairs[p].first].uv,
+                                *locators_.find(pairs[p].second)->second);
+      seconds[p] = seconds_since(t0);
+      report(Progress::Pair_mapped, pairs[p].first, pairs[p].second, seconds[p], OK);
+    };
+    for_each_index(pairs.size(), run);
+    for(std::size_t p = 0; p < pairs.size(); ++p) {
+      maps_.emplace(pairs[p], std::move(results[p]));
+      map_seconds_[pairs[p]] = seconds[p];
+    }
+  }
+
+  /// computes the maps between all ordered pairs of distinct meshes (see `compute_maps()`)
+  /// \pre `embed()` returned `OK`
+  void compute_all_maps()
+  {
+    const std::size_t N = items_.size();
+    std::vector<std::pair<std::size_t, std::size_t> > pairs;
+    for(std::size_t a = 0; a < N; ++a)
+      for(std::size_t b = 0; b < N; ++b)
+        if(a != b)
+          pairs.emplace_back(a, b);
+    compute_maps(pairs);
+  }
+
+  /// the largest distance, over the vertices `x` of `a`, between `f_bc(f_ab(x))` and `f_ac(x)` on
+  /// mesh `c`, relative to `c`'s bounding-box diagonal (0 up to rounding: the maps are cycle
+  /// consistent); infinite if a point could not be located
+  double cycle_consistency_error(std::size_t a, std::size_t b, std::size_t c)
+  {
+    const std::vector<Location>& fab = map(a, b);
+    const std::vector<Location>& fac = map(a, c);
+    const Locator& lb = locator(b);
+    const Locator& lc = locator(c);
+    const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(*items_[c].mesh);
+    const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) +
+                                  CGAL::square(bb.zmax() - bb.zmin()));
+    double worst = 0;
+    for(std::size_t v = 0; v < fab.size(); ++v) {
+      if(!fab[v].success || !fac[v].success) return std::numeric_limits<double>::infinity();
+      const Location l = lc.locate(lb.disk_point(fab[v]));
+      if(!l.success) return std::numeric_limits<double>::infinity();
+      const auto p = surface_point(l, lc, get(CGAL::vertex_point, *items_[c].mesh));
+      const auto q = surface_point(fac[v], lc, get(CGAL::vertex_point, *items_[c].mesh));
+      worst = std::max(worst, std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))) / diag);
+    }
+    return worst;
+  }
+
+private:
+  typedef std::chrono::steady_clock Clock;
+
+  struct Item
+  {
+    std::unique_ptr<TriangleMesh> mesh;
+    std::vector<vertex_descriptor> landmarks;
+    UV_map uv; // destroyed before the mesh that holds it
+    Embedding_statistics stats;
+  };
+
+  // calls the progress callback, one thread at a time, counting the steps
+  class Reporter
+  {
+  public:
+    Reporter(const Progress_callback& callback, std::size_t total) : callback_(callback), total_(total) {}
+    void operator()(typename Progress::Stage stage, std::size_t source, std::size_t target, double seconds, Error_code code)
+    {
+      if(!callback_)
+        return;
+      std::lock_guard<std::mutex> lock(mutex_);
+      callback_(Progress{stage, ++done_, total_, source, target, seconds, code});
+    }
+
+  private:
+    const Progress_callback& callback_;
+    std::size_t total_, done_ = 0;
+    std::mutex mutex_;
+  };
+
+  static double seconds_since(const Clock::time_point& t0)
+  {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+
+  // f(i) for i in [0, n), in parallel with Parallel_tag and TBB
+  template <class F>
+  static void for_each_index(std::size_t n, const F& f)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value) {
+      tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { f(i); });
+      return;
+    }
+#endif
+    for(std::size_t i = 0; i < n; ++i)
+      f(i);
+  }
+
+  std::unique_ptr<Locator> new_locator(std::size_t i) const
+  {
+    return std::unique_ptr<Locator>(new Locator(*items_[i].mesh, items_[i].uv, type_, static_cast<int>(order_.size())));
+  }
+
+  // the locators of the pairs' targets that are not built yet, in parallel
+  void build_locators(const std::vector<std::pair<std::size_t, std::size_t> >& pairs)
+  {
+    std::vector<std::size_t> targets;
+    std::vector<char> wanted(items_.size(), 0);
+    for(const auto& p : pairs)
+      if(!wanted[p.second] && locators_.find(p.second) == locators_.end()) {
+        wanted[p.second] = 1;
+        targets.push_back(p.second);
+      }
+    std::vector<std::unique_ptr<Locator> > built(targets.size());
+    for_each_index(targets.size(), [&](std::size_t t) { built[t] = new_locator(targets[t]); });
+    for(std::size_t t = 0; t < targets.size(); ++t)
+      locators_.emplace(targets[t], std::move(built[t]));
+  }
+
+  // every mesh has the first one's topology and number of landmarks
+  Error_code check_meshes(Orbifold_type& type)
+  {
+    const std::size_t N = items_.size();
+    if(N == 0) { message_ = "the collection is empty"; return ERROR_WRONG_PARAMETER; }
+    const std::size_t k = items_[0].landmarks.size();
+    if(!internal::detect_orbifold_type(*items_[0].mesh, type)) { message_ = "mesh 0 is neither closed nor a disk"; return ERROR_WRONG_TOPOLOGY; }
+    for(std::size_t i = 0; i < N; ++i) {
+      Orbifold_type t;
+      if(items_[i].landmarks.size() != k || !internal::detect_orbifold_type(*items_[i].mesh, t) || t != type) {
+        message_ = "mesh " + std::to_string(i) + " differs from mesh 0 in topology or number of landmarks";
+        return ERROR_WRONG_PARAMETER;
+      }
+    }
+    return OK;
+  }
+
+  // the cone order: the paper's tour on mesh 0 (sphere type), the given order (disk type)
+  Error_code compute_order()
+  {
+    const std::size_t k = items_[0].landmarks.size();
+    order_.resize(k);
+    for(std::size_t c = 0; c < k; ++c) order_[c] = c;
+    if(type_ == Sphere_type) {
+      const internal::Check_result r = internal::check_landmark_vertices(*items_[0].mesh, items_[0].landmarks, type_);
+      if(!r) { message_ = "mesh 0: " + r.message; return r.code; }
+      order_ = internal::compute_tsp_landmark_order(*items_[0].mesh, items_[0].landmarks, get(CGAL::vertex_point, *items_[0].mesh));
+      if(order_.size() != k) { message_ = "the landmark tour could not be computed on mesh 0"; return ERROR_CUT_FAILED; }
+    }
+    return OK;
+  }
+
+  // the embeddings, in parallel with Parallel_tag; the first failure in mesh order
+  Error_code embed_all()
+  {
+    const std::size_t N = items_.size();
+    std::vector<Error_code> codes(N, OK);
+    Reporter report(progress_, N);
+    auto run = [&](std::size_t i) {
+      Item& it = items_[i];
+      std::vector<vertex_descriptor> ordered;
+      for(std::size_t c : order_) ordered.push_back(it.landmarks[c]);
+      it.uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), *it.mesh);
+      for(halfedge_descriptor h : halfedges(*it.mesh)) // every key present: reads never insert
+        put(it.uv, h, Point_2(0, 0));
+      const Clock::time_point t0 = Clock::now();
+      codes[i] = hyperbolic_orbifold_Tutte_embedding(*it.mesh, ordered, it.uv,
+                                                     parameters::orbifold_type(type_, parameters::embedding_statistics(&it.stats)));
+      report(Progress::Mesh_embedded, i, i, seconds_since(t0), codes[i]);
+    };
+    for_each_index(N, run);
+    for(std::size_t i = 0; i < N; ++i)
+      if(codes[i] != OK) { message_ = "mesh " + std::to_string(i) + ": " + items_[i].stats.message; return codes[i]; }
+    for(std::size_t i = 1; i < N; ++i)
+      if(items_[i].stats.landmark_order_reversed != items_[0].stats.landmark_order_reversed) {
+        message_ = "mesh " + std::to_string(i) + ": its landmarks run around the boundary the other way than mesh 0's";
+        return ERROR_WRONG_PARAMETER;
+      }
+    return OK;
+  }
+
+  std::vector<Item> items_;
+  std::vector<std::size_t> order_;
+  Orbifold_type type_ = Sphere_type;
+  bool embedded_ = false;
+  std::string message_;
+  Progress_callback progress_;
+  std::map<std::size_t, std::unique_ptr<Locator> > locators_;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<Location> > maps_;
+  std::map<std::pair<std::size_t, std::size_t>, double> map_seconds_;
+};
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_ORBIFOLD_COLLECTION_H
