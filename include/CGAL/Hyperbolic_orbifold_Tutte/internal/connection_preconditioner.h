@@ -154,19 +154,7 @@ public:
     }
     if(has_seams_ && !interior_ && !shares_ && !gauge_factored_) {
       gauge_factored_ = true;
-      // the real Laplacian (no rotations) for the gauge
-      Eigen::SparseMatrix<double> L = A.real();
-      for(std::size_t e = 0; e < P_.edges.size(); ++e) {
-        const int a = P_.edges[e][0], b = P_.edges[e][1];
-        const int na = node_of(a), nb = node_of(b);
-        if(na >= 0 && na == nb) L.coeffRef(na, na) -= P_.edge_weight[e] * std::norm(rotation(a, x) - rotation(b, x));
-        else if(na >= 0 && nb >= 0) L.coeffRef(na, nb) = L.coeffRef(nb, na) = 0.0;
-      }
-      for(std::size_t e = 0; e < P_.edges.size(); ++e) {
-        const int na = node_of(P_.edges[e][0]), nb = node_of(P_.edges[e][1]);
-        if(na >= 0 && nb >= 0 && na != nb) { L.coeffRef(na, nb) -= P_.edge_weight[e]; L.coeffRef(nb, na) -= P_.edge_weight[e]; }
-      }
-      gauge_solver_.compute(L);
+      factor_gauge_laplacian(A, x);
     }
     solver_.factorize(A);
     rho0_.assign(P_.n, Cd(1.0, 0.0));
@@ -205,63 +193,7 @@ public:
         scale_[i] = Cd(lambda * j.dz[0].re, lambda * j.dz[0].im);
       }
     }
-    // gauge: the seam rotations have turned by delta since the factorisation; spread the
-    // turn smoothly over the mesh, so that psi jumps by delta across the seam
-    gauge_.assign(n_nodes_, Cd(1.0, 0.0));
-    if(!has_seams_) return;
-    std::vector<double> delta(P_.n, 0.0);
-    bool any = false;
-    for(int v = 0; v < P_.n; ++v)
-      if(P_.kind[v] == Transformed) {
-        delta[v] = std::arg(rotation(v, x) / rho0_[v]);
-        any = any || delta[v] != 0;
-      }
-    if(!any) return;
-    if(interior_ || shares_) {
-      // harmonic in the interior, +delta/2 on a seam vertex's side, -delta/2 on its twin's
-      // side (the interior Laplacian with the border fixed: the leading block of this
-      // factorisation, or the initialisation's)
-      auto border_value = [&](int v) {
-        if(P_.kind[v] == Transformed) return -delta[v] / 2;
-        if(P_.kind[v] == Free && copy_[v] >= 0) return delta[copy_[v]] / 2;
-        return 0.0;
-      };
-      auto index = [&](int v) { return shares_ ? interior_index(v) : interior_->index[v]; };
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(shares_ ? n_interior_ : interior_->size);
-      for(std::size_t e = 0; e < P_.edges.size(); ++e) {
-        const int a = P_.edges[e][0], b = P_.edges[e][1];
-        const int ia = index(a), ib = index(b);
-        if(ia >= 0 && ib < 0) rhs[ia] += P_.edge_weight[e] * border_value(b);
-        else if(ib >= 0 && ia < 0) rhs[ib] += P_.edge_weight[e] * border_value(a);
-      }
-      Eigen::VectorXd psi;
-      if(shares_) {
-        Eigen::VectorXcd c;
-        if(!solve_interior(rhs.cast<Cd>(), c))
-          return; // (cannot happen once factored; no gauge is a valid, weaker, preconditioner)
-        psi = c.real();
-      } else {
-        psi = interior_->solver.solve(rhs);
-      }
-      for(int i = 0; i < n_nodes_; ++i) {
-        const int v = owner_[i], ii = index(v);
-        gauge_[i] = std::polar(1.0, ii >= 0 ? psi[ii] : border_value(v));
-      }
-      return;
-    }
-    // least squares over the edges: L psi = div delta
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_nodes_);
-    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
-      const int a = P_.edges[e][0], b = P_.edges[e][1];
-      const int na = node_of(a), nb = node_of(b);
-      if(na < 0 || nb < 0 || na == nb) continue;
-      const double D = P_.edge_weight[e] * (delta[b] - delta[a]);
-      rhs[nb] += D;
-      rhs[na] -= D;
-    }
-    const Eigen::VectorXd psi = gauge_solver_.solve(rhs);
-    for(int i = 0; i < n_nodes_; ++i)
-      gauge_[i] = std::polar(1.0, psi[i]);
+    set_gauge(x);
   }
 
   // z = S^-1 A^-1 S^-T r
@@ -293,6 +225,93 @@ public:
   }
 
 private:
+  // gauge: the seam rotations have turned by delta since the factorisation; spread the
+  // turn smoothly over the mesh, so that psi jumps by delta across the seam
+  void set_gauge(const std::vector<double>& x)
+  {
+    gauge_.assign(n_nodes_, Cd(1.0, 0.0));
+    if(!has_seams_) return;
+    std::vector<double> delta(P_.n, 0.0);
+    bool any = false;
+    for(int v = 0; v < P_.n; ++v)
+      if(P_.kind[v] == Transformed) {
+        delta[v] = std::arg(rotation(v, x) / rho0_[v]);
+        any = any || delta[v] != 0;
+      }
+    if(!any) return;
+    if(interior_ || shares_)
+      harmonic_gauge(delta);
+    else
+      least_squares_gauge(delta);
+  }
+
+  // harmonic in the interior, +delta/2 on a seam vertex's side, -delta/2 on its twin's
+  // side (the interior Laplacian with the border fixed: the leading block of this
+  // factorisation, or the initialisation's)
+  void harmonic_gauge(const std::vector<double>& delta)
+  {
+    auto border_value = [&](int v) {
+      if(P_.kind[v] == Transformed) return -delta[v] / 2;
+      if(P_.kind[v] == Free && copy_[v] >= 0) return delta[copy_[v]] / 2;
+      return 0.0;
+    };
+    auto index = [&](int v) { return shares_ ? interior_index(v) : interior_->index[v]; };
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(shares_ ? n_interior_ : interior_->size);
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int a = P_.edges[e][0], b = P_.edges[e][1];
+      const int ia = index(a), ib = index(b);
+      if(ia >= 0 && ib < 0) rhs[ia] += P_.edge_weight[e] * border_value(b);
+      else if(ib >= 0 && ia < 0) rhs[ib] += P_.edge_weight[e] * border_value(a);
+    }
+    Eigen::VectorXd psi;
+    if(shares_) {
+      Eigen::VectorXcd c;
+      if(!solve_interior(rhs.cast<Cd>(), c))
+        return; // (cannot happen once factored; no gauge is a valid, weaker, preconditioner)
+      psi = c.real();
+    } else {
+      psi = interior_->solver.solve(rhs);
+    }
+    for(int i = 0; i < n_nodes_; ++i) {
+      const int v = owner_[i], ii = index(v);
+      gauge_[i] = std::polar(1.0, ii >= 0 ? psi[ii] : border_value(v));
+    }
+  }
+
+  // least squares over the edges: L psi = div delta
+  void least_squares_gauge(const std::vector<double>& delta)
+  {
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_nodes_);
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int a = P_.edges[e][0], b = P_.edges[e][1];
+      const int na = node_of(a), nb = node_of(b);
+      if(na < 0 || nb < 0 || na == nb) continue;
+      const double D = P_.edge_weight[e] * (delta[b] - delta[a]);
+      rhs[nb] += D;
+      rhs[na] -= D;
+    }
+    const Eigen::VectorXd psi = gauge_solver_.solve(rhs);
+    for(int i = 0; i < n_nodes_; ++i)
+      gauge_[i] = std::polar(1.0, psi[i]);
+  }
+
+  // the real Laplacian (no rotations) for the gauge, from A
+  void factor_gauge_laplacian(const CMat& A, const std::vector<double>& x)
+  {
+    Eigen::SparseMatrix<double> L = A.real();
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int a = P_.edges[e][0], b = P_.edges[e][1];
+      const int na = node_of(a), nb = node_of(b);
+      if(na >= 0 && na == nb) L.coeffRef(na, na) -= P_.edge_weight[e] * std::norm(rotation(a, x) - rotation(b, x));
+      else if(na >= 0 && nb >= 0) L.coeffRef(na, nb) = L.coeffRef(nb, na) = 0.0;
+    }
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const int na = node_of(P_.edges[e][0]), nb = node_of(P_.edges[e][1]);
+      if(na >= 0 && nb >= 0 && na != nb) { L.coeffRef(na, nb) -= P_.edge_weight[e]; L.coeffRef(nb, na) -= P_.edge_weight[e]; }
+    }
+    gauge_solver_.compute(L);
+  }
+
   int node_of(int v) const { return P_.kind[v] == Transformed ? node_[P_.twin[v]] : node_[v]; }
 
   // how a tangent vector of the owner turns on its way to this copy

@@ -90,49 +90,14 @@ public:
     edge_energy_.resize(m);
     edge_gradient_.resize(4 * m);
     // each edge's terms independently (in parallel where TBB is available)...
-    if(!H) {
+    if(!H)
       for_each_edge([&](std::size_t e) { edge_terms(x, e, false, project); });
-    } else {
-      if(H->nonZeros() != pattern_nnz_ || H->rows() != P_.n_vars || H->cols() != P_.n_vars) {
-        if(pattern_given_) // rare (tests): build the pattern again
-          build_pattern();
-        // (swapped, not assigned: Eigen 3.4's SparseMatrix has no move assignment, so
-        // `*H = std::move(pattern_)` would copy it and keep both: 336 MB at a million vertices)
-        H->swap(pattern_);
-        Eigen::SparseMatrix<double>().swap(pattern_); // H's former storage freed
-        pattern_given_ = true;
-      }
-      double* hv = H->valuePtr();
-      std::fill(hv, hv + H->nonZeros(), 0.0);
-      // the Hessian blocks a chunk of edges at a time (a small buffer, not 16 doubles per
-      // edge: 0.4 GB at a million vertices), added in edge order: bit for bit the same
-      const std::size_t chunk = 65536;
-      for(std::size_t c = 0; c < m; c += chunk) {
-        const std::size_t c_end = (std::min)(m, c + chunk);
-        hessian_offset_ = static_cast<std::size_t>(slot_begin_[c]);
-        edge_hessian_.resize(static_cast<std::size_t>(slot_begin_[c_end]) - hessian_offset_);
-        for_each_edge(c, c_end, [&](std::size_t e) { edge_terms(x, e, true, project); });
-        for(std::size_t k = hessian_offset_; k < static_cast<std::size_t>(slot_begin_[c_end]); ++k)
-          hv[slots_[k]] += edge_hessian_[k - hessian_offset_];
-      }
-      hessian_offset_ = 0;
-    }
+    else
+      assemble_hessian(x, *H, project);
     terms_x_ = x;
     noise_.clear();
     // ...then summed in edge order: the same result bit for bit whatever the number of threads
-    g.assign(P_.n_vars, 0.0);
-    g_abs_.assign(P_.n_vars, 0.0);
-    double E = 0;
-    int gi[4];
-    for(std::size_t e = 0; e < m; ++e) {
-      E += edge_energy_[e];
-      const int n = local_variables(e, gi);
-      for(int i = 0; i < n; ++i) {
-        g[gi[i]] += edge_gradient_[4 * e + i];
-        g_abs_[gi[i]] += std::abs(edge_gradient_[4 * e + i]);
-      }
-    }
-    return E;
+    return sum_edge_terms(g);
   }
 
   // hyperbolic (Riemannian) norm of the gradient: per vertex |grad| (1 - |z|^2) / 2,
@@ -232,6 +197,54 @@ private:
   }
 
 private:
+  // every edge's terms with its Hessian block, the blocks added into H (given the pattern
+  // first where it has not got it)
+  void assemble_hessian(const std::vector<double>& x, Eigen::SparseMatrix<double>& H, bool project) const
+  {
+    const std::size_t m = P_.edges.size();
+    if(H.nonZeros() != pattern_nnz_ || H.rows() != P_.n_vars || H.cols() != P_.n_vars) {
+      if(pattern_given_) // rare (tests): build the pattern again
+        build_pattern();
+      // (swapped, not assigned: Eigen 3.4's SparseMatrix has no move assignment, so
+      // `H = std::move(pattern_)` would copy it and keep both: 336 MB at a million vertices)
+      H.swap(pattern_);
+      Eigen::SparseMatrix<double>().swap(pattern_); // H's former storage freed
+      pattern_given_ = true;
+    }
+    double* hv = H.valuePtr();
+    std::fill(hv, hv + H.nonZeros(), 0.0);
+    // the Hessian blocks a chunk of edges at a time (a small buffer, not 16 doubles per
+    // edge: 0.4 GB at a million vertices), added in edge order: bit for bit the same
+    const std::size_t chunk = 65536;
+    for(std::size_t c = 0; c < m; c += chunk) {
+      const std::size_t c_end = (std::min)(m, c + chunk);
+      hessian_offset_ = static_cast<std::size_t>(slot_begin_[c]);
+      edge_hessian_.resize(static_cast<std::size_t>(slot_begin_[c_end]) - hessian_offset_);
+      for_each_edge(c, c_end, [&](std::size_t e) { edge_terms(x, e, true, project); });
+      for(std::size_t k = hessian_offset_; k < static_cast<std::size_t>(slot_begin_[c_end]); ++k)
+        hv[slots_[k]] += edge_hessian_[k - hessian_offset_];
+    }
+    hessian_offset_ = 0;
+  }
+
+  // the energy, and the gradient g (and the forces' sizes g_abs_): the edges' terms in edge order
+  double sum_edge_terms(std::vector<double>& g) const
+  {
+    g.assign(P_.n_vars, 0.0);
+    g_abs_.assign(P_.n_vars, 0.0);
+    double E = 0;
+    int gi[4];
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      E += edge_energy_[e];
+      const int n = local_variables(e, gi);
+      for(int i = 0; i < n; ++i) {
+        g[gi[i]] += edge_gradient_[4 * e + i];
+        g_abs_[gi[i]] += std::abs(edge_gradient_[4 * e + i]);
+      }
+    }
+    return E;
+  }
+
   template <class F>
   void for_each_edge(const F& f) const
   {
@@ -320,85 +333,134 @@ private:
     return n;
   }
 
+  // The owners of variables as groups of consecutive variables, numbered in vertex order,
+  // and per group its neighbouring groups (itself included), sorted by first variable.
+  struct Variable_groups
+  {
+    std::vector<int> group_of;   // group of each variable
+    std::vector<int> start, dim; // first variable and number of variables of each group
+    std::vector<int> first, nb;  // neighbours of group g: nb[first[g]], ..., nb[first[g + 1] - 1]
+    std::vector<int> row_offset; // per neighbour: its first row in the column
+    std::vector<int> rows;       // rows per column of each group (rows[g + 1]: group g's)
+
+    // first row of group h in the columns of group g
+    int offset_in_column(int g, int h) const
+    {
+      const auto it = std::lower_bound(nb.begin() + first[g], nb.begin() + first[g + 1], h,
+                                       [&](int p, int q) { return start[p] < start[q]; });
+      return row_offset[it - nb.begin()];
+    }
+  };
+
   // Every edge's block is dense over the variables of its two ends' owners, so the pattern
   // is built per owner: an owner's columns hold the rows of its neighbouring owners
   // (itself included: the diagonal), in variable order; no triplets, no sorting of entries.
   void build_pattern() const
   {
-    const int nv = P_.n_vars;
-    const std::size_t m = P_.edges.size();
-    // owners as groups of consecutive variables: group of each variable, its start and size
-    std::vector<int> group_of(nv, -1), gstart, gdim;
+    Variable_groups G;
+    group_variables(G);
+    find_neighbour_groups(G);
+    sort_neighbour_groups(G);
+    std::vector<int> outer;
+    build_columns(G, outer);
+    build_slots(G, outer);
+  }
+
+  // owners as groups of consecutive variables: group of each variable, its start and size
+  void group_variables(Variable_groups& G) const
+  {
+    G.group_of.assign(P_.n_vars, -1);
     for(int v = 0; v < P_.n; ++v)
       if(P_.kind[v] == Free || P_.kind[v] == On_line) {
         const int d = P_.kind[v] == Free ? 2 : 1;
         for(int i = 0; i < d; ++i)
-          group_of[P_.var[v] + i] = static_cast<int>(gstart.size());
-        gstart.push_back(P_.var[v]);
-        gdim.push_back(d);
+          G.group_of[P_.var[v] + i] = static_cast<int>(G.start.size());
+        G.start.push_back(P_.var[v]);
+        G.dim.push_back(d);
       }
-    const int ng = static_cast<int>(gstart.size());
+  }
+
+  // neighbouring groups (compressed rows, itself first, unsorted, with duplicates)
+  void find_neighbour_groups(Variable_groups& G) const
+  {
+    const std::size_t m = P_.edges.size();
+    const int ng = static_cast<int>(G.start.size());
     auto group_of_end = [&](std::size_t e, int s) {
       const int v = P_.edges[e][s];
-      return P_.kind[v] == Fixed ? -1 : group_of[variable_owner(P_, v)];
+      return P_.kind[v] == Fixed ? -1 : G.group_of[variable_owner(P_, v)];
     };
-    // neighbouring groups (compressed rows, sorted by first variable, duplicates removed)
-    std::vector<int> first(ng + 1, 0);
+    std::vector<int>& first = G.first;
+    first.assign(ng + 1, 0);
     for(std::size_t e = 0; e < m; ++e) {
       const int ga = group_of_end(e, 0), gb = group_of_end(e, 1);
       if(ga >= 0 && gb >= 0 && ga != gb) { ++first[ga + 1]; ++first[gb + 1]; }
     }
     for(int g = 0; g < ng; ++g)
       first[g + 1] += first[g] + 1; // + itself
-    std::vector<int> nb(first[ng]);
-    {
-      std::vector<int> fill(first.begin(), first.end() - 1);
-      for(int g = 0; g < ng; ++g)
-        nb[fill[g]++] = g;
-      for(std::size_t e = 0; e < m; ++e) {
-        const int ga = group_of_end(e, 0), gb = group_of_end(e, 1);
-        if(ga >= 0 && gb >= 0 && ga != gb) { nb[fill[ga]++] = gb; nb[fill[gb]++] = ga; }
-      }
+    G.nb.resize(first[ng]);
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for(int g = 0; g < ng; ++g)
+      G.nb[fill[g]++] = g;
+    for(std::size_t e = 0; e < m; ++e) {
+      const int ga = group_of_end(e, 0), gb = group_of_end(e, 1);
+      if(ga >= 0 && gb >= 0 && ga != gb) { G.nb[fill[ga]++] = gb; G.nb[fill[gb]++] = ga; }
     }
-    // (groups are numbered in vertex order, their variables need not be: sort by variable)
-    std::vector<int> row_first(ng + 1, 0), row_offset(nb.size()); // per neighbour: its first row in the column
-    {
-      std::size_t w = 0;
-      for(int g = 0; g < ng; ++g) {
-        const std::size_t b = w;
-        std::sort(nb.begin() + first[g], nb.begin() + first[g + 1], [&](int p, int q) { return gstart[p] < gstart[q]; });
-        for(int k = first[g]; k < first[g + 1]; ++k)
-          if(w == b || nb[w - 1] != nb[k]) nb[w++] = nb[k];
-        first[g] = static_cast<int>(b);
-        int off = 0;
-        for(std::size_t k = b; k < w; ++k) {
-          row_offset[k] = off;
-          off += gdim[nb[k]];
-        }
-        row_first[g + 1] = off; // rows per column of this group
+  }
+
+  // (groups are numbered in vertex order, their variables need not be: sort by variable,
+  // remove the duplicates, and place each neighbour's rows in the column)
+  void sort_neighbour_groups(Variable_groups& G) const
+  {
+    const int ng = static_cast<int>(G.start.size());
+    std::vector<int>& first = G.first;
+    std::vector<int>& nb = G.nb;
+    G.rows.assign(ng + 1, 0);
+    G.row_offset.resize(nb.size());
+    std::size_t w = 0;
+    for(int g = 0; g < ng; ++g) {
+      const std::size_t b = w;
+      std::sort(nb.begin() + first[g], nb.begin() + first[g + 1], [&](int p, int q) { return G.start[p] < G.start[q]; });
+      for(int k = first[g]; k < first[g + 1]; ++k)
+        if(w == b || nb[w - 1] != nb[k]) nb[w++] = nb[k];
+      first[g] = static_cast<int>(b);
+      int off = 0;
+      for(std::size_t k = b; k < w; ++k) {
+        G.row_offset[k] = off;
+        off += G.dim[nb[k]];
       }
-      first[ng] = static_cast<int>(w);
-      nb.resize(w);
-      row_offset.resize(w);
+      G.rows[g + 1] = off; // rows per column of this group
     }
-    // compressed columns
+    first[ng] = static_cast<int>(w);
+    nb.resize(w);
+    G.row_offset.resize(w);
+  }
+
+  // the pattern's compressed columns (`outer`: each column's first entry)
+  void build_columns(const Variable_groups& G, std::vector<int>& outer) const
+  {
+    const int nv = P_.n_vars;
     pattern_.resize(nv, nv);
-    std::vector<int> outer(nv + 1, 0);
+    outer.assign(nv + 1, 0);
     for(int c = 0; c < nv; ++c)
-      outer[c + 1] = outer[c] + row_first[group_of[c] + 1];
+      outer[c + 1] = outer[c] + G.rows[G.group_of[c] + 1];
     pattern_.resizeNonZeros(outer[nv]);
     std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
     int* inner = pattern_.innerIndexPtr();
     for(int c = 0; c < nv; ++c) {
-      const int g = group_of[c];
+      const int g = G.group_of[c];
       int k = outer[c];
-      for(int q = first[g]; q < first[g + 1]; ++q)
-        for(int i = 0; i < gdim[nb[q]]; ++i)
-          inner[k++] = gstart[nb[q]] + i;
+      for(int q = G.first[g]; q < G.first[g + 1]; ++q)
+        for(int i = 0; i < G.dim[G.nb[q]]; ++i)
+          inner[k++] = G.start[G.nb[q]] + i;
     }
     std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
     pattern_nnz_ = pattern_.nonZeros();
-    // per edge, the position of each entry of its block
+  }
+
+  // per edge, the position of each entry of its block
+  void build_slots(const Variable_groups& G, const std::vector<int>& outer) const
+  {
+    const std::size_t m = P_.edges.size();
     slot_begin_.assign(m + 1, 0);
     int gi[4];
     for(std::size_t e = 0; e < m; ++e) {
@@ -406,23 +468,18 @@ private:
       slot_begin_[e + 1] = slot_begin_[e] + n * n;
     }
     slots_.resize(slot_begin_.back());
-    auto offset_in_column = [&](int g, int h) { // first row of group h in the columns of group g
-      const auto it = std::lower_bound(nb.begin() + first[g], nb.begin() + first[g + 1], h,
-                                       [&](int p, int q) { return gstart[p] < gstart[q]; });
-      return row_offset[it - nb.begin()];
-    };
     for(std::size_t e = 0; e < m; ++e) {
       const int n = local_variables(e, gi);
       if(n == 0)
         continue;
-      const int g0 = group_of[gi[0]], g1 = group_of[gi[n - 1]];
-      const int off[2][2] = {{offset_in_column(g0, g0), offset_in_column(g0, g1)},
-                             {offset_in_column(g1, g0), offset_in_column(g1, g1)}};
+      const int g0 = G.group_of[gi[0]], g1 = G.group_of[gi[n - 1]];
+      const int off[2][2] = {{G.offset_in_column(g0, g0), G.offset_in_column(g0, g1)},
+                             {G.offset_in_column(g1, g0), G.offset_in_column(g1, g1)}};
       for(int j = 0; j < n; ++j) {
-        const int col = gi[j], gc = group_of[col];
+        const int col = gi[j], gc = G.group_of[col];
         for(int i = 0; i < n; ++i) {
-          const int gr = group_of[gi[i]];
-          slots_[slot_begin_[e] + i * n + j] = outer[col] + off[gc == g1][gr == g1] + (gi[i] - gstart[gr]);
+          const int gr = G.group_of[gi[i]];
+          slots_[slot_begin_[e] + i * n + j] = outer[col] + off[gc == g1][gr == g1] + (gi[i] - G.start[gr]);
         }
       }
     }

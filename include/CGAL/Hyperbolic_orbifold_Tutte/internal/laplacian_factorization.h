@@ -78,51 +78,7 @@ public:
         cholmod_.analyzePattern(A);
         return true;
       }
-      // the fills of both orders, from the orderings alone (AMD's and CAMD's counts, the two
-      // at once where TBB is available: each with its own CHOLMOD workspace); then one
-      // symbolic analysis, in the order chosen
-      cholmod_common& c = cholmod_.cholmod();
-      c.nmethods = 1; // (where an order is not given: AMD alone)
-      c.method[0].ordering = CHOLMOD_AMD;
-      std::vector<int> amd_perm(A.rows()), camd_perm(A.rows()), member(A.rows());
-      for(Eigen::Index i = 0; i < A.rows(); ++i) // constrained minimum degree: the leading rows first
-        member[i] = i < lead_ ? 0 : 1;
-      cholmod_common c_amd;
-      cholmod_start(&c_amd);
-      bool amd_ok = false, camd_ok = false;
-      auto free_order = [&]() { amd_ok = cholmod_.order_free(A, amd_perm.data(), c_amd); };
-      auto constrained_order = [&]() { camd_ok = cholmod_.order_constrained(A, member.data(), camd_perm.data()); };
-#ifdef CGAL_LINKED_WITH_TBB
-      tbb::parallel_invoke(free_order, constrained_order);
-#else
-      free_order();
-      constrained_order();
-#endif
-      const double amd_fill = c_amd.lnz, camd_fill = c.lnz;
-      cholmod_finish(&c_amd);
-      if(!amd_ok) {
-        cholmod_.analyzePattern(A);
-        lead_ = -1;
-        return false;
-      }
-      bool ordered = camd_ok && camd_fill <= max_fill_ * amd_fill;
-      c.postorder = 1; // keeps the order's fill, groups supernodes
-      if(ordered) {
-        ordered = cholmod_.analyze_given(A, camd_perm.data());
-        if(ordered && !leading_block_kept()) {
-          c.postorder = 0; // the order exactly as found
-          ordered = cholmod_.analyze_given(A, camd_perm.data());
-          c.postorder = 1;
-        }
-        ordered = ordered && leading_block_kept();
-      }
-      if(!ordered) {
-        if(!cholmod_.analyze_given(A, amd_perm.data()))
-          cholmod_.analyzePattern(A);
-        lead_ = -1;
-        return false;
-      }
-      return true;
+      return analyze_keeping_leading_block(A);
     }
 #endif
     const bool wanted = lead_ >= 0;
@@ -331,6 +287,55 @@ private:
       this->m_factorizationIsOk = false;
     }
   };
+  // CHOLMOD, the leading block to keep: see analyze()
+  bool analyze_keeping_leading_block(const Matrix& A)
+  {
+    // the fills of both orders, from the orderings alone (AMD's and CAMD's counts, the two
+    // at once where TBB is available: each with its own CHOLMOD workspace); then one
+    // symbolic analysis, in the order chosen
+    cholmod_common& c = cholmod_.cholmod();
+    c.nmethods = 1; // (where an order is not given: AMD alone)
+    c.method[0].ordering = CHOLMOD_AMD;
+    std::vector<int> amd_perm(A.rows()), camd_perm(A.rows()), member(A.rows());
+    for(Eigen::Index i = 0; i < A.rows(); ++i) // constrained minimum degree: the leading rows first
+      member[i] = i < lead_ ? 0 : 1;
+    cholmod_common c_amd;
+    cholmod_start(&c_amd);
+    bool amd_ok = false, camd_ok = false;
+    auto free_order = [&]() { amd_ok = cholmod_.order_free(A, amd_perm.data(), c_amd); };
+    auto constrained_order = [&]() { camd_ok = cholmod_.order_constrained(A, member.data(), camd_perm.data()); };
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_invoke(free_order, constrained_order);
+#else
+    free_order();
+    constrained_order();
+#endif
+    const double amd_fill = c_amd.lnz, camd_fill = c.lnz;
+    cholmod_finish(&c_amd);
+    if(!amd_ok) {
+      cholmod_.analyzePattern(A);
+      lead_ = -1;
+      return false;
+    }
+    bool ordered = camd_ok && camd_fill <= max_fill_ * amd_fill;
+    c.postorder = 1; // keeps the order's fill, groups supernodes
+    if(ordered) {
+      ordered = cholmod_.analyze_given(A, camd_perm.data());
+      if(ordered && !leading_block_kept()) {
+        c.postorder = 0; // the order exactly as found
+        ordered = cholmod_.analyze_given(A, camd_perm.data());
+        c.postorder = 1;
+      }
+      ordered = ordered && leading_block_kept();
+    }
+    if(!ordered) {
+      if(!cholmod_.analyze_given(A, amd_perm.data()))
+        cholmod_.analyzePattern(A);
+      lead_ = -1;
+      return false;
+    }
+    return true;
+  }
   // the value array of a factor shrunk by round_to_single_precision() to its full size again,
   // before CHOLMOD writes double values into it; false if that memory is not available
   bool restore_double_storage()

@@ -13,8 +13,9 @@
 //  - dirichlet_energy.h:          Energy_evaluator (energy, gradient, Hessian, force imbalance)
 //  - connection_preconditioner.h: Connection_laplacian_preconditioner
 //  - tutte_initialization.h:      initialize_embedding
-//  - newton.h:                    Solver_options, Solver_statistics, minimize_energy,
-//                                 minimize_energy_on_region, subtract_christoffel_terms
+//  - newton.h:                    Solver_options, Solver_statistics, minimize_energy (the steps of
+//                                 Newton_minimizer), subtract_christoffel_terms
+//  - newton_on_region.h:          minimize_energy_on_region
 //  - one_ring_repair.h:           positive_triangle, One_ring_faces, repair_one_rings, snap_one_rings
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/edge_weights.h>
@@ -24,6 +25,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/connection_preconditioner.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/tutte_initialization.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton_on_region.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/one_ring_repair.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_ORBIFOLD_SOLVER_H
