@@ -10,6 +10,9 @@
 /// \file dirichlet_energy.h
 // The Dirichlet energy of the flat problem (sum over the edges of w d^2 / 2, d hyperbolic),
 // its gradient and (projected) Hessian, and the measures of force imbalance.
+// The per-edge terms (squared hyperbolic distance and its derivatives, position jets) are
+// in hyperbolic_energy.h, below Flat_problem (flat_problem.h includes it); this header sums
+// them over a Flat_problem's edges, so the two stay apart.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 
@@ -496,24 +499,22 @@ private:
       if(llt.info() == Eigen::Success)
         return;
     }
-    if(n == 2) {
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(M.topLeftCorner<2, 2>());
-      if(es.eigenvalues().minCoeff() >= 0) return;
-      Eigen::Vector2d l = es.eigenvalues().cwiseMax(0.0);
-      M.topLeftCorner<2, 2>() = es.eigenvectors() * l.asDiagonal() * es.eigenvectors().transpose();
-      return;
-    }
-    if(n == 3) {
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(M.topLeftCorner<3, 3>());
-      if(es.eigenvalues().minCoeff() >= 0) return;
-      Eigen::Vector3d l = es.eigenvalues().cwiseMax(0.0);
-      M.topLeftCorner<3, 3>() = es.eigenvectors() * l.asDiagonal() * es.eigenvectors().transpose();
-      return;
-    }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(M);
+    if(n == 2)
+      clamp_eigenvalues<2>(M);
+    else if(n == 3)
+      clamp_eigenvalues<3>(M);
+    else
+      clamp_eigenvalues<4>(M);
+  }
+
+  // the leading N x N block of M with its negative eigenvalues set to 0
+  template <int N>
+  static void clamp_eigenvalues(Eigen::Matrix4d& M)
+  {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N> > es(M.template topLeftCorner<N, N>());
     if(es.eigenvalues().minCoeff() >= 0) return;
-    Eigen::Vector4d l = es.eigenvalues().cwiseMax(0.0);
-    M = es.eigenvectors() * l.asDiagonal() * es.eigenvectors().transpose();
+    Eigen::Matrix<double, N, 1> l = es.eigenvalues().cwiseMax(0.0);
+    M.template topLeftCorner<N, N>() = es.eigenvectors() * l.asDiagonal() * es.eigenvectors().transpose();
   }
 
   const Flat_problem& P_;

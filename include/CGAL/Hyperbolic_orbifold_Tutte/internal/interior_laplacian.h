@@ -20,7 +20,7 @@ namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
-class Connection_laplacian_preconditioner;
+class Connection_laplacian_preconditioner; // (connection_preconditioner.h)
 
 // The weighted Laplacian of the cut mesh's interior vertices (the border held fixed), for the
 // initialisation and the preconditioner's gauge. Either a factorisation of its own (`solver`)
