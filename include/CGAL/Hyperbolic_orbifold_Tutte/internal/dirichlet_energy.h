@@ -1,0 +1,538 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_DIRICHLET_ENERGY_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_DIRICHLET_ENERGY_H
+
+#include <CGAL/disable_warnings.h>
+
+/// \file dirichlet_energy.h
+// The Dirichlet energy of the flat problem (sum over the edges of w d^2 / 2, d hyperbolic),
+// its gradient and (projected) Hessian, and the measures of force imbalance.
+// The per-edge terms (squared hyperbolic distance and its derivatives, position jets) are
+// in hyperbolic_energy.h, below Flat_problem (flat_problem.h includes it); this header sums
+// them over a Flat_problem's edges, so the two stay apart.
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// Dirichlet energy (1/2) sum w d^2; gradient and projected Hessian if requested.
+class Energy_evaluator
+{
+public:
+  typedef Complex<double> C;
+  explicit Energy_evaluator(const Flat_problem& P) : P_(P) { build_pattern(); }
+
+  // The Hessian's sparsity pattern (every entry any edge can touch, symmetric, compressed
+  // column storage) and, per edge, the positions of its local block's entries in it: the
+  // values are accumulated in place, no triplets, no sorting per iteration. The pattern is
+  // handed over to the first Hessian asked for (one copy in memory), built again for another.
+
+  // returns +infinity for infeasible x (a point on or outside the unit circle)
+  double energy(const std::vector<double>& x) const
+  {
+    const std::size_t m = P_.edges.size();
+    terms_x_.clear(); // the per-edge terms no longer belong to one point
+    edge_energy_.resize(m);
+    for_each_edge([&](std::size_t e) {
+      const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
+      const double A = 1 - norm(a), B = 1 - norm(b);
+      if(!(A > 0 && B > 0)) {
+        edge_energy_[e] = std::numeric_limits<double>::infinity();
+        return;
+      }
+      const double dx = a.re - b.re, dy = a.im - b.im;
+      const double d = 2.0 * std::asinh(std::sqrt((dx * dx + dy * dy) / (A * B)));
+      edge_energy_[e] = 0.5 * P_.edge_weight[e] * d * d;
+    });
+    double E = 0;
+    for(std::size_t e = 0; e < m; ++e)
+      E += edge_energy_[e];
+    return E;
+  }
+
+  bool feasible(const std::vector<double>& x) const
+  {
+    for(int v = 0; v < P_.n; ++v) {
+      if(P_.kind[v] == Free) {
+        if(!(x[P_.var[v]] * x[P_.var[v]] + x[P_.var[v] + 1] * x[P_.var[v] + 1] < 1.0))
+          return false;
+      } else if(P_.kind[v] == On_line) {
+        const C k = P_.line_k0[v] + x[P_.var[v]] * P_.line_D[v];
+        if(!(norm(k) < 1.0))
+          return false;
+      }
+    }
+    return true;
+  }
+
+  // gradient g (size n_vars) and, if H != nullptr, the Hessian with each edge's block
+  // projected onto the positive semi-definite cone
+  double evaluate(const std::vector<double>& x, std::vector<double>& g,
+                  Eigen::SparseMatrix<double>* H, bool project = true) const
+  {
+    const std::size_t m = P_.edges.size();
+    edge_energy_.resize(m);
+    edge_gradient_.resize(4 * m);
+    // each edge's terms independently (in parallel where TBB is available)...
+    if(!H)
+      for_each_edge([&](std::size_t e) { edge_terms(x, e, false, project); });
+    else
+      assemble_hessian(x, *H, project);
+    terms_x_ = x;
+    noise_.clear();
+    // ...then summed in edge order: the same result bit for bit whatever the number of threads
+    return sum_edge_terms(g);
+  }
+
+  // hyperbolic (Riemannian) norm of the gradient: per vertex |grad| (1 - |z|^2) / 2,
+  // per boundary parameter |dE/dt| / |dz/dt|_hyperbolic. With `relative`, divided by the
+  // same norm of the sums of the absolute values of the edges' contributions (the
+  // "forces" on each vertex, from the last call of evaluate() at x): the remaining
+  // imbalance of the forces, a scale-free measure whose floor is the rounding error.
+  double hyperbolic_gradient_norm(const std::vector<double>& x, const std::vector<double>& g, bool relative = false) const
+  {
+    double s = 0, sa = 0;
+    Position_jet j;
+    for(int v = 0; v < P_.n; ++v) {
+      if(P_.kind[v] == Free) {
+        const int i = P_.var[v];
+        const double r = (1 - (x[i] * x[i] + x[i + 1] * x[i + 1])) / 2;
+        s += (g[i] * g[i] + g[i + 1] * g[i + 1]) * r * r;
+        sa += (g_abs_[i] * g_abs_[i] + g_abs_[i + 1] * g_abs_[i + 1]) * r * r;
+      } else if(P_.kind[v] == On_line) {
+        position_jet(P_, x, v, j);
+        const double speed = abs(j.dz[0]) * 2 / (1 - norm(j.z));
+        const double gt = g[P_.var[v]] / speed, ga = g_abs_[P_.var[v]] / speed;
+        s += gt * gt;
+        sa += ga * ga;
+      }
+    }
+    if(!relative)
+      return std::sqrt(s);
+    return sa > 0 ? std::sqrt(s / sa) : 0.0;
+  }
+
+  // The force imbalance that rounding the coordinates to double alone causes, relative like
+  // hyperbolic_gradient_norm(x, g, true), at x (evaluates the gradient there). An edge's length
+  // d is known to about u (|a|/r_a + |b|/r_b) (u the unit roundoff, r = (1 - |z|^2)/2 the
+  // scale of the metric; seam copies and border parameters add a few roundings: factor 8),
+  // so each of its forces to a relative d_err / d. Stiff edges (cotangent weights of 1e5
+  // on needle triangles) or vertices near the circle raise this floor well above 1e-16.
+  double rounding_floor(const std::vector<double>& x) const
+  {
+    std::vector<double> noise;
+    rounding_noise(x, noise);
+    const double num = hyperbolic_gradient_norm(x, noise); // in the same (hyperbolic) norm
+    const double den = hyperbolic_gradient_norm(x, g_abs_);
+    return den > 0 ? num / den : 0.0;
+  }
+
+  // Vertices whose own forces are out of balance by more than `relative` of their sizes and
+  // by more than ten times what rounding explains there, for the gradient g at x. The global
+  // imbalance cannot see a region squeezed to 1e-12 (a protrusion without landmarks): its
+  // forces are that small; such a region is solved only when this count is zero.
+  int unbalanced_vertices(const std::vector<double>& x, const std::vector<double>& g, double relative) const
+  {
+    std::vector<double> noise;
+    rounding_noise(x, noise); // (evaluates at x again: g_abs_ is x's)
+    int count = 0;
+    for(int v = 0; v < P_.n; ++v) {
+      double a = 0, b = 0, c = 0;
+      if(P_.kind[v] == Free) {
+        const int i = P_.var[v];
+        a = std::hypot(g[i], g[i + 1]);
+        b = std::hypot(g_abs_[i], g_abs_[i + 1]);
+        c = std::hypot(noise[i], noise[i + 1]);
+      } else if(P_.kind[v] == On_line) {
+        a = std::abs(g[P_.var[v]]);
+        b = g_abs_[P_.var[v]];
+        c = noise[P_.var[v]];
+      }
+      if(a > relative * b && a > 10 * c)
+        ++count;
+    }
+    return count;
+  }
+
+private:
+  // per variable, the size of the forces' change that rounding the coordinates may cause
+  void rounding_noise(const std::vector<double>& x, std::vector<double>& noise) const
+  {
+    const double u = std::numeric_limits<double>::epsilon() / 2;
+    if(terms_x_ != x || terms_x_.empty())
+      evaluate(x, noise, nullptr); // the per-edge terms and forces at x
+    else if(!noise_.empty()) { // at the point of the last evaluation, and computed there already
+      noise = noise_;
+      return;
+    }
+    noise.assign(P_.n_vars, 0.0);
+    int gi[4];
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
+      const double ra = (1 - norm(a)) / 2, rb = (1 - norm(b)) / 2;
+      const double d = std::sqrt(2 * edge_energy_[e] / P_.edge_weight[e]);
+      const double err = 8 * u * (abs(a) / ra + abs(b) / rb);
+      const double rel = d > err ? err / d : 1.0;
+      const int n = local_variables(e, gi);
+      for(int i = 0; i < n; ++i)
+        noise[gi[i]] += std::abs(edge_gradient_[4 * e + i]) * rel;
+    }
+    noise_ = noise;
+  }
+
+private:
+  // every edge's terms with its Hessian block, the blocks added into H (given the pattern
+  // first where it has not got it)
+  void assemble_hessian(const std::vector<double>& x, Eigen::SparseMatrix<double>& H, bool project) const
+  {
+    const std::size_t m = P_.edges.size();
+    if(H.nonZeros() != pattern_nnz_ || H.rows() != P_.n_vars || H.cols() != P_.n_vars) {
+      if(pattern_given_) // rare (tests): build the pattern again
+        build_pattern();
+      // (swapped, not assigned: Eigen 3.4's SparseMatrix has no move assignment, so
+      // `H = std::move(pattern_)` would copy it and keep both: 336 MB at a million vertices)
+      H.swap(pattern_);
+      Eigen::SparseMatrix<double>().swap(pattern_); // H's former storage freed
+      pattern_given_ = true;
+    }
+    double* hv = H.valuePtr();
+    std::fill(hv, hv + H.nonZeros(), 0.0);
+    // the Hessian blocks a chunk of edges at a time (a small buffer, not 16 doubles per
+    // edge: 0.4 GB at a million vertices), added in edge order: bit for bit the same
+    const std::size_t chunk = 65536;
+    for(std::size_t c = 0; c < m; c += chunk) {
+      const std::size_t c_end = (std::min)(m, c + chunk);
+      hessian_offset_ = static_cast<std::size_t>(slot_begin_[c]);
+      edge_hessian_.resize(static_cast<std::size_t>(slot_begin_[c_end]) - hessian_offset_);
+      for_each_edge(c, c_end, [&](std::size_t e) { edge_terms(x, e, true, project); });
+      for(std::size_t k = hessian_offset_; k < static_cast<std::size_t>(slot_begin_[c_end]); ++k)
+        hv[slots_[k]] += edge_hessian_[k - hessian_offset_];
+    }
+    hessian_offset_ = 0;
+  }
+
+  // the energy, and the gradient g (and the forces' sizes g_abs_): the edges' terms in edge order
+  double sum_edge_terms(std::vector<double>& g) const
+  {
+    g.assign(P_.n_vars, 0.0);
+    g_abs_.assign(P_.n_vars, 0.0);
+    double E = 0;
+    int gi[4];
+    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+      E += edge_energy_[e];
+      const int n = local_variables(e, gi);
+      for(int i = 0; i < n; ++i) {
+        g[gi[i]] += edge_gradient_[4 * e + i];
+        g_abs_[gi[i]] += std::abs(edge_gradient_[4 * e + i]);
+      }
+    }
+    return E;
+  }
+
+  template <class F>
+  void for_each_edge(const F& f) const
+  {
+    for_each_edge(0, P_.edges.size(), f);
+  }
+
+  // edges [begin, end); in parallel on meshes of more than 20000 edges
+  template <class F>
+  void for_each_edge(std::size_t begin, std::size_t end, const F& f) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(P_.edges.size() > 20000) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t e = r.begin(); e != r.end(); ++e)
+          f(e);
+      });
+      return;
+    }
+#endif
+    for(std::size_t e = begin; e < end; ++e)
+      f(e);
+  }
+
+  // energy, gradient and (projected) Hessian block of edge e, into the per-edge buffers
+  void edge_terms(const std::vector<double>& x, std::size_t e, bool want_hessian, bool project) const
+  {
+    Position_jet ja, jb;
+    Squared_distance_derivatives sd;
+    const int a = P_.edges[e][0], b = P_.edges[e][1];
+    position_jet(P_, x, a, ja);
+    position_jet(P_, x, b, jb);
+    const double hw = 0.5 * P_.edge_weight[e];
+    const int n = ja.dim + jb.dim;
+    squared_hyperbolic_distance(ja.z, jb.z, sd, want_hessian && n > 0);
+    edge_energy_[e] = hw * sd.f; // constant when n == 0, but part of the energy that energy() returns
+    if(n == 0)
+      return;
+    // local variables: first ja.dim of a, then jb.dim of b;
+    // dz_i as real 2-vectors, per local variable, with its offset in the 4-vector (0: z, 2: w)
+    double J[4][2];
+    int off[4];
+    for(int i = 0; i < ja.dim; ++i) {
+      J[i][0] = ja.dz[i].re; J[i][1] = ja.dz[i].im; off[i] = 0;
+    }
+    for(int i = 0; i < jb.dim; ++i) {
+      J[ja.dim + i][0] = jb.dz[i].re; J[ja.dim + i][1] = jb.dz[i].im; off[ja.dim + i] = 2;
+    }
+    for(int i = 0; i < n; ++i)
+      edge_gradient_[4 * e + i] = hw * (sd.g[off[i]] * J[i][0] + sd.g[off[i] + 1] * J[i][1]);
+    if(!want_hessian)
+      return;
+    Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
+    for(int i = 0; i < n; ++i)
+      for(int j = i; j < n; ++j) {
+        double h = 0;
+        for(int p = 0; p < 2; ++p)
+          for(int q = 0; q < 2; ++q)
+            h += J[i][p] * sd.H[off[i] + p][off[j] + q] * J[j][q];
+        // second derivatives of the position (same vertex only)
+        if(off[i] == off[j]) {
+          const Position_jet& jj = (off[i] == 0) ? ja : jb;
+          const int ii = (off[i] == 0) ? i : i - ja.dim, kk = (off[j] == 0) ? j : j - ja.dim;
+          h += sd.g[off[i]] * jj.ddz[ii][kk].re + sd.g[off[i] + 1] * jj.ddz[ii][kk].im;
+        }
+        M(i, j) = M(j, i) = hw * h;
+      }
+    if(project)
+      project_psd(M, n);
+    double* out = &edge_hessian_[slot_begin_[e] - hessian_offset_];
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+        out[i * n + j] = M(i, j);
+  }
+
+  // local variables of edge e: those of its first end, then those of its second
+  int local_variables(std::size_t e, int* gi) const
+  {
+    int n = 0;
+    for(int s = 0; s < 2; ++s) {
+      const int v = P_.edges[e][s];
+      const int o = variable_owner(P_, v);
+      const int dim = P_.kind[v] == Fixed ? 0 : (P_.kind[v] == On_line ? 1 : 2);
+      for(int i = 0; i < dim; ++i)
+        gi[n++] = o + i;
+    }
+    return n;
+  }
+
+  // The owners of variables as groups of consecutive variables, numbered in vertex order,
+  // and per group its neighbouring groups (itself included), sorted by first variable.
+  struct Variable_groups
+  {
+    std::vector<int> group_of;   // group of each variable
+    std::vector<int> start, dim; // first variable and number of variables of each group
+    std::vector<int> first, nb;  // neighbours of group g: nb[first[g]], ..., nb[first[g + 1] - 1]
+    std::vector<int> row_offset; // per neighbour: its first row in the column
+    std::vector<int> rows;       // rows per column of each group (rows[g + 1]: group g's)
+
+    // first row of group h in the columns of group g
+    int offset_in_column(int g, int h) const
+    {
+      const auto it = std::lower_bound(nb.begin() + first[g], nb.begin() + first[g + 1], h,
+                                       [&](int p, int q) { return start[p] < start[q]; });
+      return row_offset[it - nb.begin()];
+    }
+  };
+
+  // Every edge's block is dense over the variables of its two ends' owners, so the pattern
+  // is built per owner: an owner's columns hold the rows of its neighbouring owners
+  // (itself included: the diagonal), in variable order; no triplets, no sorting of entries.
+  void build_pattern() const
+  {
+    Variable_groups G;
+    group_variables(G);
+    find_neighbour_groups(G);
+    sort_neighbour_groups(G);
+    std::vector<int> outer;
+    build_columns(G, outer);
+    build_slots(G, outer);
+  }
+
+  // owners as groups of consecutive variables: group of each variable, its start and size
+  void group_variables(Variable_groups& G) const
+  {
+    G.group_of.assign(P_.n_vars, -1);
+    for(int v = 0; v < P_.n; ++v)
+      if(P_.kind[v] == Free || P_.kind[v] == On_line) {
+        const int d = P_.kind[v] == Free ? 2 : 1;
+        for(int i = 0; i < d; ++i)
+          G.group_of[P_.var[v] + i] = static_cast<int>(G.start.size());
+        G.start.push_back(P_.var[v]);
+        G.dim.push_back(d);
+      }
+  }
+
+  // neighbouring groups (compressed rows, itself first, unsorted, with duplicates)
+  void find_neighbour_groups(Variable_groups& G) const
+  {
+    const std::size_t m = P_.edges.size();
+    const int ng = static_cast<int>(G.start.size());
+    auto group_of_end = [&](std::size_t e, int s) {
+      const int v = P_.edges[e][s];
+      return P_.kind[v] == Fixed ? -1 : G.group_of[variable_owner(P_, v)];
+    };
+    std::vector<int>& first = G.first;
+    first.assign(ng + 1, 0);
+    for(std::size_t e = 0; e < m; ++e) {
+      const int ga = group_of_end(e, 0), gb = group_of_end(e, 1);
+      if(ga >= 0 && gb >= 0 && ga != gb) { ++first[ga + 1]; ++first[gb + 1]; }
+    }
+    for(int g = 0; g < ng; ++g)
+      first[g + 1] += first[g] + 1; // + itself
+    G.nb.resize(first[ng]);
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for(int g = 0; g < ng; ++g)
+      G.nb[fill[g]++] = g;
+    for(std::size_t e = 0; e < m; ++e) {
+      const int ga = group_of_end(e, 0), gb = group_of_end(e, 1);
+      if(ga >= 0 && gb >= 0 && ga != gb) { G.nb[fill[ga]++] = gb; G.nb[fill[gb]++] = ga; }
+    }
+  }
+
+  // (groups are numbered in vertex order, their variables need not be: sort by variable,
+  // remove the duplicates, and place each neighbour's rows in the column)
+  void sort_neighbour_groups(Variable_groups& G) const
+  {
+    const int ng = static_cast<int>(G.start.size());
+    std::vector<int>& first = G.first;
+    std::vector<int>& nb = G.nb;
+    G.rows.assign(ng + 1, 0);
+    G.row_offset.resize(nb.size());
+    std::size_t w = 0;
+    for(int g = 0; g < ng; ++g) {
+      const std::size_t b = w;
+      std::sort(nb.begin() + first[g], nb.begin() + first[g + 1], [&](int p, int q) { return G.start[p] < G.start[q]; });
+      for(int k = first[g]; k < first[g + 1]; ++k)
+        if(w == b || nb[w - 1] != nb[k]) nb[w++] = nb[k];
+      first[g] = static_cast<int>(b);
+      int off = 0;
+      for(std::size_t k = b; k < w; ++k) {
+        G.row_offset[k] = off;
+        off += G.dim[nb[k]];
+      }
+      G.rows[g + 1] = off; // rows per column of this group
+    }
+    first[ng] = static_cast<int>(w);
+    nb.resize(w);
+    G.row_offset.resize(w);
+  }
+
+  // the pattern's compressed columns (`outer`: each column's first entry)
+  void build_columns(const Variable_groups& G, std::vector<int>& outer) const
+  {
+    const int nv = P_.n_vars;
+    pattern_.resize(nv, nv);
+    outer.assign(nv + 1, 0);
+    for(int c = 0; c < nv; ++c)
+      outer[c + 1] = outer[c] + G.rows[G.group_of[c] + 1];
+    pattern_.resizeNonZeros(outer[nv]);
+    std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+    int* inner = pattern_.innerIndexPtr();
+    for(int c = 0; c < nv; ++c) {
+      const int g = G.group_of[c];
+      int k = outer[c];
+      for(int q = G.first[g]; q < G.first[g + 1]; ++q)
+        for(int i = 0; i < G.dim[G.nb[q]]; ++i)
+          inner[k++] = G.start[G.nb[q]] + i;
+    }
+    std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
+    pattern_nnz_ = pattern_.nonZeros();
+  }
+
+  // per edge, the position of each entry of its block
+  void build_slots(const Variable_groups& G, const std::vector<int>& outer) const
+  {
+    const std::size_t m = P_.edges.size();
+    slot_begin_.assign(m + 1, 0);
+    int gi[4];
+    for(std::size_t e = 0; e < m; ++e) {
+      const int n = local_variables(e, gi);
+      slot_begin_[e + 1] = slot_begin_[e] + n * n;
+    }
+    slots_.resize(slot_begin_.back());
+    for(std::size_t e = 0; e < m; ++e) {
+      const int n = local_variables(e, gi);
+      if(n == 0)
+        continue;
+      const int g0 = G.group_of[gi[0]], g1 = G.group_of[gi[n - 1]];
+      const int off[2][2] = {{G.offset_in_column(g0, g0), G.offset_in_column(g0, g1)},
+                             {G.offset_in_column(g1, g0), G.offset_in_column(g1, g1)}};
+      for(int j = 0; j < n; ++j) {
+        const int col = gi[j], gc = G.group_of[col];
+        for(int i = 0; i < n; ++i) {
+          const int gr = G.group_of[gi[i]];
+          slots_[slot_begin_[e] + i * n + j] = outer[col] + off[gc == g1][gr == g1] + (gi[i] - G.start[gr]);
+        }
+      }
+    }
+  }
+
+  static void project_psd(Eigen::Matrix4d& M, int n)
+  {
+    if(n == 1) {
+      if(M(0, 0) < 0) M(0, 0) = 0;
+      return;
+    }
+    if(n == 4) { // most blocks are definite already: a Cholesky attempt is much cheaper than eigenvalues
+      Eigen::LLT<Eigen::Matrix4d> llt(M);
+      if(llt.info() == Eigen::Success)
+        return;
+    }
+    if(n == 2)
+      clamp_eigenvalues<2>(M);
+    else if(n == 3)
+      clamp_eigenvalues<3>(M);
+    else
+      clamp_eigenvalues<4>(M);
+  }
+
+  // the leading N x N block of M with its negative eigenvalues set to 0
+  template <int N>
+  static void clamp_eigenvalues(Eigen::Matrix4d& M)
+  {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N> > es(M.template topLeftCorner<N, N>());
+    if(es.eigenvalues().minCoeff() >= 0) return;
+    Eigen::Matrix<double, N, 1> l = es.eigenvalues().cwiseMax(0.0);
+    M.template topLeftCorner<N, N>() = es.eigenvectors() * l.asDiagonal() * es.eigenvectors().transpose();
+  }
+
+  const Flat_problem& P_;
+  mutable std::vector<double> g_abs_;
+  mutable Eigen::SparseMatrix<double> pattern_;
+  mutable Eigen::Index pattern_nnz_ = 0;
+  mutable bool pattern_given_ = false;
+  mutable std::vector<int> slot_begin_, slots_;
+  mutable std::vector<double> edge_energy_, edge_gradient_, edge_hessian_;
+  mutable std::size_t hessian_offset_ = 0; // slot of the first edge of the chunk in edge_hessian_
+  mutable std::vector<double> terms_x_;     // the point of the last evaluate(): the per-edge terms are its
+  mutable std::vector<double> noise_;       // rounding_noise() there, once computed
+};
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_DIRICHLET_ENERGY_H

@@ -1,0 +1,239 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_TUTTE_INITIALIZATION_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_TUTTE_INITIALIZATION_H
+
+#include <CGAL/disable_warnings.h>
+
+/// \file tutte_initialization.h
+// The initial embedding: the border on the tile, the interior by a Tutte embedding in the
+// Klein model.
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/connection_preconditioner.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/interior_laplacian.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// The fraction of the 3D arc length between its side's corners at each border vertex (0 at
+// the corners and off the border)
+template <class Point3>
+std::vector<double> side_arc_fractions(const Flat_problem& P, const std::vector<Point3>& base_points)
+{
+  const std::vector<int>& loop = P.border_loop;
+  const int L = static_cast<int>(loop.size());
+  auto dist3 = [&](int a, int b) {
+    const Point3& p = base_points[P.base[a]];
+    const Point3& q = base_points[P.base[b]];
+    const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x()), dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y()),
+                 dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  };
+  std::vector<double> frac(P.n, 0.0);
+  int i = 0;
+  while(i < L) {
+    int j = i + 1;
+    while(j < L && P.corner[loop[j]] < 0)
+      ++j;
+    // corners at loop[i] and loop[j % L]
+    std::vector<double> acc(1, 0.0);
+    for(int q = i; q < j; ++q)
+      acc.push_back(acc.back() + dist3(loop[q], loop[(q + 1) % L]));
+    const double total = acc.back() > 0 ? acc.back() : 1.0;
+    for(int q = i + 1; q < j; ++q)
+      frac[loop[q]] = acc[q - i] / total;
+    i = j;
+  }
+  return frac;
+}
+
+// The border's variables in x and its positions z: cone copies at their corners, sphere
+// p-side vertices on their side's geodesic (their twins follow by the pairing), disk-border
+// vertices at the parameter t of their Klein segment, all at their arc-length fraction
+template <class Tile>
+void place_border(const Flat_problem& P, const Tile& tile, const std::vector<double>& frac, std::vector<double>& x,
+                  std::vector<Complex<double> >& z)
+{
+  typedef Complex<double> C;
+  typedef Hyperbolic_isometry_2<double> Isometry;
+  const std::vector<int>& loop = P.border_loop;
+  for(int v : loop) {
+    if(P.corner[v] >= 0) {
+      z[v] = P.fixed[v];
+    } else if(P.kind[v] == Free) { // sphere p-side: on the side's geodesic
+      const int s = P.side[v];
+      const auto& a = tile.corner(tile.side_source(s));
+      const auto& b = tile.corner(tile.side_target(s));
+      const C ca(CGAL::to_double(a.x()), CGAL::to_double(a.y())), cb(CGAL::to_double(b.x()), CGAL::to_double(b.y()));
+      const Isometry to0 = Isometry::translation_to_origin(ca);
+      const C b0 = to0.apply(cb);
+      const double r = abs(b0);
+      const double rr = std::tanh(frac[v] * std::atanh(r));
+      z[v] = to0.inverse().apply(b0 * (rr / r));
+      x[P.var[v]] = z[v].re;
+      x[P.var[v] + 1] = z[v].im;
+    } else if(P.kind[v] == On_line) {
+      x[P.var[v]] = frac[v];
+    }
+  }
+  for(int v : loop)
+    if(P.kind[v] == Transformed || P.kind[v] == On_line)
+      z[v] = position(P, x, v);
+}
+
+// Numbers the interior vertices (lap.index, lap.size). The interior Laplacian is the leading
+// block of the solver's connection Laplacian (its rotations depend on the border's positions
+// only, placed before): where that block can be kept at little cost, the solver's
+// factorisation is made here and serves both (lap.connection; else the analysis alone was
+// spent, a few percent of a factorisation).
+inline void number_interior(const Flat_problem& P, const std::vector<double>& x, Interior_laplacian& lap)
+{
+  std::vector<char> is_border(P.n, 0);
+  for(int v : P.border_loop)
+    is_border[v] = 1;
+  std::vector<int>& interior_index = lap.index;
+  interior_index.assign(P.n, -1);
+  lap.own_factor = false;
+  lap.connection.reset();
+  if(lap.share && P.n >= lap.share_from) {
+    auto pre = std::make_shared<Connection_laplacian_preconditioner>(P, nullptr, true, lap.share_max_fill);
+    if(pre->factor(x) && pre->shares_interior())
+      lap.connection = pre;
+  }
+  int ni = 0;
+  for(int v = 0; v < P.n; ++v)
+    if(!is_border[v])
+      interior_index[v] = lap.connection ? lap.connection->interior_index(v) : ni++;
+  if(lap.connection)
+    ni = lap.connection->interior_size();
+  lap.size = ni;
+}
+
+// The Tutte embedding of the interior in Klein coordinates (kxy: one column per coordinate),
+// the border at z: with the connection's leading block, or with a factorisation of its own
+inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<Complex<double> >& z, Interior_laplacian& lap,
+                                    Eigen::MatrixXd& kxy)
+{
+  typedef Complex<double> C;
+  typedef Eigen::SparseMatrix<double> SpMat;
+  const std::vector<int>& interior_index = lap.index;
+  const int ni = lap.size;
+  const bool own = !lap.connection; // a factorisation of its own
+  std::vector<Eigen::Triplet<double> > trip;
+  if(own)
+    trip.reserve(4 * P.edges.size() + ni);
+  Eigen::MatrixXd bxy = Eigen::MatrixXd::Zero(ni, 2); // both coordinates: one solve of two columns
+  auto bx = bxy.col(0);
+  auto by = bxy.col(1);
+  std::vector<double> diag(own ? ni : 0, 0.0);
+  auto klein = [](const C& p) { return p * (2.0 / (1.0 + norm(p))); };
+  for(std::size_t e = 0; e < P.edges.size(); ++e) {
+    const int a = P.edges[e][0], b = P.edges[e][1];
+    const double w = P.edge_weight[e];
+    const int ia = interior_index[a], ib = interior_index[b];
+    if(ia >= 0 && own) diag[ia] += w;
+    if(ib >= 0 && own) diag[ib] += w;
+    if(ia >= 0 && ib >= 0) {
+      if(!own)
+        continue;
+      trip.emplace_back(ia, ib, -w);
+      trip.emplace_back(ib, ia, -w);
+    } else if(ia >= 0) {
+      const C kb = klein(z[b]);
+      bx[ia] += w * kb.re;
+      by[ia] += w * kb.im;
+    } else if(ib >= 0) {
+      const C ka = klein(z[a]);
+      bx[ib] += w * ka.re;
+      by[ib] += w * ka.im;
+    }
+  }
+  if(!own) { // both coordinates as one complex right-hand side
+    Eigen::VectorXcd k;
+    if(!lap.connection->solve_interior(bxy.col(0).cast<std::complex<double> >() +
+                                         std::complex<double>(0.0, 1.0) * bxy.col(1).cast<std::complex<double> >(), k))
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    kxy.resize(ni, 2);
+    kxy.col(0) = k.real();
+    kxy.col(1) = k.imag();
+    return OK;
+  }
+  for(int i = 0; i < ni; ++i)
+    trip.emplace_back(i, i, diag[i]);
+  SpMat Lm(ni, ni);
+  Lm.setFromTriplets(trip.begin(), trip.end());
+  std::vector<Eigen::Triplet<double> >().swap(trip); // (freed before the factorisation)
+  auto& solver = lap.solver;
+  solver.compute(Lm);
+  lap.own_factor = true;
+  if(!solver.definite())
+    return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  kxy = solver.solve(bxy);
+  if(solver.info() != Eigen::Success)
+    return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  return OK;
+}
+
+// Places the border: cone copies at their corners, other border vertices along their
+// tile side at the fraction of the 3D arc length between the side's corners (sphere:
+// p-side vertices on the side's geodesic, their twins follow by the pairing; disk: the
+// parameter t of the Klein segment). Interior vertices: Euclidean Tutte embedding in the
+// Klein model with the same weights (paper, section 5), mapped back to Poincare.
+template <class Point3, class Tile>
+Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const std::vector<Point3>& base_points,
+                                std::vector<double>& x, Interior_laplacian* keep = nullptr)
+{
+  Interior_laplacian local;
+  Interior_laplacian& lap = keep ? *keep : local;
+  typedef Complex<double> C;
+  x.assign(P.n_vars, 0.0);
+  std::vector<C> z(P.n);
+  place_border(P, tile, side_arc_fractions(P, base_points), x, z);
+  number_interior(P, x, lap);
+  if(lap.size == 0)
+    return OK;
+  Eigen::MatrixXd kxy;
+  const Error_code solved = solve_klein_tutte(P, z, lap, kxy);
+  if(solved != OK)
+    return solved;
+  const auto kx = kxy.col(0);
+  const auto ky = kxy.col(1);
+  for(int v = 0; v < P.n; ++v) {
+    const int i = lap.index[v];
+    if(i < 0)
+      continue;
+    const C k(kx[i], ky[i]);
+    const double s = 1.0 - norm(k);
+    if(!(s > 0) || !std::isfinite(k.re) || !std::isfinite(k.im))
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    const C p = k / (1.0 + std::sqrt(s));
+    if(P.kind[v] == Free) {
+      x[P.var[v]] = p.re;
+      x[P.var[v] + 1] = p.im;
+    }
+  }
+  return OK;
+}
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_TUTTE_INITIALIZATION_H
