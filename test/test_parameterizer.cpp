@@ -469,11 +469,11 @@ TEST_CASE(disk_orbifold_energy_below_fixed_boundary_figure_8)
     }
     HOT::internal::Solver_options opt;
     opt.verbose = std::getenv("HOT_VERBOSE") != nullptr;
-    HOT::internal::Solver_statistics s1, s2;
+    HOT::Solver_statistics s1, s2;
     std::vector<double> x = D.x;
     CHECK(HOT::internal::minimize_energy(D.P, x, opt, s1) == HOT::OK);
     const HOT::Error_code ec2 = HOT::internal::minimize_energy(F, xf, opt, s2);
-    CHECK_MSG(ec2 == HOT::OK, HOT::error_message(ec2) << " after " << s2.iterations << " iterations, imbalance " << s2.relative_gradient);
+    CHECK_MSG(ec2 == HOT::OK, HOT::error_message(ec2) << " after " << s2.iterations << " iterations, imbalance " << s2.relative_gradient_norm);
     std::cout << "  " << name << ": disk orbifold energy " << s1.energy << " < fixed boundary " << s2.energy << std::endl;
     CHECK(s1.energy < s2.energy);
     // both are bijective (Theorems 1 and 2)
@@ -493,7 +493,7 @@ TEST_CASE(one_ring_repair)
   Disk_problem D;
   CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
   HOT::internal::Solver_options opt;
-  HOT::internal::Solver_statistics st;
+  HOT::Solver_statistics st;
   CHECK(HOT::internal::minimize_energy(D.P, D.x, opt, st) == HOT::OK);
   // throw 20 interior vertices out of their one-rings (to the reflection of a neighbour)
   int thrown = 0;
@@ -837,7 +837,7 @@ static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std:
   direct.direct_solver = true;
   direct.verbose = getenv("HOT_VERBOSE") != nullptr;
   std::vector<double> xd = x0;
-  HOT::internal::Solver_statistics sd;
+  HOT::Solver_statistics sd;
   CHECK_MSG(HOT::internal::minimize_energy(P, xd, direct, sd) == HOT::OK, what << ": direct solver");
   for(const bool gradient_steps : {false, true}) {
     HOT::internal::Solver_options fast;
@@ -845,7 +845,7 @@ static void check_solvers_agree(const HOT::internal::Flat_problem& P, const std:
     fast.verbose = direct.verbose;
     const std::string name = what + (gradient_steps ? ", gradient steps first" : "");
     std::vector<double> xf = x0;
-    HOT::internal::Solver_statistics sf;
+    HOT::Solver_statistics sf;
     CHECK_MSG(HOT::internal::minimize_energy(P, xf, fast, sf, interior) == HOT::OK, name << ": preconditioned solver");
     const double worst = largest_hyperbolic_distance(P, xf, xd);
     std::cout << "  " << name << ": preconditioned " << sf.iterations << " steps (" << sf.cg_iterations << " CG, "
@@ -1184,7 +1184,7 @@ TEST_CASE(rounding_floor_bounds_the_effect_of_rounding_the_coordinates)
     Sphere_problem S;
     CHECK(make_sphere_problem(c.first, c.second, S));
     HOT::internal::Solver_options opt;
-    HOT::internal::Solver_statistics st;
+    HOT::Solver_statistics st;
     std::vector<double> x = S.x;
     CHECK(HOT::internal::minimize_energy(S.P, x, opt, st, &S.interior) == HOT::OK);
     HOT::internal::Energy_evaluator ev(S.P);
@@ -1205,7 +1205,7 @@ TEST_CASE(rounding_floor_bounds_the_effect_of_rounding_the_coordinates)
       largest = std::max(largest, ev.hyperbolic_gradient_norm(x, dg) / denominator);
     }
     std::cout << "  " << c.first << " k=" << c.second << ": imbalance from rounding " << largest << ", estimated floor " << floor
-              << ", solver stopped at " << st.relative_gradient << (st.at_rounding_floor ? " (at the floor)" : "") << std::endl;
+              << ", solver stopped at " << st.relative_gradient_norm << (st.converged_at_rounding_floor ? " (at the floor)" : "") << std::endl;
     CHECK_MSG(largest <= floor, c.first << ": rounding changes the imbalance by " << largest << " > the floor " << floor);
     CHECK_MSG(largest >= 1e-3 * floor, c.first << ": the floor " << floor << " is a useless bound (" << largest << ")");
   }

@@ -21,20 +21,14 @@ namespace Hyperbolic_orbifold_Tutte {
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteMainClasses
-What a parameterization did: solver statistics, timings (seconds) and the certificate.
+What the nonlinear solver did (Riemannian Newton on the hyperbolic Dirichlet energy): its
+steps, energies, force imbalance and timings (seconds). Part of `Embedding_statistics`.
 */
-struct Embedding_statistics
+struct Solver_statistics
 {
-  int number_of_vertices = 0;         ///< vertices of the cut (seam) mesh
-  int number_of_variables = 0;        ///< unknowns after eliminating seam twins
   int iterations = 0;                 ///< steps of the solver (preconditioned gradient steps, then Newton steps)
   int cg_iterations = 0;              ///< conjugate-gradient iterations of the Newton steps, in all
   int preconditioner_factorizations = 0; ///< factorisations of the connection-Laplacian preconditioner after the first
-  /// `true` when the initialisation solved its Tutte system with the leading block of the
-  /// solver's factorisation, so that one factorisation served both (with CHOLMOD, from 50K
-  /// vertices of the cut mesh on, where the order this needs fills the factor no more than
-  /// CHOLMOD's own; otherwise each factors a matrix of its own)
-  bool shared_factorization = false;
   double initial_energy = 0;          ///< Dirichlet energy of the Euclidean Tutte initialisation
   double energy = 0;                  ///< final Dirichlet energy \f$ \frac12\sum w_{ij} d_{ij}^2 \f$
   double gradient_norm = 0;           ///< final hyperbolic norm of the energy's gradient
@@ -58,6 +52,29 @@ struct Embedding_statistics
   /// times the largest ones; such a region is solved to the precision of `double` (steps
   /// until rounding stops them), before the one-ring repair is tried
   int polishing_iterations = 0;
+  /// \var time_assembly
+  /// seconds spent assembling the Newton systems (part of `time_optimization`)
+  /// \var time_factorization
+  /// seconds spent factoring the Newton matrices (part of `time_optimization`)
+  double time_assembly = 0, time_factorization = 0, time_line_search = 0; ///< parts of `time_optimization` (factorisation: the preconditioner's and the conjugate gradients)
+  double initial_gradient_norm = 0;   ///< hyperbolic norm of the energy's gradient at the initialisation
+  int cg_failures = 0;                ///< Newton steps whose conjugate gradients did not reach their tolerance
+};
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+What a parameterization did: the solver's statistics, the sizes, the other timings
+(seconds) and the certificate.
+*/
+struct Embedding_statistics : public Solver_statistics
+{
+  int number_of_vertices = 0;         ///< vertices of the cut (seam) mesh
+  int number_of_variables = 0;        ///< unknowns after eliminating seam twins
+  /// `true` when the initialisation solved its Tutte system with the leading block of the
+  /// solver's factorisation, so that one factorisation served both (with CHOLMOD, from 50K
+  /// vertices of the cut mesh on, where the order this needs fills the factor no more than
+  /// CHOLMOD's own; otherwise each factors a matrix of its own)
+  bool shared_factorization = false;
   int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
   /// `true` when the coordinates were written in a moved frame (recentring allowed, and the
   /// embedding in the canonical tile had triangles below what `double` resolves): the
@@ -79,11 +96,6 @@ struct Embedding_statistics
   /// \var time_certificate
   /// seconds spent certifying the result (and repairing one-rings)
   double time_setup = 0, time_initialization = 0, time_optimization = 0, time_certificate = 0;
-  /// \var time_assembly
-  /// seconds spent assembling the Newton systems (part of `time_optimization`)
-  /// \var time_factorization
-  /// seconds spent factoring the Newton matrices (part of `time_optimization`)
-  double time_assembly = 0, time_factorization = 0, time_line_search = 0; ///< parts of `time_optimization` (factorisation: the preconditioner's and the conjugate gradients)
   /// the bijectivity certificate of the computed coordinates
   Embedding_certificate certificate;
   std::string message;                ///< one-line reason when the result is an error

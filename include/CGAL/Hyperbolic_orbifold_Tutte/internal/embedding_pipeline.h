@@ -80,8 +80,7 @@ public:
     if(ec != OK)
       return fail(ec, "the Euclidean Tutte initialisation failed");
     const auto t2 = Clock::now();
-    ec = minimize_energy(P_, x_, settings_.solver, solver_stats_, &interior_);
-    copy_solver_statistics();
+    ec = minimize_energy(P_, x_, settings_.solver, st_, &interior_); // (its part of the statistics)
     st_.time_optimization = seconds_since(t2);
     const bool recentring_tried = certify_and_mend(ec == OK);
     return verdict(ec, recentring_tried);
@@ -144,25 +143,6 @@ private:
     return OK;
   }
 
-  void copy_solver_statistics()
-  {
-    const Solver_statistics& ss = solver_stats_;
-    st_.iterations = ss.iterations;
-    st_.cg_iterations = ss.cg_iterations;
-    st_.preconditioner_factorizations = ss.preconditioner_factorizations;
-    st_.initial_energy = ss.initial_energy;
-    st_.energy = ss.energy;
-    st_.gradient_norm = ss.gradient;
-    st_.relative_gradient_norm = ss.relative_gradient;
-    st_.converged = ss.converged;
-    st_.polishing_iterations = ss.polishing_iterations;
-    st_.rounding_floor = ss.rounding_floor;
-    st_.converged_at_rounding_floor = ss.at_rounding_floor;
-    st_.time_assembly = ss.time_assemble;
-    st_.time_factorization = ss.time_factor;
-    st_.time_line_search = ss.time_line_search;
-  }
-
   // The certificate, and the mends where it fails: a region too small for the stopping test
   // to see gets Newton to the floor of double; triangles below what double resolves get
   // recentring (when allowed); flipped faces the one-ring repairs. Returns whether
@@ -210,8 +190,8 @@ private:
     st_.polishing_iterations += ps.iterations;
     st_.cg_iterations += ps.cg_iterations;
     st_.energy = ps.energy;
-    st_.gradient_norm = ps.gradient;
-    st_.relative_gradient_norm = ps.relative_gradient;
+    st_.gradient_norm = ps.gradient_norm;
+    st_.relative_gradient_norm = ps.relative_gradient_norm;
   }
 
   // the solver's failure, or the certificate's, with what to do about it
@@ -219,9 +199,9 @@ private:
   {
     if(ec != OK) {
       std::ostringstream os;
-      os << "the solver stopped at relative gradient norm " << solver_stats_.relative_gradient << " after "
-         << solver_stats_.iterations << " iterations (tolerance " << settings_.solver.gradient_tolerance
-         << ", rounding floor " << solver_stats_.rounding_floor << ")";
+      os << "the solver stopped at relative gradient norm " << st_.relative_gradient_norm << " after "
+         << st_.iterations << " iterations (tolerance " << settings_.solver.gradient_tolerance
+         << ", rounding floor " << st_.rounding_floor << ")";
       return fail(ec, os.str());
     }
     if(st_.certificate.is_bijective())
@@ -257,7 +237,6 @@ private:
     Triangle_mesh, boost::vertex_point_t>::const_type>::value_type> base_points_;
   std::vector<double> x_;
   Interior_laplacian interior_; // factored by the initialisation, reused by the solver
-  Solver_statistics solver_stats_;
   std::vector<C> uv_;
   Unresolved_faces tiny_;
 };

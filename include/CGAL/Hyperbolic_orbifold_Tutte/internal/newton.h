@@ -12,6 +12,7 @@
 // (minimize_energy), its options and statistics.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/connection_preconditioner.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dirichlet_energy.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
@@ -54,18 +55,6 @@ struct Solver_options
   bool verbose = false;
 };
 
-struct Solver_statistics
-{
-  int iterations = 0;
-  double initial_energy = 0, energy = 0;
-  double initial_gradient = 0, gradient = 0, relative_gradient = 0;
-  double time_assemble = 0, time_factor = 0, time_line_search = 0;
-  int cg_iterations = 0, cg_failures = 0, preconditioner_factorizations = 0;
-  double rounding_floor = 0;   // Energy_evaluator::rounding_floor() at the result
-  int polishing_iterations = 0; // Newton steps to balance every vertex (after convergence)
-  bool at_rounding_floor = false; // stopped by rounding (stagnation) within 10x that floor
-  bool converged = false;
-};
 
 // The energy is geodesically convex, its Hessian in the disk's coordinates is not: this
 // subtracts the Christoffel terms of the metric (2/(1-|z|^2))^2 |dz|^2 at each free vertex,
@@ -178,7 +167,7 @@ private:
     if(!use_direct_ && !pre_->factored_at(x_) && !pre_->factor(x_))
       use_direct_ = true;
     pre_->solve_in_single_precision();
-    st_.time_factor += seconds(t0);
+    st_.time_factorization += seconds(t0);
   }
 
   // the first phase, and the energy and gradient at the start
@@ -195,9 +184,9 @@ private:
     tolerance_ = polishing_ ? 0.0 : opt_.gradient_tolerance;
     E_ = assemble();
     st_.initial_energy = E_;
-    st_.initial_gradient = ev().hyperbolic_gradient_norm(x_, g_);
-    g0_ = st_.initial_gradient > 0 ? st_.initial_gradient : 1.0;
-    gnorm_ = st_.initial_gradient;
+    st_.initial_gradient_norm = ev().hyperbolic_gradient_norm(x_, g_);
+    g0_ = st_.initial_gradient_norm > 0 ? st_.initial_gradient_norm : 1.0;
+    gnorm_ = st_.initial_gradient_norm;
     grel_ = ev().hyperbolic_gradient_norm(x_, g_, true);
     best_grel_ = grel_;
   }
@@ -209,7 +198,7 @@ private:
     const double e = ev().evaluate(x_, g_, phase_ == Model ? nullptr : &H_, phase_ == Projected);
     if(phase_ == Exact)
       subtract_christoffel_terms(P_, x_, g_, H_);
-    st_.time_assemble += seconds(t);
+    st_.time_assembly += seconds(t);
     return e;
   }
 
@@ -279,7 +268,7 @@ private:
     }
     if(use_direct_ && phase_ != Model)
       ok = direct_direction(gv);
-    st_.time_factor += seconds(t1);
+    st_.time_factorization += seconds(t1);
     if(!ok) {
       if(phase_ != Projected) { // to the projected Hessian
         phase_ = Projected;
@@ -307,7 +296,7 @@ private:
     if(last_cg_ > refactor_cg_iterations) { // the preconditioner has drifted away
       if(!pre_->factor(x_)) {
         use_direct_ = true;
-        st_.time_factor += seconds(t1);
+        st_.time_factorization += seconds(t1);
         return false;
       }
       ++st_.preconditioner_factorizations;
@@ -317,7 +306,7 @@ private:
     st_.cg_iterations += k;
     last_cg_ = k;
     if(negative_curvature && phase_ == Exact) { // back to the projected Hessian
-      st_.time_factor += seconds(t1);
+      st_.time_factorization += seconds(t1);
       phase_ = Projected;
       last_cg_ = 0;
       E_ = assemble();
@@ -475,7 +464,7 @@ private:
         use_direct_ = true;
         phase_ = Projected;
       }
-      st_.time_factor += seconds(t4);
+      st_.time_factorization += seconds(t4);
     }
     if(phase_ == Model && (alpha < 1.0 || grel_ > 0.8 * grel_prev))
       ++slow_steps_;
@@ -493,13 +482,13 @@ private:
     if(polishing_)
       st_.polishing_iterations = st_.iterations - polish_start_;
     st_.energy = E_;
-    st_.gradient = gnorm_;
-    st_.relative_gradient = grel_;
+    st_.gradient_norm = gnorm_;
+    st_.relative_gradient_norm = grel_;
     st_.rounding_floor = ev().rounding_floor(x_);
     // Converged: the imbalance is below the tolerance or, where rounding makes that
     // impossible (Newton stagnates), within ten times what rounding the coordinates causes
-    st_.at_rounding_floor = stagnated_ && grel_ > opt_.gradient_tolerance && grel_ <= 10 * st_.rounding_floor;
-    st_.converged = st_.relative_gradient <= opt_.gradient_tolerance || st_.at_rounding_floor;
+    st_.converged_at_rounding_floor = stagnated_ && grel_ > opt_.gradient_tolerance && grel_ <= 10 * st_.rounding_floor;
+    st_.converged = st_.relative_gradient_norm <= opt_.gradient_tolerance || st_.converged_at_rounding_floor;
     return st_.converged ? OK : ERROR_NOT_CONVERGED;
   }
 

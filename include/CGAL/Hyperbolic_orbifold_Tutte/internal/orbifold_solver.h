@@ -13,7 +13,7 @@
 //  - dirichlet_energy.h:          Energy_evaluator (energy, gradient, Hessian, force imbalance)
 //  - connection_preconditioner.h: Connection_laplacian_preconditioner
 //  - tutte_initialization.h:      initialize_embedding
-//  - newton.h:                    Solver_options, Solver_statistics, minimize_energy (the steps of
+//  - newton.h:                    Solver_options, minimize_energy (filling the public Solver_statistics; the steps of
 //                                 Newton_minimizer), subtract_christoffel_terms
 //  - newton_on_region.h:          minimize_energy_on_region
 //  - one_ring_repair.h:           positive_triangle, One_ring_faces, repair_one_rings, snap_one_rings
