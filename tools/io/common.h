@@ -31,8 +31,9 @@
 
 namespace hot_tools {
 
-// The library's result of a check: an Error_code and a one-line message.
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+
+// The library's result of a check: an Error_code and a one-line message.
 using HOT::internal::Check_result;
 
 namespace io_impl {
