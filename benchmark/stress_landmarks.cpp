@@ -36,7 +36,9 @@
 
 #include "bench_common.h"
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+
+#include <io/read_and_check.h>
 
 #include <algorithm>
 #include <chrono>
@@ -130,7 +132,7 @@ struct Mesh_class
 static Mesh_class classify(const std::string& path, SM& sm, std::size_t max_vertices)
 {
   Mesh_class c;
-  const HOT::internal::Check_result rr = HOT::internal::read_mesh(path, sm);
+  const HOT::internal::Check_result rr = hot_tools::read_mesh(path, sm);
   if(!rr) {
     c.reason = std::string("cannot be read (") + error_code_name(rr.code) + ": " + rr.message + ")";
     return c;

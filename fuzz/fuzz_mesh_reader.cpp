@@ -26,8 +26,9 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
+
+#include <io/read_and_check.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -140,7 +141,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // embed, map, collection, landmarks: the mesh
   Surface_mesh m;
   HI::Mesh_info info;
-  const HI::Check_result r = HI::read_and_check_mesh(mesh_path, required_type, m, &info);
+  const HI::Check_result r = hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info);
   check_result(r);
   if(!r)
     return 0;
@@ -151,7 +152,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // embed, map, collection: the landmarks
   std::vector<SM_vertex> landmarks;
-  const HI::Check_result rl = HI::read_and_check_landmarks(cones_path, m, info.type, landmarks);
+  const HI::Check_result rl = hot_tools::read_and_check_landmarks(cones_path, m, info.type, landmarks);
   check_result(rl);
   if(rl) {
     std::set<SM_vertex> distinct(landmarks.begin(), landmarks.end());

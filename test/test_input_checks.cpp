@@ -1,7 +1,7 @@
 // Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Tests of the input checks (internal/input_checks.h) and readers (internal/io.h):
+// Tests of the input checks (internal/input_checks.h) and the tool's readers (tools/io/):
 // a corpus of hostile files is written into a temporary directory, and every case
 // must give its exact Error_code and a one-line message, never a crash or a hang.
 // Real meshes come from Debian's libcgal-demo (`--data DIR` with DIR/meshes/*.off).
@@ -17,7 +17,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
+
+#include <io/read_and_check.h>
 
 #include <chrono>
 #include <cmath>
@@ -99,7 +100,7 @@ bool one_line(const HI::Check_result& r) { return r.message.find('\n') == std::s
 
 HI::Check_result read_text(const std::string& name, const std::string& content, SM& sm)
 {
-  return HI::read_mesh(write_file(name, content), sm);
+  return hot_tools::read_mesh(write_file(name, content), sm);
 }
 
 // a file that must not be read: its name, what follows the common head, and a fragment of
@@ -128,7 +129,7 @@ template <class Mesh>
 HI::Check_result read_and_check(const std::string& path, Mesh& m, std::optional<HOT::Orbifold_type> type,
                                 HI::Mesh_info* info = nullptr)
 {
-  HI::Check_result r = HI::read_mesh(path, m);
+  HI::Check_result r = hot_tools::read_mesh(path, m);
   if(!r)
     return r;
   return HI::check_mesh(m, type, info);
@@ -406,7 +407,7 @@ TEST_CASE(invalid_structures_and_garbage)
   const std::string two = "OFF\n8 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 0 0\n-1 0 0\n0 -1 0\n0 0 -1\n"
                           "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 4 6 5\n3 4 5 7\n3 4 7 6\n3 5 6 7\n";
   SM sm;
-  CHECK(HI::read_mesh(write_file("glue.off", two), sm));
+  CHECK(hot_tools::read_mesh(write_file("glue.off", two), sm));
   const SM::Vertex_index v0(0), v4(4);
   std::vector<SM::Halfedge_index> to4;
   for(auto h : halfedges(sm))
@@ -421,7 +422,7 @@ TEST_CASE(invalid_structures_and_garbage)
 
   // a Surface_mesh with removed elements (garbage) is checked in iteration order
   SM octa;
-  CHECK(HI::read_mesh(write_file("garbage_octa.off", octa_off()), octa));
+  CHECK(hot_tools::read_mesh(write_file("garbage_octa.off", octa_off()), octa));
   CGAL::Euler::remove_face(halfedge(*std::next(faces(octa).begin(), 7), octa), octa);
   CHECK(octa.has_garbage());
   HI::Mesh_info info;
@@ -455,7 +456,7 @@ TEST_CASE(inconsistent_orientation)
   const std::string flip3 = std::string("OFF\n4 5 0\n") + tetra_vertices + tetra_faces + "3 1 2 0\n";
   CHECK_RESULT(read_text("flip_face3.off", flip3, sm), HOT::ERROR_NON_MANIFOLD, "the edge (0, 1) is shared by 3 faces (face 0 (line 7), face 1 (line 8), face 4 (line 11))");
   // CGAL's own shuffled test meshes are not consistently oriented
-  CHECK_RESULT(HI::read_mesh(mesh_path("tet-shuffled.off"), sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
+  CHECK_RESULT(hot_tools::read_mesh(mesh_path("tet-shuffled.off"), sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
 }
 
 TEST_CASE(several_components)
@@ -509,17 +510,17 @@ TEST_CASE(detect_type)
   SM sm;
   HOT::Orbifold_type t = HOT::Disk_type;
   CHECK(!HI::detect_orbifold_type(sm, t)); // empty
-  CHECK(HI::read_mesh(write_file("d_octa.off", octa_off()), sm));
+  CHECK(hot_tools::read_mesh(write_file("d_octa.off", octa_off()), sm));
   CHECK(HI::detect_orbifold_type(sm, t) && t == HOT::Sphere_type);
   CHECK(HI::count_border_loops(sm) == 0);
-  CHECK(HI::read_mesh(write_file("d_holed.off", octa_off({ 3 })), sm));
+  CHECK(hot_tools::read_mesh(write_file("d_holed.off", octa_off({ 3 })), sm));
   CHECK(HI::detect_orbifold_type(sm, t) && t == HOT::Disk_type);
-  CHECK(HI::read_mesh(write_file("d_annulus.off", octa_off({ 0, 6 })), sm));
+  CHECK(hot_tools::read_mesh(write_file("d_annulus.off", octa_off({ 0, 6 })), sm));
   t = HOT::Sphere_type;
   CHECK(!HI::detect_orbifold_type(sm, t) && t == HOT::Sphere_type);
   CHECK(HI::count_border_loops(sm) == 2);
   Poly poly;
-  CHECK(HI::read_mesh(write_file("d_holed_p.off", octa_off({ 3 })), poly));
+  CHECK(hot_tools::read_mesh(write_file("d_holed_p.off", octa_off({ 3 })), poly));
   CHECK(HI::detect_orbifold_type(poly, t) && t == HOT::Disk_type);
 }
 
@@ -553,7 +554,7 @@ TEST_CASE(non_finite_coordinates)
   CHECK_RESULT(read_and_check(write_file("big_flat.off", big_flat), sm, HOT::Sphere_type), HOT::ERROR_DEGENERATE_FACE,
                "face 0 has zero area");
   // check_mesh on a mesh whose point became NaN in memory
-  CHECK(HI::read_mesh(write_file("tetra_nan.off", tetra_off()), sm));
+  CHECK(hot_tools::read_mesh(write_file("tetra_nan.off", tetra_off()), sm));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   put(get(CGAL::vertex_point, sm), *std::next(vertices(sm).begin(), 2), Point(0, nan, 0));
   CHECK_RESULT(HI::check_mesh(sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2 has a non-finite");
@@ -746,17 +747,17 @@ TEST_CASE(garbage_files)
 TEST_CASE(file_errors)
 {
   SM sm;
-  CHECK_RESULT(HI::read_mesh(tmp_dir() + "/does_not_exist.off", sm), HOT::ERROR_READ_FAILED, "does_not_exist.off': no such file");
+  CHECK_RESULT(hot_tools::read_mesh(tmp_dir() + "/does_not_exist.off", sm), HOT::ERROR_READ_FAILED, "does_not_exist.off': no such file");
   std::filesystem::create_directories(tmp_dir() + "/dir.off");
-  CHECK_RESULT(HI::read_mesh(tmp_dir() + "/dir.off", sm), HOT::ERROR_READ_FAILED, "is a directory");
-  CHECK_RESULT(HI::read_mesh(write_file("mesh.xyz", tetra_off()), sm), HOT::ERROR_READ_FAILED, "unsupported file extension 'xyz'");
-  CHECK_RESULT(HI::read_mesh(write_file("noext", tetra_off()), sm), HOT::ERROR_READ_FAILED, "unsupported file extension");
-  CHECK_RESULT(HI::read_mesh("", sm), HOT::ERROR_READ_FAILED, "no file name");
-  CHECK_RESULT(HI::read_mesh(tmp_dir() + "/missing.ts", sm), HOT::ERROR_READ_FAILED, "no such file");
-  CHECK_RESULT(HI::read_mesh(write_file("UPPER.OFF", tetra_off()), sm), HOT::OK, ""); // extension case
+  CHECK_RESULT(hot_tools::read_mesh(tmp_dir() + "/dir.off", sm), HOT::ERROR_READ_FAILED, "is a directory");
+  CHECK_RESULT(hot_tools::read_mesh(write_file("mesh.xyz", tetra_off()), sm), HOT::ERROR_READ_FAILED, "unsupported file extension 'xyz'");
+  CHECK_RESULT(hot_tools::read_mesh(write_file("noext", tetra_off()), sm), HOT::ERROR_READ_FAILED, "unsupported file extension");
+  CHECK_RESULT(hot_tools::read_mesh("", sm), HOT::ERROR_READ_FAILED, "no file name");
+  CHECK_RESULT(hot_tools::read_mesh(tmp_dir() + "/missing.ts", sm), HOT::ERROR_READ_FAILED, "no such file");
+  CHECK_RESULT(hot_tools::read_mesh(write_file("UPPER.OFF", tetra_off()), sm), HOT::OK, ""); // extension case
   // a mesh that is not empty is cleared first, and left empty on failure
   CHECK(num_faces(sm) == 4);
-  CHECK_RESULT(HI::read_mesh(write_file("bad.off", "OFF\n-1 0 0\n"), sm), HOT::ERROR_READ_FAILED, "negative");
+  CHECK_RESULT(hot_tools::read_mesh(write_file("bad.off", "OFF\n-1 0 0\n"), sm), HOT::ERROR_READ_FAILED, "negative");
   CHECK(num_vertices(sm) == 0 && num_faces(sm) == 0);
 }
 
@@ -900,7 +901,7 @@ TEST_CASE(order_is_kept)
     CHECK_MSG(CGAL::IO::read_polygon_soup(mesh_path(name), cgal_points, cgal_faces), name);
 
     SM sm;
-    CHECK_RESULT(HI::read_mesh(mesh_path(name), sm), HOT::OK, "");
+    CHECK_RESULT(hot_tools::read_mesh(mesh_path(name), sm), HOT::OK, "");
     std::vector<Point> points;
     std::vector<std::vector<std::size_t> > fcs;
     mesh_to_soup(sm, points, fcs);
@@ -910,7 +911,7 @@ TEST_CASE(order_is_kept)
     CHECK_MSG(isolated || CGAL::is_valid_polygon_mesh(sm), name);
 
     Poly poly;
-    CHECK_RESULT(HI::read_mesh(mesh_path(name), poly), HOT::OK, "");
+    CHECK_RESULT(hot_tools::read_mesh(mesh_path(name), poly), HOT::OK, "");
     mesh_to_soup(poly, points, fcs);
     CHECK_MSG(points == cgal_points, name << ": Polyhedron_3 vertices differ from the file's");
     CHECK_MSG(fcs == cgal_faces, name << ": Polyhedron_3 faces differ from the file's");
@@ -926,8 +927,8 @@ TEST_CASE(soup_matches_cgal)
     std::vector<Point> cgal_points;
     std::vector<std::vector<std::size_t> > cgal_faces;
     CHECK_MSG(CGAL::IO::read_polygon_soup(mesh_path(name), cgal_points, cgal_faces), name);
-    HI::Polygon_soup soup;
-    CHECK_RESULT(HI::read_polygon_soup_file(mesh_path(name), soup), HOT::OK, "");
+    hot_tools::Polygon_soup soup;
+    CHECK_RESULT(hot_tools::read_polygon_soup_file(mesh_path(name), soup), HOT::OK, "");
     bool same = soup.points.size() == cgal_points.size() && soup.number_of_faces() == cgal_faces.size();
     for(std::size_t i = 0; same && i < cgal_points.size(); ++i)
       same = Point(soup.points[i][0], soup.points[i][1], soup.points[i][2]) == cgal_points[i];
@@ -989,9 +990,9 @@ TEST_CASE(real_meshes)
   }
   // files that cannot become a mesh
   SM sm;
-  CHECK_RESULT(HI::read_mesh(mesh_path("pig.stl"), sm), HOT::ERROR_NON_MANIFOLD, "non-manifold vertex");
-  CHECK_RESULT(HI::read_mesh(mesh_path("polygon_mesh.off"), sm), HOT::ERROR_NON_MANIFOLD, "non-manifold vertex");
-  CHECK_RESULT(HI::read_mesh(mesh_path("cube-shuffled.off"), sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
+  CHECK_RESULT(hot_tools::read_mesh(mesh_path("pig.stl"), sm), HOT::ERROR_NON_MANIFOLD, "non-manifold vertex");
+  CHECK_RESULT(hot_tools::read_mesh(mesh_path("polygon_mesh.off"), sm), HOT::ERROR_NON_MANIFOLD, "non-manifold vertex");
+  CHECK_RESULT(hot_tools::read_mesh(mesh_path("cube-shuffled.off"), sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
   // Polyhedron_3 agrees
   Poly poly;
   HI::Mesh_info info;
@@ -1007,7 +1008,7 @@ TEST_CASE(real_meshes)
 TEST_CASE(check_landmarks)
 {
   SM octa;
-  CHECK(HI::read_mesh(write_file("l_octa.off", octa_off()), octa));
+  CHECK(hot_tools::read_mesh(write_file("l_octa.off", octa_off()), octa));
   std::vector<SM::Vertex_index> out;
   CHECK_RESULT(HI::check_landmarks(octa, { 5, 3, 1, 0, 2 }, HOT::Sphere_type, out), HOT::OK, "");
   CHECK(out.size() == 5 && out[0] == SM::Vertex_index(5) && out[1] == SM::Vertex_index(3));
@@ -1024,7 +1025,7 @@ TEST_CASE(check_landmarks)
   CHECK(out.empty());
 
   SM fan;
-  CHECK(HI::read_mesh(write_file("l_fan.off", hexagon_fan_off()), fan));
+  CHECK(hot_tools::read_mesh(write_file("l_fan.off", hexagon_fan_off()), fan));
   CHECK_RESULT(HI::check_landmarks(fan, { 1, 2, 3, 4, 5 }, HOT::Disk_type, out), HOT::OK, "");
   CHECK_RESULT(HI::check_landmarks(fan, { 1, 2, 0, 4, 5 }, HOT::Disk_type, out), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
                "landmark 2 (vertex 0) is not on the boundary loop");
@@ -1032,7 +1033,7 @@ TEST_CASE(check_landmarks)
 
   Poly pfan;
   std::vector<boost::graph_traits<Poly>::vertex_descriptor> pout;
-  CHECK(HI::read_mesh(write_file("l_fan_p.off", hexagon_fan_off()), pfan));
+  CHECK(hot_tools::read_mesh(write_file("l_fan_p.off", hexagon_fan_off()), pfan));
   CHECK_RESULT(HI::check_landmarks(pfan, { 6, 2, 3, 4, 5 }, HOT::Disk_type, pout), HOT::OK, "");
   CHECK(pout.size() == 5 && pout[0]->point() == vertex_point(pfan, 6));
   CHECK_RESULT(HI::check_landmarks(pfan, { 6, 2, 3, 4, 0 }, HOT::Disk_type, pout), HOT::ERROR_LANDMARK_NOT_ON_BORDER, "vertex 0");
@@ -1041,32 +1042,32 @@ TEST_CASE(check_landmarks)
 TEST_CASE(read_landmarks)
 {
   std::vector<std::size_t> ids;
-  CHECK_RESULT(HI::read_landmarks(write_file("a.cones.txt", "12\n7\n3\n\n9\n1\n"), ids), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("a.cones.txt", "12\n7\n3\n\n9\n1\n"), ids), HOT::OK, "");
   CHECK((ids == std::vector<std::size_t>{ 12, 7, 3, 9, 1 }));
-  CHECK_RESULT(HI::read_landmarks(write_file("line.txt", "  5 4 3\t2 1  \n\n"), ids), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("line.txt", "  5 4 3\t2 1  \n\n"), ids), HOT::OK, "");
   CHECK((ids == std::vector<std::size_t>{ 5, 4, 3, 2, 1 }));
-  CHECK_RESULT(HI::read_landmarks(write_file("crlf.txt", "# cones\r\n1\r\n+2\r\n3 # third\r\n"), ids), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("crlf.txt", "# cones\r\n1\r\n+2\r\n3 # third\r\n"), ids), HOT::OK, "");
   CHECK((ids == std::vector<std::size_t>{ 1, 2, 3 }));
-  CHECK_RESULT(HI::read_landmarks(write_file("bear.selection.txt", "5745 3093 7079\n\n1 2 3 4\n"), ids), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("bear.selection.txt", "5745 3093 7079\n\n1 2 3 4\n"), ids), HOT::OK, "");
   CHECK((ids == std::vector<std::size_t>{ 5745, 3093, 7079 }));
-  CHECK_RESULT(HI::read_landmarks(write_file("faces.selection.txt", "\n1 2 3\n"), ids), HOT::ERROR_READ_FAILED,
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("faces.selection.txt", "\n1 2 3\n"), ids), HOT::ERROR_READ_FAILED,
                "line 1 of the selection file holds no vertex index");
   CHECK(ids.empty());
-  CHECK_RESULT(HI::read_landmarks(write_file("amb.txt", "1 2 3\n4 5\n"), ids), HOT::ERROR_READ_FAILED,
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("amb.txt", "1 2 3\n4 5\n"), ids), HOT::ERROR_READ_FAILED,
                "line 1: ambiguous layout");
-  CHECK_RESULT(HI::read_landmarks(write_file("amb2.txt", "1\n2\n3 4\n"), ids), HOT::ERROR_READ_FAILED, "line 3: ambiguous layout");
-  CHECK_RESULT(HI::read_landmarks(write_file("garbage.txt", "1\n2\nfoo\n"), ids), HOT::ERROR_READ_FAILED,
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("amb2.txt", "1\n2\n3 4\n"), ids), HOT::ERROR_READ_FAILED, "line 3: ambiguous layout");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("garbage.txt", "1\n2\nfoo\n"), ids), HOT::ERROR_READ_FAILED,
                "line 3: 'foo' is not a vertex index");
   CHECK(ids.empty());
-  CHECK_RESULT(HI::read_landmarks(write_file("neg.txt", "1\n-3\n"), ids), HOT::ERROR_READ_FAILED, "line 2: negative vertex index '-3'");
-  CHECK_RESULT(HI::read_landmarks(write_file("huge.txt", "1\n99999999999999999999999\n"), ids), HOT::ERROR_READ_FAILED,
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("neg.txt", "1\n-3\n"), ids), HOT::ERROR_READ_FAILED, "line 2: negative vertex index '-3'");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("huge.txt", "1\n99999999999999999999999\n"), ids), HOT::ERROR_READ_FAILED,
                "line 2: vertex index '99999999999999999999999' is too large");
-  CHECK_RESULT(HI::read_landmarks(write_file("trail.txt", "12abc\n"), ids), HOT::ERROR_READ_FAILED, "line 1: '12abc' is not");
-  CHECK_RESULT(HI::read_landmarks(write_file("float.txt", "1.0\n"), ids), HOT::ERROR_READ_FAILED, "'1.0' is not");
-  CHECK_RESULT(HI::read_landmarks(write_file("empty.txt", ""), ids), HOT::ERROR_READ_FAILED, "holds no vertex index");
-  CHECK_RESULT(HI::read_landmarks(write_file("blank.txt", " \n# nothing\n"), ids), HOT::ERROR_READ_FAILED, "holds no vertex index");
-  CHECK_RESULT(HI::read_landmarks(tmp_dir() + "/nope.txt", ids), HOT::ERROR_READ_FAILED, "no such file");
-  const HI::Check_result g = HI::read_landmarks(write_file("bin.txt", garbage(300, 7)), ids);
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("trail.txt", "12abc\n"), ids), HOT::ERROR_READ_FAILED, "line 1: '12abc' is not");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("float.txt", "1.0\n"), ids), HOT::ERROR_READ_FAILED, "'1.0' is not");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("empty.txt", ""), ids), HOT::ERROR_READ_FAILED, "holds no vertex index");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("blank.txt", " \n# nothing\n"), ids), HOT::ERROR_READ_FAILED, "holds no vertex index");
+  CHECK_RESULT(hot_tools::read_landmarks(tmp_dir() + "/nope.txt", ids), HOT::ERROR_READ_FAILED, "no such file");
+  const HI::Check_result g = hot_tools::read_landmarks(write_file("bin.txt", garbage(300, 7)), ids);
   CHECK(g.code == HOT::ERROR_READ_FAILED && one_line(g));
 }
 
@@ -1086,7 +1087,7 @@ TEST_CASE(landmarks_end_to_end)
   for(int k = 0; k < 5; ++k)
     file += std::to_string(border[k * border.size() / 5]) + "\n";
   std::vector<std::size_t> ids;
-  CHECK_RESULT(HI::read_landmarks(write_file("devil.cones.txt", file), ids), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_landmarks(write_file("devil.cones.txt", file), ids), HOT::OK, "");
   std::vector<SM::Vertex_index> lm;
   CHECK_RESULT(HI::check_landmarks(sm, ids, HOT::Disk_type, lm), HOT::OK, "");
   CHECK(lm.size() == 5);
@@ -1111,7 +1112,7 @@ TEST_CASE(performance)
 {
   // a closed genus-0 mesh: the surface of an n x n x n grid cube (6 n^2 + 2 vertices)
   const int n = 200;
-  HI::Polygon_soup soup;
+  hot_tools::Polygon_soup soup;
   std::vector<int> id((n + 1) * (n + 1) * (n + 1), -1);
   auto vid = [&](int x, int y, int z) {
     int& i = id[(x * (n + 1) + y) * (n + 1) + z];
@@ -1144,7 +1145,7 @@ TEST_CASE(performance)
         }
   SM sm;
   auto t0 = std::chrono::steady_clock::now();
-  CHECK_RESULT(HI::polygon_soup_to_mesh(soup, sm), HOT::OK, "");
+  CHECK_RESULT(hot_tools::polygon_soup_to_mesh(soup, sm), HOT::OK, "");
   const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t0 = std::chrono::steady_clock::now();
   HI::Mesh_info info;
@@ -1158,7 +1159,7 @@ TEST_CASE(performance)
 
   // a fan of 200K triangles around one vertex (a disk): Euler::add_face would be
   // quadratic here; our builder and checks are linear
-  HI::Polygon_soup fan;
+  hot_tools::Polygon_soup fan;
   const std::size_t k = 200000;
   fan.points.push_back({ { 0, 0, 0 } });
   for(std::size_t i = 0; i <= k; ++i) {
@@ -1170,7 +1171,7 @@ TEST_CASE(performance)
     fan.end_face();
   }
   t0 = std::chrono::steady_clock::now();
-  CHECK_RESULT(HI::polygon_soup_to_mesh(fan, sm), HOT::OK, "");
+  CHECK_RESULT(hot_tools::polygon_soup_to_mesh(fan, sm), HOT::OK, "");
   CHECK_RESULT(HI::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
   std::vector<SM::Vertex_index> lm;
   CHECK_RESULT(HI::check_landmarks(sm, { 0, 1, 1000, 100000, k + 1 }, HOT::Disk_type, lm), HOT::OK, "");
@@ -1349,32 +1350,32 @@ TEST_CASE(read_and_check_path)
   HI::Mesh_info info;
   // no face, automatic type: "no face" (it used to be "neither closed nor a disk")
   const std::string nofaces = write_file("rc_nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
-  CHECK_RESULT(HI::read_and_check_mesh(nofaces, std::nullopt, sm, &info), HOT::ERROR_EMPTY_MESH,
+  CHECK_RESULT(hot_tools::read_and_check_mesh(nofaces, std::nullopt, sm, &info), HOT::ERROR_EMPTY_MESH,
                nofaces + ": the mesh has no face (it has 3 vertices but no face)");
   // two disks: several components, not "neither closed nor a disk"
   const std::string two = write_file("rc_two.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n");
-  CHECK_RESULT(HI::read_and_check_mesh(two, std::nullopt, sm, &info), HOT::ERROR_SEVERAL_COMPONENTS, "rc_two.off: the mesh has 2");
+  CHECK_RESULT(hot_tools::read_and_check_mesh(two, std::nullopt, sm, &info), HOT::ERROR_SEVERAL_COMPONENTS, "rc_two.off: the mesh has 2");
   // reading errors keep their own prefix; the type is detected or required
-  CHECK_RESULT(HI::read_and_check_mesh(tmp_dir() + "/rc_none.off", std::nullopt, sm), HOT::ERROR_READ_FAILED, "rc_none.off': no such file");
+  CHECK_RESULT(hot_tools::read_and_check_mesh(tmp_dir() + "/rc_none.off", std::nullopt, sm), HOT::ERROR_READ_FAILED, "rc_none.off': no such file");
   const std::string fan = write_file("rc_fan.off", hexagon_fan_off());
-  CHECK_RESULT(HI::read_and_check_mesh(fan, std::nullopt, sm, &info), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_and_check_mesh(fan, std::nullopt, sm, &info), HOT::OK, "");
   CHECK(info.type_known && info.type == HOT::Disk_type);
-  CHECK_RESULT(HI::read_and_check_mesh(fan, HOT::Sphere_type, sm, &info), HOT::ERROR_WRONG_TOPOLOGY, "rc_fan.off: the sphere-type");
-  CHECK_RESULT(HI::read_and_check_mesh(fan, HOT::Disk_type, sm, &info), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_and_check_mesh(fan, HOT::Sphere_type, sm, &info), HOT::ERROR_WRONG_TOPOLOGY, "rc_fan.off: the sphere-type");
+  CHECK_RESULT(hot_tools::read_and_check_mesh(fan, HOT::Disk_type, sm, &info), HOT::OK, "");
   // landmarks: the file name, then the reason; refused landmarks are not returned
   std::vector<SM::Vertex_index> lm;
   const std::string inner = write_file("rc_inner.txt", "1 2 0 4 5\n");
-  CHECK_RESULT(HI::read_and_check_landmarks(inner, sm, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
+  CHECK_RESULT(hot_tools::read_and_check_landmarks(inner, sm, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
                inner + ": landmark 2 (vertex 0) is not on the boundary loop");
   CHECK(lm.empty());
-  CHECK_RESULT(HI::read_and_check_landmarks(write_file("rc_ok.txt", "6\n2\n3\n4\n5\n"), sm, HOT::Disk_type, lm), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_and_check_landmarks(write_file("rc_ok.txt", "6\n2\n3\n4\n5\n"), sm, HOT::Disk_type, lm), HOT::OK, "");
   CHECK(lm.size() == 5 && lm[0] == SM::Vertex_index(6));
   // a bad token is reported before the layout (binary garbage used to be an "ambiguous layout")
-  CHECK_RESULT(HI::read_and_check_landmarks(write_file("rc_tok.txt", "1 2 x\n3 4\n"), sm, HOT::Disk_type, lm),
+  CHECK_RESULT(hot_tools::read_and_check_landmarks(write_file("rc_tok.txt", "1 2 x\n3 4\n"), sm, HOT::Disk_type, lm),
                HOT::ERROR_READ_FAILED, "line 1: 'x' is not a vertex index");
-  const HI::Check_result g = HI::read_and_check_landmarks(write_file("rc_bin.txt", garbage(500, 3)), sm, HOT::Disk_type, lm);
+  const HI::Check_result g = hot_tools::read_and_check_landmarks(write_file("rc_bin.txt", garbage(500, 3)), sm, HOT::Disk_type, lm);
   CHECK_MSG(g.code == HOT::ERROR_READ_FAILED && !contains(g.message, "ambiguous") && one_line(g), g.message);
-  CHECK_RESULT(HI::read_and_check_landmarks(write_file("rc_amb.txt", "1 2 3\n4 5\n"), sm, HOT::Disk_type, lm),
+  CHECK_RESULT(hot_tools::read_and_check_landmarks(write_file("rc_amb.txt", "1 2 3\n4 5\n"), sm, HOT::Disk_type, lm),
                HOT::ERROR_READ_FAILED, "line 1: ambiguous layout");
 
   // the one-call embedding of the library gives check_mesh()'s reason too when the type
@@ -1386,12 +1387,12 @@ TEST_CASE(read_and_check_path)
                                                  HOT::parameters::embedding_statistics(&st)) == HOT::ERROR_EMPTY_MESH);
   CHECK_MSG(contains(st.message, "the mesh has no face"), st.message);
   SM disks;
-  CHECK(HI::read_mesh(two, disks));
+  CHECK(hot_tools::read_mesh(two, disks));
   auto uv2 = disks.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
   CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(disks, std::vector<SM::Vertex_index>(), uv2,
                                                  HOT::parameters::embedding_statistics(&st)) == HOT::ERROR_SEVERAL_COMPONENTS);
   SM annulus;
-  CHECK(HI::read_mesh(write_file("rc_annulus.off", octa_off({ 0, 6 })), annulus));
+  CHECK(hot_tools::read_mesh(write_file("rc_annulus.off", octa_off({ 0, 6 })), annulus));
   auto uv3 = annulus.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
   CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(annulus, std::vector<SM::Vertex_index>(), uv3,
                                                  HOT::parameters::embedding_statistics(&st)) == HOT::ERROR_WRONG_TOPOLOGY);
@@ -1426,13 +1427,13 @@ void run_fuzz_input(const std::string& name, const std::string& input)
   const std::string cones = write_file(name + ((s / 15) % 2 ? ".selection.txt" : ".txt"), input.substr(3 + rest - L));
   SM sm;
   HI::Mesh_info info;
-  const HI::Check_result r = HI::read_and_check_mesh(mesh, type, sm, &info);
+  const HI::Check_result r = hot_tools::read_and_check_mesh(mesh, type, sm, &info);
   CHECK_MSG(r.code >= 0 && r.code < HOT::number_of_error_codes && one_line(r) && (r || !r.message.empty()), name << ": " << r.message);
   if(!r)
     return;
   CHECK_MSG(info.type_known && CGAL::is_valid_polygon_mesh(sm), name);
   std::vector<SM::Vertex_index> lm;
-  const HI::Check_result rl = HI::read_and_check_landmarks(cones, sm, info.type, lm);
+  const HI::Check_result rl = hot_tools::read_and_check_landmarks(cones, sm, info.type, lm);
   CHECK_MSG(one_line(rl) && (rl || (!rl.message.empty() && lm.empty())), name << ": " << rl.message);
   CHECK_MSG(!rl || std::set<SM::Vertex_index>(lm.begin(), lm.end()).size() == lm.size(), name);
 }
@@ -1448,7 +1449,7 @@ TEST_CASE(fuzz_regressions)
                             "VRTX -2147483646 0 1 0\nTRGL -2147483648 -2147483647 -2147483646\nEND\n";
   run_fuzz_input("fuzz_gocad_int_min", std::string("\x04\x09\x00", 3) + gocad + "0 1 2 3 4");
   SM sm;
-  CHECK_RESULT(HI::read_mesh(tmp_dir() + "/fuzz_gocad_int_min.ts", sm), HOT::OK, "");
+  CHECK_RESULT(hot_tools::read_mesh(tmp_dir() + "/fuzz_gocad_int_min.ts", sm), HOT::OK, "");
   CHECK(num_vertices(sm) == 3 && num_faces(sm) == 1);
 }
 

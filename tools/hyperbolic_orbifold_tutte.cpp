@@ -18,9 +18,10 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/io.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/svg_writer.h>
+
+#include "io/read_and_check.h"
+#include "io/svg.h"
 
 #include <sys/stat.h>
 
@@ -169,7 +170,7 @@ int run_tile(int argc, char** argv)
           << " corners, area " << multiple << pi;
   else
     title << "disk-type orbifold, " << k << " corners of angle " << pi << "/2, area " << multiple << pi << "/2";
-  write_file_atomically(svg, [&](std::ostream& os) { HOT::internal::write_tile_svg(os, tile, depth, title.str()); });
+  write_file_atomically(svg, [&](std::ostream& os) { hot_tools::write_tile_svg(os, tile, depth, title.str()); });
   std::cout << "wrote " << svg << " (" << (type == HOT::Sphere_type ? "sphere" : "disk") << ", " << k
             << " cones, depth " << depth << ")" << std::endl;
   return EXIT_SUCCESS;
@@ -206,7 +207,7 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
                          const std::string& title)
 {
   typedef HOT::internal::Complex<double> C;
-  HOT::internal::Poincare_svg svg;
+  hot_tools::Poincare_svg svg;
   svg.begin(os, title);
   const int n = tile.number_of_corners();
   std::vector<C> corners;
@@ -242,7 +243,7 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
   }
   svg.path(os, svg.geodesic_path(corners, true), "none", "#c1121f", 1.5);
   for(int i = 0; i < n; ++i)
-    svg.dot(os, corners[i], 6, HOT::internal::Poincare_svg::palette(tile.corner_cone(i), tile.number_of_cones(), 0.75, 1.0));
+    svg.dot(os, corners[i], 6, hot_tools::Poincare_svg::palette(tile.corner_cone(i), tile.number_of_cones(), 0.75, 1.0));
   (void)landmarks;
   svg.end(os);
 }
@@ -308,14 +309,14 @@ int run_embed(int argc, char** argv)
   // reading and checking: the same calls as the fuzz target (fuzz/fuzz_mesh_reader.cpp)
   Surface_mesh m;
   HOT::internal::Mesh_info info;
-  HOT::internal::Check_result r = HOT::internal::read_and_check_mesh(mesh_path, required_type, m, &info);
+  HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info);
   if(!r)
     throw Failure{r.code, r.message};
   const HOT::Orbifold_type type = info.type;
   if(order_name.empty())
     order_name = (type == HOT::Sphere_type) ? "tsp" : "given";
   std::vector<SM_vertex> landmarks;
-  r = HOT::internal::read_and_check_landmarks(cones_path, m, type, landmarks);
+  r = hot_tools::read_and_check_landmarks(cones_path, m, type, landmarks);
   if(!r)
     throw Failure{r.code, r.message};
   std::vector<std::size_t> cone_indices;
@@ -416,10 +417,10 @@ struct Embedded
 void read_and_check(const std::string& mesh_path, const std::string& cones_path, Embedded& e)
 {
   HOT::internal::Mesh_info info;
-  HOT::internal::Check_result r = HOT::internal::read_and_check_mesh(mesh_path, std::nullopt, e.mesh, &info);
+  HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, e.mesh, &info);
   if(!r) throw Failure{r.code, r.message};
   e.type = info.type;
-  r = HOT::internal::read_and_check_landmarks(cones_path, e.mesh, e.type, e.landmarks);
+  r = hot_tools::read_and_check_landmarks(cones_path, e.mesh, e.type, e.landmarks);
   if(!r) throw Failure{r.code, r.message};
 }
 
@@ -548,7 +549,7 @@ typedef std::vector<std::pair<std::string, std::string> > Manifest; // (mesh pat
 Manifest read_manifest(const std::string& manifest)
 {
   std::string manifest_text; // a missing file, a directory etc. get their own reason
-  const HOT::internal::Check_result mr = HOT::internal::io_impl::read_file_contents(manifest, manifest_text);
+  const HOT::internal::Check_result mr = hot_tools::read_file_contents(manifest, manifest_text);
   if(!mr)
     throw Failure{mr.code, mr.message};
   std::istringstream in(manifest_text);
@@ -772,7 +773,7 @@ int run_landmarks(int argc, char** argv)
   const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
   const long k = opt.get_int("count", 1, 100000);
   Surface_mesh m;
-  const HOT::internal::Check_result r = HOT::internal::read_and_check_mesh(mesh_path, std::nullopt, m);
+  const HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, m);
   if(!r)
     throw Failure{r.code, r.message};
   if(static_cast<std::size_t>(k) > num_vertices(m))

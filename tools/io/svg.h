@@ -2,20 +2,29 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
-#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SVG_WRITER_H
-#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SVG_WRITER_H
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_SVG_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_SVG_H
+
+// The command-line tool's SVG pictures of the Poincare disk: tiles and their images.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
 
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Hyperbolic_orbifold_Tutte {
-namespace internal {
+#include <CGAL/disable_warnings.h>
+
+/// \file svg.h
+
+namespace hot_tools {
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+using HOT::internal::Complex;
 
 // Writes pictures of the Poincare disk as SVG: geodesic segments are circular arcs
 // (SVG "A" commands), so the files stay small and exact at any zoom.
@@ -186,8 +195,8 @@ void write_tile_svg(std::ostream& os, const Tile& tile, int depth, const std::st
   svg.end(os);
 }
 
-} // namespace internal
-} // namespace Hyperbolic_orbifold_Tutte
-} // namespace CGAL
+} // namespace hot_tools
 
-#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SVG_WRITER_H
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_SVG_H
