@@ -9,6 +9,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/hyperbolic_energy.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -204,17 +205,12 @@ Error_code build_flat_topology(const SeamMesh& mesh,
     return ERROR_WRONG_PARAMETER;
   }
   std::vector<int> loop;
-  {
-    halfedge_descriptor h = bhd;
-    std::size_t guard = 0;
-    do {
-      loop.push_back(index_of(target(h, mesh)));
-      h = next(h, mesh);
-      if(++guard > static_cast<std::size_t>(P.n) + 1) {
-        message = "the border of the cut mesh is not a simple loop";
-        return ERROR_CUT_FAILED;
-      }
-    } while(h != bhd);
+  if(!walk_next_cycle(bhd, mesh, static_cast<std::size_t>(P.n) + 1, [&](halfedge_descriptor h) {
+       loop.push_back(index_of(target(h, mesh)));
+       return true;
+     })) {
+    message = "the border of the cut mesh is not a simple loop";
+    return ERROR_CUT_FAILED;
   }
   std::reverse(loop.begin(), loop.end());
   {
