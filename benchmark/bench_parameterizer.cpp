@@ -48,8 +48,8 @@ static double euclidean_orbifold_time(SM& sm, const std::vector<SM_vertex>& cone
   SEM sem = sm.add_property_map<SM_edge, bool>("e:bench_seam", false).first;
   SVM svm = sm.add_property_map<SM_vertex, bool>("v:bench_seam", false).first;
   Mesh mesh(sm, sem, svm);
-  const auto cut = HOT::internal::compute_cut_through_landmarks(sm, cones4, get(CGAL::vertex_point, sm));
-  ok = cut.ok && HOT::internal::add_cut_to_seam_mesh(mesh, sm, cut);
+  const auto cut = HOT::compute_cut_through_landmarks(sm, cones4, get(CGAL::vertex_point, sm));
+  ok = cut.ok && HOT::add_cut_to_seam_mesh(mesh, sm, cut);
   std::unordered_map<vertex_descriptor, int> indices;
   int counter = 0;
   for(vertex_descriptor vd : vertices(mesh))

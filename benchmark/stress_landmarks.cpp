@@ -132,7 +132,7 @@ struct Mesh_class
 static Mesh_class classify(const std::string& path, SM& sm, std::size_t max_vertices)
 {
   Mesh_class c;
-  const HOT::internal::Check_result rr = hot_tools::read_mesh(path, sm);
+  const HOT::Status rr = hot_tools::read_mesh(path, sm);
   if(!rr) {
     c.reason = std::string("cannot be read (") + error_code_name(rr.code) + ": " + rr.message + ")";
     return c;
@@ -168,7 +168,7 @@ static Mesh_class classify(const std::string& path, SM& sm, std::size_t max_vert
     }
     ++ncomp;
   }
-  const std::size_t loops = HOT::internal::count_border_loops(sm);
+  const std::size_t loops = HOT::count_border_loops(sm);
   const long long chi = static_cast<long long>(num_vertices(sm)) - static_cast<long long>(num_edges(sm)) +
                         static_cast<long long>(num_faces(sm));
   std::ostringstream topo;
@@ -188,7 +188,7 @@ static Mesh_class classify(const std::string& path, SM& sm, std::size_t max_vert
     c.reason = os.str();
     return c;
   }
-  const HOT::internal::Check_result r = HOT::internal::check_mesh(sm, c.type);
+  const HOT::Status r = HOT::check_mesh(sm, c.type);
   if(!r) {
     c.reason = std::string("the library refuses the mesh itself (") + error_code_name(r.code) + ": " + r.message + ")";
     return c;

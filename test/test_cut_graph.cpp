@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 //
-// Test of include/CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h
+// Test of include/CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h and landmark_tour.h
 //
 // Usage: test_cut_graph [DATA_DIR]
 //   DATA_DIR contains the `meshes/` folder of Debian's libcgal-demo data
@@ -18,7 +18,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -43,7 +44,8 @@ typedef K::Point_3                                          Point;
 typedef CGAL::Surface_mesh<Point>                           SM;
 typedef CGAL::Polyhedron_3<K>                               Poly;
 
-namespace HOT = CGAL::Hyperbolic_orbifold_Tutte::internal;
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+namespace HI = CGAL::Hyperbolic_orbifold_Tutte::internal;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 // ---------------------------------------------------------------------------
@@ -439,8 +441,8 @@ static void test_icosphere_cuts()
     Rng rng(c.seed);
     std::vector<std::size_t> idx = random_indices(vs.size(), c.k, rng);
     if(c.tsp) {
-      const auto order = HOT::compute_tsp_landmark_order(sm, pick<SM>(vs, idx), get(CGAL::vertex_point, sm));
-      const auto order_p = HOT::compute_tsp_landmark_order(poly, pick<Poly>(vp, idx), get(CGAL::vertex_point, poly));
+      const auto order = HOT::compute_landmark_tour(sm, pick<SM>(vs, idx), get(CGAL::vertex_point, sm));
+      const auto order_p = HOT::compute_landmark_tour(poly, pick<Poly>(vp, idx), get(CGAL::vertex_point, poly));
       CHECK(is_permutation_of_iota(order, c.k) && order == order_p,
             "icosphere k=" << c.k << ": TSP order is a permutation and identical on Surface_mesh and Polyhedron_3");
       std::vector<std::size_t> tmp;
@@ -500,7 +502,7 @@ static void test_bad_inputs()
   CHECK(bad(ro), "out-of-range landmark -> ok=false (" << ro.message << ")");
   auto rn = HOT::compute_cut_through_landmarks(sm, std::vector<SM::Vertex_index>{vs[0], SM::null_vertex(), vs[9]}, vpm);
   CHECK(bad(rn), "null landmark -> ok=false (" << rn.message << ")");
-  CHECK(HOT::compute_tsp_landmark_order(sm, std::vector<SM::Vertex_index>{vs[0], vs[5], vs[0]}, vpm).empty(),
+  CHECK(HOT::compute_landmark_tour(sm, std::vector<SM::Vertex_index>{vs[0], vs[5], vs[0]}, vpm).empty(),
         "compute_tsp_landmark_order returns an empty order for duplicate landmarks");
 
   // A sphere with one face missing: it has a border.
@@ -669,11 +671,11 @@ static void test_tsp_matrix()
       std::vector<std::size_t> perm(k);
       for(std::size_t i = 0; i < k; ++i) perm[i] = i;
       double brute = std::numeric_limits<double>::infinity();
-      do { brute = (std::min)(brute, HOT::tour_length(D, perm)); } while(std::next_permutation(perm.begin() + 1, perm.end()));
-      const auto hk = HOT::shortest_tour_held_karp(D);
-      const auto he = HOT::shortest_tour_heuristic(D);
+      do { brute = (std::min)(brute, HI::tour_length(D, perm)); } while(std::next_permutation(perm.begin() + 1, perm.end()));
+      const auto hk = HI::shortest_tour_held_karp(D);
+      const auto he = HI::shortest_tour_heuristic(D);
       if(!is_permutation_of_iota(hk, k) || !is_permutation_of_iota(he, k)) all_perm = false;
-      const double lhk = HOT::tour_length(D, hk), lhe = HOT::tour_length(D, he);
+      const double lhk = HI::tour_length(D, hk), lhe = HI::tour_length(D, he);
       if(std::abs(lhk - brute) > 1e-9 * brute) { all_agree = false; detail << " k=" << k << " seed=" << seed << " HK=" << lhk << " brute=" << brute; }
       if(lhe < brute - 1e-9 * brute) heuristic_not_better = false;
     }
@@ -697,8 +699,8 @@ static void test_tsp_matrix()
     std::vector<std::size_t> hull(k);
     for(std::size_t i = 0; i < k; ++i) hull[i] = i;
     std::sort(hull.begin(), hull.end(), [&](std::size_t a, std::size_t b) { return angle[a] < angle[b]; });
-    const auto he = HOT::shortest_tour(D);
-    CHECK(std::abs(HOT::tour_length(D, he) - HOT::tour_length(D, hull)) < 1e-9,
+    const auto he = HI::shortest_tour(D);
+    CHECK(std::abs(HI::tour_length(D, he) - HI::tour_length(D, hull)) < 1e-9,
           "k=24 points on an ellipse: heuristic tour (NN + 2-opt) has the hull-order length");
   }
 
@@ -715,16 +717,16 @@ static void test_tsp_matrix()
       std::vector<std::size_t> tour(k);
       for(std::size_t i = 0; i < k; ++i) tour[i] = i;
       for(std::size_t i = k - 1; i > 0; --i) std::swap(tour[i], tour[rng.below(i + 1)]);
-      const auto ref = HOT::open_tour_at_longest_edge(D, tour);
+      const auto ref = HI::open_tour_at_longest_edge(D, tour);
       double longest = 0.;
       for(std::size_t i = 0; i < k; ++i) longest = (std::max)(longest, D[tour[i]][tour[(i + 1) % k]]);
       ok = is_permutation_of_iota(ref, k) && D[ref.front()][ref.back()] == longest && ref.front() < ref.back();
       for(std::size_t r = 0; r < k && ok; ++r) {
         std::vector<std::size_t> t2 = tour;
         std::rotate(t2.begin(), t2.begin() + r, t2.end());
-        ok = HOT::open_tour_at_longest_edge(D, t2) == ref;
+        ok = HI::open_tour_at_longest_edge(D, t2) == ref;
         std::reverse(t2.begin(), t2.end());
-        ok = ok && HOT::open_tour_at_longest_edge(D, t2) == ref;
+        ok = ok && HI::open_tour_at_longest_edge(D, t2) == ref;
       }
     }
     CHECK(ok, "open_tour_at_longest_edge: removes a longest edge, starts at its smaller endpoint, independent of tour rotation/orientation");
@@ -782,7 +784,7 @@ static void test_tsp_great_circle(std::size_t k)
   if(pos[2] < pos[3]) { for(std::size_t i = 0; i < k; ++i) expected.push_back(pos[(2 + k - i) % k]); }
   else                { for(std::size_t i = 0; i < k; ++i) expected.push_back(pos[(3 + i) % k]); }
 
-  const auto order = HOT::compute_tsp_landmark_order(sm, L, get(CGAL::vertex_point, sm));
+  const auto order = HOT::compute_landmark_tour(sm, L, get(CGAL::vertex_point, sm));
   std::ostringstream got;
   for(std::size_t i : order) got << i << ' ';
   CHECK(order == expected, "great circle k=" << k << (k <= 12 ? " (Held-Karp)" : " (NN + 2-opt)")
@@ -821,7 +823,7 @@ static void test_file_meshes(const std::string& dir, double& total_chords_defaul
       Rng rng(static_cast<unsigned>(97 * m + c.k));
       auto L = pick<SM>(vs, random_indices(vs.size(), c.k, rng));
       if(c.tsp) {
-        const auto order = HOT::compute_tsp_landmark_order(sm, L, vpm);
+        const auto order = HOT::compute_landmark_tour(sm, L, vpm);
         CHECK(is_permutation_of_iota(order, c.k), names[m] << " k=" << c.k << ": TSP order is a permutation of the landmarks");
         if(order.size() == c.k) L = reorder<SM>(L, order);
       }
@@ -858,8 +860,8 @@ static void test_file_meshes(const std::string& dir, double& total_chords_defaul
         const auto vp = vertex_list(poly);
         Rng rng(4242);
         const auto idx = random_indices(vs.size(), 10, rng);
-        const auto order = HOT::compute_tsp_landmark_order(sm, pick<SM>(vs, idx), vpm);
-        const auto order_p = HOT::compute_tsp_landmark_order(poly, pick<Poly>(vp, idx), get(CGAL::vertex_point, poly));
+        const auto order = HOT::compute_landmark_tour(sm, pick<SM>(vs, idx), vpm);
+        const auto order_p = HOT::compute_landmark_tour(poly, pick<Poly>(vp, idx), get(CGAL::vertex_point, poly));
         CHECK(order.size() == 10 && order == order_p, names[m] << ": TSP order identical for Surface_mesh and Polyhedron_3");
         std::vector<std::size_t> oidx;
         for(std::size_t i : order) oidx.push_back(idx[i]);

@@ -1,7 +1,7 @@
 // Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Tests of the input checks (internal/input_checks.h) and the tool's readers (tools/io/):
+// Tests of the input checks (check_input.h) and the tool's readers (tools/io/):
 // a corpus of hostile files is written into a temporary directory, and every case
 // must give its exact Error_code and a one-line message, never a crash or a hang.
 // Real meshes come from Debian's libcgal-demo (`--data DIR` with DIR/meshes/*.off).
@@ -16,7 +16,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 
 #include <io/read_and_check.h>
 
@@ -85,12 +85,12 @@ std::string mesh_path(const std::string& name)
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
-bool one_line(const HI::Check_result& r) { return r.message.find('\n') == std::string::npos; }
+bool one_line(const HOT::Status& r) { return r.message.find('\n') == std::string::npos; }
 
 // checks code, a message fragment and that the message is one line
 #define CHECK_RESULT(r, expected_code, fragment)                                                     \
   do {                                                                                               \
-    const HI::Check_result hot_r_ = (r);                                                             \
+    const HOT::Status hot_r_ = (r);                                                             \
     CHECK_MSG(hot_r_.code == (expected_code), "code " << hot_r_.code << ", expected " << (expected_code) \
               << ": " << hot_r_.message);                                                            \
     CHECK_MSG(contains(hot_r_.message, fragment), "message '" << hot_r_.message << "' lacks '" << fragment << "'"); \
@@ -98,7 +98,7 @@ bool one_line(const HI::Check_result& r) { return r.message.find('\n') == std::s
     CHECK_MSG(hot_r_.code == HOT::OK ? bool(hot_r_) : !bool(hot_r_), "operator bool");              \
   } while(0)
 
-HI::Check_result read_text(const std::string& name, const std::string& content, SM& sm)
+HOT::Status read_text(const std::string& name, const std::string& content, SM& sm)
 {
   return hot_tools::read_mesh(write_file(name, content), sm);
 }
@@ -126,13 +126,13 @@ void check_unreadable(SM& sm, const std::string& head, std::initializer_list<Unr
 
 // the result of read_mesh() then, if it succeeded, check_mesh()
 template <class Mesh>
-HI::Check_result read_and_check(const std::string& path, Mesh& m, std::optional<HOT::Orbifold_type> type,
-                                HI::Mesh_info* info = nullptr)
+HOT::Status read_and_check(const std::string& path, Mesh& m, std::optional<HOT::Orbifold_type> type,
+                                HOT::Mesh_info* info = nullptr)
 {
-  HI::Check_result r = hot_tools::read_mesh(path, m);
+  HOT::Status r = hot_tools::read_mesh(path, m);
   if(!r)
     return r;
-  return HI::check_mesh(m, type, info);
+  return HOT::check_mesh(m, type, info);
 }
 
 // --- small meshes (OFF text) -------------------------------------------------
@@ -313,7 +313,7 @@ void mesh_to_soup(const Mesh& m, std::vector<Point>& points, std::vector<std::ve
 TEST_CASE(valid_small_meshes)
 {
   SM sm;
-  HI::Mesh_info info;
+  HOT::Mesh_info info;
   CHECK_RESULT(read_and_check(write_file("tetra.off", tetra_off()), sm, HOT::Sphere_type, &info), HOT::OK, "");
   CHECK(info.number_of_vertices == 4 && info.number_of_faces == 4 && info.number_of_edges == 6);
   CHECK(info.euler_characteristic == 2 && info.genus == 0 && info.number_of_border_loops == 0);
@@ -324,8 +324,8 @@ TEST_CASE(valid_small_meshes)
 
   CHECK_RESULT(read_and_check(write_file("fan.off", hexagon_fan_off()), sm, std::nullopt, &info), HOT::OK, "");
   CHECK(info.type == HOT::Disk_type && info.number_of_border_loops == 1 && info.euler_characteristic == 1);
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
-  CHECK_RESULT(HI::check_mesh(sm, get(CGAL::vertex_point, sm), HOT::Disk_type), HOT::OK, "");
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
+  CHECK_RESULT(HOT::check_mesh(sm, get(CGAL::vertex_point, sm), HOT::Disk_type), HOT::OK, "");
 
   Poly poly;
   CHECK_RESULT(read_and_check(write_file("octa_p.off", octa_off()), poly, HOT::Sphere_type, &info), HOT::OK, "");
@@ -336,15 +336,15 @@ TEST_CASE(valid_small_meshes)
 TEST_CASE(empty_mesh)
 {
   SM sm;
-  CHECK_RESULT(HI::check_mesh(sm), HOT::ERROR_EMPTY_MESH, "no face");
+  CHECK_RESULT(HOT::check_mesh(sm), HOT::ERROR_EMPTY_MESH, "no face");
   Poly poly;
-  CHECK_RESULT(HI::check_mesh(poly, HOT::Sphere_type), HOT::ERROR_EMPTY_MESH, "no face");
+  CHECK_RESULT(HOT::check_mesh(poly, HOT::Sphere_type), HOT::ERROR_EMPTY_MESH, "no face");
   // vertices but no face: read fine, then empty
   CHECK_RESULT(read_text("nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", sm), HOT::OK, "");
   CHECK(num_vertices(sm) == 3);
-  CHECK_RESULT(HI::check_mesh(sm), HOT::ERROR_EMPTY_MESH, "3 vertices");
+  CHECK_RESULT(HOT::check_mesh(sm), HOT::ERROR_EMPTY_MESH, "3 vertices");
   CHECK_RESULT(read_text("zero.off", "OFF\n0 0 0\n", sm), HOT::OK, "");
-  CHECK_RESULT(HI::check_mesh(sm), HOT::ERROR_EMPTY_MESH, "no face");
+  CHECK_RESULT(HOT::check_mesh(sm), HOT::ERROR_EMPTY_MESH, "no face");
 }
 
 TEST_CASE(isolated_vertex)
@@ -354,7 +354,7 @@ TEST_CASE(isolated_vertex)
   SM sm;
   CHECK_RESULT(read_text("isolated.off", off, sm), HOT::OK, "");
   CHECK(num_vertices(sm) == 5);
-  CHECK_RESULT(HI::check_mesh(sm), HOT::ERROR_NON_MANIFOLD, "vertex 4 is isolated");
+  CHECK_RESULT(HOT::check_mesh(sm), HOT::ERROR_NON_MANIFOLD, "vertex 4 is isolated");
   Poly poly;
   CHECK_RESULT(read_and_check(write_file("isolated_p.off", off), poly, HOT::Sphere_type), HOT::ERROR_NON_MANIFOLD,
                "vertex 4 is isolated");
@@ -397,7 +397,7 @@ TEST_CASE(non_manifold_vertex)
                   && CGAL::Euler::add_face(std::vector<SM::Vertex_index>{ v[0], v[3], v[4] }, bow) != SM::null_face();
   CHECK(added);
   if(added)
-    CHECK_RESULT(HI::check_mesh(bow), HOT::ERROR_NON_MANIFOLD, "vertex 0 is non-manifold");
+    CHECK_RESULT(HOT::check_mesh(bow), HOT::ERROR_NON_MANIFOLD, "vertex 0 is non-manifold");
 }
 
 TEST_CASE(invalid_structures_and_garbage)
@@ -417,7 +417,7 @@ TEST_CASE(invalid_structures_and_garbage)
     set_target(h, v0, sm);
   sm.remove_vertex(v4); // leaves garbage: indices are no longer contiguous
   CHECK(!CGAL::is_valid_polygon_mesh(sm));
-  CHECK_RESULT(HI::check_mesh(sm), HOT::ERROR_NON_MANIFOLD,
+  CHECK_RESULT(HOT::check_mesh(sm), HOT::ERROR_NON_MANIFOLD,
                "vertex 0 is non-manifold: its incident faces form more than one fan (3 of its 6");
 
   // a Surface_mesh with removed elements (garbage) is checked in iteration order
@@ -425,19 +425,19 @@ TEST_CASE(invalid_structures_and_garbage)
   CHECK(hot_tools::read_mesh(write_file("garbage_octa.off", octa_off()), octa));
   CGAL::Euler::remove_face(halfedge(*std::next(faces(octa).begin(), 7), octa), octa);
   CHECK(octa.has_garbage());
-  HI::Mesh_info info;
-  CHECK_RESULT(HI::check_mesh(octa, std::nullopt, &info), HOT::OK, "");
+  HOT::Mesh_info info;
+  CHECK_RESULT(HOT::check_mesh(octa, std::nullopt, &info), HOT::OK, "");
   CHECK(info.type == HOT::Disk_type && info.number_of_faces == 7 && info.number_of_vertices == 6);
   std::vector<SM::Vertex_index> lm;
-  CHECK_RESULT(HI::check_landmarks(octa, { 0, 1, 2, 3, 5 }, HOT::Sphere_type, lm), HOT::OK, "");
+  CHECK_RESULT(HOT::check_landmarks(octa, { 0, 1, 2, 3, 5 }, HOT::Sphere_type, lm), HOT::OK, "");
   CHECK(lm.size() == 5 && get(CGAL::vertex_point, octa, lm[4]) == Point(0, 0, -1));
   // the removed face 7 was (0, 3, 5): those are the border vertices
-  CHECK_RESULT(HI::check_landmarks(octa, { 0, 3, 5, 1, 2 }, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
+  CHECK_RESULT(HOT::check_landmarks(octa, { 0, 3, 5, 1, 2 }, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
                "landmark 3 (vertex 1)");
   // removing face 0 = (0, 2, 4) too makes vertex 0 a "bowtie" (two boundary gaps)
   CGAL::Euler::remove_face(halfedge(*faces(octa).begin(), octa), octa);
   CHECK(CGAL::is_valid_polygon_mesh(octa));
-  CHECK_RESULT(HI::check_mesh(octa, std::nullopt), HOT::ERROR_NON_MANIFOLD, "vertex 0 is non-manifold");
+  CHECK_RESULT(HOT::check_mesh(octa, std::nullopt), HOT::ERROR_NON_MANIFOLD, "vertex 0 is non-manifold");
 }
 
 TEST_CASE(inconsistent_orientation)
@@ -474,13 +474,13 @@ TEST_CASE(several_components)
 TEST_CASE(wrong_topology)
 {
   SM sm;
-  HI::Mesh_info info;
+  HOT::Mesh_info info;
   // sphere with a hole (octahedron minus a face) given as sphere type
   const std::string holed = write_file("holed.off", octa_off({ 7 }));
   CHECK_RESULT(read_and_check(holed, sm, HOT::Sphere_type), HOT::ERROR_WRONG_TOPOLOGY,
                "sphere-type orbifold needs a closed genus-0 mesh, but the mesh has 1 boundary loop");
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
-  CHECK_RESULT(HI::check_mesh(sm, std::nullopt, &info), HOT::OK, "");
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
+  CHECK_RESULT(HOT::check_mesh(sm, std::nullopt, &info), HOT::OK, "");
   CHECK(info.type == HOT::Disk_type);
   // a closed mesh given as disk type
   CHECK_RESULT(read_and_check(write_file("octa2.off", octa_off()), sm, HOT::Disk_type), HOT::ERROR_WRONG_TOPOLOGY,
@@ -488,12 +488,12 @@ TEST_CASE(wrong_topology)
   // an annulus (two boundary loops)
   CHECK_RESULT(read_and_check(write_file("annulus.off", octa_off({ 0, 6 })), sm, std::nullopt),
                HOT::ERROR_WRONG_TOPOLOGY, "2 boundary loops");
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Disk_type), HOT::ERROR_WRONG_TOPOLOGY, "has 2 boundary loops");
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Disk_type), HOT::ERROR_WRONG_TOPOLOGY, "has 2 boundary loops");
   // a torus
   CHECK_RESULT(read_and_check(write_file("torus.off", torus_off(6)), sm, HOT::Sphere_type, &info),
                HOT::ERROR_WRONG_TOPOLOGY, "genus 1 (V-E+F = 0)");
   CHECK(info.genus == 1 && info.number_of_border_loops == 0 && !info.type_known);
-  CHECK_RESULT(HI::check_mesh(sm, std::nullopt), HOT::ERROR_WRONG_TOPOLOGY, "sphere-type orbifold needs a genus-0 mesh");
+  CHECK_RESULT(HOT::check_mesh(sm, std::nullopt), HOT::ERROR_WRONG_TOPOLOGY, "sphere-type orbifold needs a genus-0 mesh");
   Poly poly;
   CHECK_RESULT(read_and_check(write_file("torus_p.off", torus_off(5)), poly, std::nullopt), HOT::ERROR_WRONG_TOPOLOGY,
                "genus 1");
@@ -509,19 +509,19 @@ TEST_CASE(detect_type)
 {
   SM sm;
   HOT::Orbifold_type t = HOT::Disk_type;
-  CHECK(!HI::detect_orbifold_type(sm, t)); // empty
+  CHECK(!HOT::detect_orbifold_type(sm, t)); // empty
   CHECK(hot_tools::read_mesh(write_file("d_octa.off", octa_off()), sm));
-  CHECK(HI::detect_orbifold_type(sm, t) && t == HOT::Sphere_type);
-  CHECK(HI::count_border_loops(sm) == 0);
+  CHECK(HOT::detect_orbifold_type(sm, t) && t == HOT::Sphere_type);
+  CHECK(HOT::count_border_loops(sm) == 0);
   CHECK(hot_tools::read_mesh(write_file("d_holed.off", octa_off({ 3 })), sm));
-  CHECK(HI::detect_orbifold_type(sm, t) && t == HOT::Disk_type);
+  CHECK(HOT::detect_orbifold_type(sm, t) && t == HOT::Disk_type);
   CHECK(hot_tools::read_mesh(write_file("d_annulus.off", octa_off({ 0, 6 })), sm));
   t = HOT::Sphere_type;
-  CHECK(!HI::detect_orbifold_type(sm, t) && t == HOT::Sphere_type);
-  CHECK(HI::count_border_loops(sm) == 2);
+  CHECK(!HOT::detect_orbifold_type(sm, t) && t == HOT::Sphere_type);
+  CHECK(HOT::count_border_loops(sm) == 2);
   Poly poly;
   CHECK(hot_tools::read_mesh(write_file("d_holed_p.off", octa_off({ 3 })), poly));
-  CHECK(HI::detect_orbifold_type(poly, t) && t == HOT::Disk_type);
+  CHECK(HOT::detect_orbifold_type(poly, t) && t == HOT::Disk_type);
 }
 
 TEST_CASE(non_triangular)
@@ -530,7 +530,7 @@ TEST_CASE(non_triangular)
                            "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
   SM sm;
   CHECK_RESULT(read_text("cube_quads.off", cube, sm), HOT::OK, ""); // polygons are read
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Sphere_type), HOT::ERROR_NON_TRIANGULAR_MESH, "face 0 has 4 vertices");
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Sphere_type), HOT::ERROR_NON_TRIANGULAR_MESH, "face 0 has 4 vertices");
   // a single quad after triangles
   const std::string mixed = "OFF\n5 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
                             "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n4 0 3 2 1\n";
@@ -557,10 +557,10 @@ TEST_CASE(non_finite_coordinates)
   CHECK(hot_tools::read_mesh(write_file("tetra_nan.off", tetra_off()), sm));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   put(get(CGAL::vertex_point, sm), *std::next(vertices(sm).begin(), 2), Point(0, nan, 0));
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2 has a non-finite");
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2 has a non-finite");
   put(get(CGAL::vertex_point, sm), *std::next(vertices(sm).begin(), 2),
       Point(0, std::numeric_limits<double>::infinity(), 0));
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2");
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Sphere_type), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2");
   // 4OFF with w = 0
   const std::string w0 = "4OFF\n4 4 0\n0 0 0 1\n1 0 0 1\n0 1 0 0\n0 0 1 1\n" + std::string(tetra_faces);
   CHECK_RESULT(read_text("w0.off", w0, sm), HOT::ERROR_NON_FINITE_COORDINATES, "vertex 2");
@@ -598,7 +598,7 @@ TEST_CASE(duplicate_points_allowed)
     s += std::to_string(std::cos(2 * 3.14159265358979 * k / 5)) + " " + std::to_string(std::sin(2 * 3.14159265358979 * k / 5)) + " 0\n";
   s += "1 0 0\n3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n3 0 5 6\n";
   SM sm;
-  HI::Mesh_info info;
+  HOT::Mesh_info info;
   CHECK_RESULT(read_and_check(write_file("cut_fan.off", s), sm, std::nullopt, &info), HOT::OK, "");
   CHECK(info.type == HOT::Disk_type && info.number_of_vertices == 7);
   CHECK(vertex_point(sm, 1) == vertex_point(sm, 6));
@@ -699,7 +699,7 @@ TEST_CASE(off_truncated)
   // every prefix of a valid file (but the one without the final end of line) is an error
   int failures = 0;
   for(std::size_t n = 0; n + 1 < full.size(); ++n) {
-    HI::Check_result r = read_text("prefix.off", full.substr(0, n), sm);
+    HOT::Status r = read_text("prefix.off", full.substr(0, n), sm);
     if(r.code != HOT::ERROR_READ_FAILED)
       ++failures;
   }
@@ -733,7 +733,7 @@ TEST_CASE(garbage_files)
   for(const char* ext : { "off", "obj", "ply", "stl" }) {
     for(std::uint32_t seed = 1; seed <= 20; ++seed) {
       std::string g = garbage(64 + 200 * seed, seed);
-      HI::Check_result r = read_text(std::string("garbage.") + ext, g, sm);
+      HOT::Status r = read_text(std::string("garbage.") + ext, g, sm);
       CHECK_MSG(r.code == HOT::ERROR_READ_FAILED, ext << " seed " << seed << ": " << r.code << " " << r.message);
       CHECK(one_line(r));
       r = read_text(std::string("garbage2.") + ext, (std::string(ext) == "off" ? "OFF\n" : "") + g, sm);
@@ -853,7 +853,7 @@ TEST_CASE(ply_reader)
 TEST_CASE(stl_reader)
 {
   SM sm;
-  HI::Mesh_info info;
+  HOT::Mesh_info info;
   CHECK_RESULT(read_and_check(write_file("bin.stl", binary_stl_tetra()), sm, HOT::Sphere_type, &info), HOT::OK, "");
   CHECK(info.number_of_vertices == 4); // 12 corners merged into 4 points
   CHECK(vertex_point(sm, 0) == Point(0, 0, 0) && vertex_point(sm, 1) == Point(0, 1, 0)); // order of first appearance
@@ -981,8 +981,8 @@ TEST_CASE(real_meshes)
   };
   for(const Expected& e : expected) {
     SM sm;
-    HI::Mesh_info info;
-    const HI::Check_result r = read_and_check(mesh_path(e.name), sm, std::nullopt, &info);
+    HOT::Mesh_info info;
+    const HOT::Status r = read_and_check(mesh_path(e.name), sm, std::nullopt, &info);
     CHECK_MSG(r.code == e.code, e.name << ": " << r.code << " " << r.message);
     CHECK_MSG(info.number_of_vertices == e.nv, e.name << ": " << info.number_of_vertices << " vertices");
     if(e.code == HOT::OK)
@@ -995,7 +995,7 @@ TEST_CASE(real_meshes)
   CHECK_RESULT(hot_tools::read_mesh(mesh_path("cube-shuffled.off"), sm), HOT::ERROR_NON_MANIFOLD, "inconsistent face orientation");
   // Polyhedron_3 agrees
   Poly poly;
-  HI::Mesh_info info;
+  HOT::Mesh_info info;
   CHECK_RESULT(read_and_check(mesh_path("mannequin-devil.off"), poly, HOT::Disk_type, &info), HOT::OK, "");
   CHECK(info.number_of_vertices == 12977);
   CHECK_RESULT(read_and_check(mesh_path("elephant.off"), poly, HOT::Sphere_type), HOT::ERROR_WRONG_TOPOLOGY, "genus 3");
@@ -1010,33 +1010,33 @@ TEST_CASE(check_landmarks)
   SM octa;
   CHECK(hot_tools::read_mesh(write_file("l_octa.off", octa_off()), octa));
   std::vector<SM::Vertex_index> out;
-  CHECK_RESULT(HI::check_landmarks(octa, { 5, 3, 1, 0, 2 }, HOT::Sphere_type, out), HOT::OK, "");
+  CHECK_RESULT(HOT::check_landmarks(octa, { 5, 3, 1, 0, 2 }, HOT::Sphere_type, out), HOT::OK, "");
   CHECK(out.size() == 5 && out[0] == SM::Vertex_index(5) && out[1] == SM::Vertex_index(3));
-  CHECK_RESULT(HI::check_landmarks(octa, { 0, 1, 2, 3 }, HOT::Sphere_type, out), HOT::ERROR_TOO_FEW_LANDMARKS,
+  CHECK_RESULT(HOT::check_landmarks(octa, { 0, 1, 2, 3 }, HOT::Sphere_type, out), HOT::ERROR_TOO_FEW_LANDMARKS,
                "4 landmarks are given, but the sphere-type orbifold needs at least 5");
   CHECK(out.empty());
-  CHECK_RESULT(HI::check_landmarks(octa, {}, HOT::Disk_type, out), HOT::ERROR_TOO_FEW_LANDMARKS, "0 landmarks");
-  CHECK_RESULT(HI::check_landmarks(octa, { 0, 1, 2, 3, 6 }, HOT::Sphere_type, out), HOT::ERROR_LANDMARK_OUT_OF_RANGE,
+  CHECK_RESULT(HOT::check_landmarks(octa, {}, HOT::Disk_type, out), HOT::ERROR_TOO_FEW_LANDMARKS, "0 landmarks");
+  CHECK_RESULT(HOT::check_landmarks(octa, { 0, 1, 2, 3, 6 }, HOT::Sphere_type, out), HOT::ERROR_LANDMARK_OUT_OF_RANGE,
                "landmark 4 is vertex 6, but the mesh has only 6 vertices");
-  CHECK_RESULT(HI::check_landmarks(octa, { 0, 1, 2, 3, std::size_t(-1) }, HOT::Sphere_type, out),
+  CHECK_RESULT(HOT::check_landmarks(octa, { 0, 1, 2, 3, std::size_t(-1) }, HOT::Sphere_type, out),
                HOT::ERROR_LANDMARK_OUT_OF_RANGE, "landmark 4");
-  CHECK_RESULT(HI::check_landmarks(octa, { 0, 1, 2, 1, 4 }, HOT::Sphere_type, out), HOT::ERROR_DUPLICATE_LANDMARK,
+  CHECK_RESULT(HOT::check_landmarks(octa, { 0, 1, 2, 1, 4 }, HOT::Sphere_type, out), HOT::ERROR_DUPLICATE_LANDMARK,
                "vertex 1 is given twice, as landmarks 1 and 3");
   CHECK(out.empty());
 
   SM fan;
   CHECK(hot_tools::read_mesh(write_file("l_fan.off", hexagon_fan_off()), fan));
-  CHECK_RESULT(HI::check_landmarks(fan, { 1, 2, 3, 4, 5 }, HOT::Disk_type, out), HOT::OK, "");
-  CHECK_RESULT(HI::check_landmarks(fan, { 1, 2, 0, 4, 5 }, HOT::Disk_type, out), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
+  CHECK_RESULT(HOT::check_landmarks(fan, { 1, 2, 3, 4, 5 }, HOT::Disk_type, out), HOT::OK, "");
+  CHECK_RESULT(HOT::check_landmarks(fan, { 1, 2, 0, 4, 5 }, HOT::Disk_type, out), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
                "landmark 2 (vertex 0) is not on the boundary loop");
-  CHECK_RESULT(HI::check_landmarks(fan, { 1, 2, 0, 4, 5 }, HOT::Sphere_type, out), HOT::OK, ""); // no border rule
+  CHECK_RESULT(HOT::check_landmarks(fan, { 1, 2, 0, 4, 5 }, HOT::Sphere_type, out), HOT::OK, ""); // no border rule
 
   Poly pfan;
   std::vector<boost::graph_traits<Poly>::vertex_descriptor> pout;
   CHECK(hot_tools::read_mesh(write_file("l_fan_p.off", hexagon_fan_off()), pfan));
-  CHECK_RESULT(HI::check_landmarks(pfan, { 6, 2, 3, 4, 5 }, HOT::Disk_type, pout), HOT::OK, "");
+  CHECK_RESULT(HOT::check_landmarks(pfan, { 6, 2, 3, 4, 5 }, HOT::Disk_type, pout), HOT::OK, "");
   CHECK(pout.size() == 5 && pout[0]->point() == vertex_point(pfan, 6));
-  CHECK_RESULT(HI::check_landmarks(pfan, { 6, 2, 3, 4, 0 }, HOT::Disk_type, pout), HOT::ERROR_LANDMARK_NOT_ON_BORDER, "vertex 0");
+  CHECK_RESULT(HOT::check_landmarks(pfan, { 6, 2, 3, 4, 0 }, HOT::Disk_type, pout), HOT::ERROR_LANDMARK_NOT_ON_BORDER, "vertex 0");
 }
 
 TEST_CASE(read_landmarks)
@@ -1067,7 +1067,7 @@ TEST_CASE(read_landmarks)
   CHECK_RESULT(hot_tools::read_landmarks(write_file("empty.txt", ""), ids), HOT::ERROR_READ_FAILED, "holds no vertex index");
   CHECK_RESULT(hot_tools::read_landmarks(write_file("blank.txt", " \n# nothing\n"), ids), HOT::ERROR_READ_FAILED, "holds no vertex index");
   CHECK_RESULT(hot_tools::read_landmarks(tmp_dir() + "/nope.txt", ids), HOT::ERROR_READ_FAILED, "no such file");
-  const HI::Check_result g = hot_tools::read_landmarks(write_file("bin.txt", garbage(300, 7)), ids);
+  const HOT::Status g = hot_tools::read_landmarks(write_file("bin.txt", garbage(300, 7)), ids);
   CHECK(g.code == HOT::ERROR_READ_FAILED && one_line(g));
 }
 
@@ -1089,7 +1089,7 @@ TEST_CASE(landmarks_end_to_end)
   std::vector<std::size_t> ids;
   CHECK_RESULT(hot_tools::read_landmarks(write_file("devil.cones.txt", file), ids), HOT::OK, "");
   std::vector<SM::Vertex_index> lm;
-  CHECK_RESULT(HI::check_landmarks(sm, ids, HOT::Disk_type, lm), HOT::OK, "");
+  CHECK_RESULT(HOT::check_landmarks(sm, ids, HOT::Disk_type, lm), HOT::OK, "");
   CHECK(lm.size() == 5);
   std::size_t interior = 0;
   for(auto v : vertices(sm)) {
@@ -1098,10 +1098,10 @@ TEST_CASE(landmarks_end_to_end)
     ++interior;
   }
   ids[2] = interior;
-  CHECK_RESULT(HI::check_landmarks(sm, ids, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
+  CHECK_RESULT(HOT::check_landmarks(sm, ids, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_NOT_ON_BORDER,
                "landmark 2 (vertex " + std::to_string(interior) + ")");
   ids[2] = 12977;
-  CHECK_RESULT(HI::check_landmarks(sm, ids, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_OUT_OF_RANGE, "vertex 12977");
+  CHECK_RESULT(HOT::check_landmarks(sm, ids, HOT::Disk_type, lm), HOT::ERROR_LANDMARK_OUT_OF_RANGE, "vertex 12977");
 }
 
 // ===========================================================================
@@ -1148,8 +1148,8 @@ TEST_CASE(performance)
   CHECK_RESULT(hot_tools::polygon_soup_to_mesh(soup, sm), HOT::OK, "");
   const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t0 = std::chrono::steady_clock::now();
-  HI::Mesh_info info;
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Sphere_type, &info), HOT::OK, "");
+  HOT::Mesh_info info;
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Sphere_type, &info), HOT::OK, "");
   const double check = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CHECK(info.number_of_vertices == std::size_t(6 * n * n + 2));
   CHECK(CGAL::is_valid_polygon_mesh(sm));
@@ -1172,9 +1172,9 @@ TEST_CASE(performance)
   }
   t0 = std::chrono::steady_clock::now();
   CHECK_RESULT(hot_tools::polygon_soup_to_mesh(fan, sm), HOT::OK, "");
-  CHECK_RESULT(HI::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
+  CHECK_RESULT(HOT::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
   std::vector<SM::Vertex_index> lm;
-  CHECK_RESULT(HI::check_landmarks(sm, { 0, 1, 1000, 100000, k + 1 }, HOT::Disk_type, lm), HOT::OK, "");
+  CHECK_RESULT(HOT::check_landmarks(sm, { 0, 1, 1000, 100000, k + 1 }, HOT::Disk_type, lm), HOT::OK, "");
   const double hub = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "  fan of " << k << " triangles around one vertex: " << hub << " s" << std::endl;
   CHECK_MSG(hub < 2.0, "fan too slow: " << hub << " s");
@@ -1198,7 +1198,7 @@ TEST_CASE(gocad_parser)
   // ids are ids: not consecutive, triangles before vertices, PVRTX with properties, ATOM
   const std::string ids = head + "TRGL 10 30 20\nVRTX 10 0 0 0\nPVRTX 20 1 0 0 7.5 8\nVRTX 30 0 1 0\nVRTX 40 0 0 1\n"
                                  "ATOM 41 40\nTRGL 10 20 41\nTRGL 10 40 30\nTFACE\nTRGL 20 30 40\nBSTONE 10\nEND\nanything\n";
-  HI::Mesh_info info;
+  HOT::Mesh_info info;
   CHECK_RESULT(read_and_check(write_file("ids.ts", ids), sm, HOT::Sphere_type, &info), HOT::OK, "");
   CHECK(num_vertices(sm) == 4 && vertex_point(sm, 3) == Point(0, 0, 1));
   std::vector<Point> pts;
@@ -1332,11 +1332,11 @@ TEST_CASE(coincident_border_vertices)
   CHECK_RESULT(read_and_check(write_file("seam.off", seam), sm, HOT::Sphere_type), HOT::ERROR_WRONG_TOPOLOGY,
                "but the mesh has 1 boundary loop (border vertices 0 and 6 have the same coordinates: duplicated vertices that should be one?)");
   // as a disk it is a valid mesh (a surface cut open, as duplicate_points_allowed)
-  HI::Mesh_info info;
-  CHECK_RESULT(HI::check_mesh(sm, std::nullopt, &info), HOT::OK, "");
+  HOT::Mesh_info info;
+  CHECK_RESULT(HOT::check_mesh(sm, std::nullopt, &info), HOT::OK, "");
   CHECK(info.type == HOT::Disk_type);
   // boundary loops without coincident vertices: no such hint
-  const HI::Check_result r = read_and_check(write_file("annulus_h.off", octa_off({ 0, 6 })), sm, std::nullopt);
+  const HOT::Status r = read_and_check(write_file("annulus_h.off", octa_off({ 0, 6 })), sm, std::nullopt);
   CHECK(r.code == HOT::ERROR_WRONG_TOPOLOGY && !contains(r.message, "same coordinates"));
   // two disks touching at duplicated border points
   const std::string two = "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 3 5 4\n";
@@ -1347,7 +1347,7 @@ TEST_CASE(coincident_border_vertices)
 TEST_CASE(read_and_check_path)
 {
   SM sm;
-  HI::Mesh_info info;
+  HOT::Mesh_info info;
   // no face, automatic type: "no face" (it used to be "neither closed nor a disk")
   const std::string nofaces = write_file("rc_nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
   CHECK_RESULT(hot_tools::read_and_check_mesh(nofaces, std::nullopt, sm, &info), HOT::ERROR_EMPTY_MESH,
@@ -1373,7 +1373,7 @@ TEST_CASE(read_and_check_path)
   // a bad token is reported before the layout (binary garbage used to be an "ambiguous layout")
   CHECK_RESULT(hot_tools::read_and_check_landmarks(write_file("rc_tok.txt", "1 2 x\n3 4\n"), sm, HOT::Disk_type, lm),
                HOT::ERROR_READ_FAILED, "line 1: 'x' is not a vertex index");
-  const HI::Check_result g = hot_tools::read_and_check_landmarks(write_file("rc_bin.txt", garbage(500, 3)), sm, HOT::Disk_type, lm);
+  const HOT::Status g = hot_tools::read_and_check_landmarks(write_file("rc_bin.txt", garbage(500, 3)), sm, HOT::Disk_type, lm);
   CHECK_MSG(g.code == HOT::ERROR_READ_FAILED && !contains(g.message, "ambiguous") && one_line(g), g.message);
   CHECK_RESULT(hot_tools::read_and_check_landmarks(write_file("rc_amb.txt", "1 2 3\n4 5\n"), sm, HOT::Disk_type, lm),
                HOT::ERROR_READ_FAILED, "line 1: ambiguous layout");
@@ -1426,14 +1426,14 @@ void run_fuzz_input(const std::string& name, const std::string& input)
   const std::string mesh = write_file(name + "." + extensions[s % 5], input.substr(3, rest - L));
   const std::string cones = write_file(name + ((s / 15) % 2 ? ".selection.txt" : ".txt"), input.substr(3 + rest - L));
   SM sm;
-  HI::Mesh_info info;
-  const HI::Check_result r = hot_tools::read_and_check_mesh(mesh, type, sm, &info);
+  HOT::Mesh_info info;
+  const HOT::Status r = hot_tools::read_and_check_mesh(mesh, type, sm, &info);
   CHECK_MSG(r.code >= 0 && r.code < HOT::number_of_error_codes && one_line(r) && (r || !r.message.empty()), name << ": " << r.message);
   if(!r)
     return;
   CHECK_MSG(info.type_known && CGAL::is_valid_polygon_mesh(sm), name);
   std::vector<SM::Vertex_index> lm;
-  const HI::Check_result rl = hot_tools::read_and_check_landmarks(cones, sm, info.type, lm);
+  const HOT::Status rl = hot_tools::read_and_check_landmarks(cones, sm, info.type, lm);
   CHECK_MSG(one_line(rl) && (rl || (!rl.message.empty() && lm.empty())), name << ": " << rl.message);
   CHECK_MSG(!rl || std::set<SM::Vertex_index>(lm.begin(), lm.end()).size() == lm.size(), name);
 }

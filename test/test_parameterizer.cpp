@@ -774,9 +774,9 @@ static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& 
   auto svm = m.add_property_map<vertex_descriptor, bool>("v:s", false).first;
   Disk_problem::SMesh sm(m, sem, svm);
   std::vector<vertex_descriptor> ordered;
-  for(std::size_t i : HOT::internal::compute_tsp_landmark_order(m, lm, get(CGAL::vertex_point, m))) ordered.push_back(lm[i]);
-  const auto cut = HOT::internal::compute_cut_through_landmarks(m, ordered, get(CGAL::vertex_point, m));
-  if(!cut.ok || !HOT::internal::add_cut_to_seam_mesh(sm, m, cut)) return false;
+  for(std::size_t i : HOT::compute_landmark_tour(m, lm, get(CGAL::vertex_point, m))) ordered.push_back(lm[i]);
+  const auto cut = HOT::compute_cut_through_landmarks(m, ordered, get(CGAL::vertex_point, m));
+  if(!cut.ok || !HOT::add_cut_to_seam_mesh(sm, m, cut)) return false;
   boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
   for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
   HOT::make_orbifold_tile(HOT::Sphere_type, k, S.tile);

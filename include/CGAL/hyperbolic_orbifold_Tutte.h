@@ -18,6 +18,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/read_cones.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>

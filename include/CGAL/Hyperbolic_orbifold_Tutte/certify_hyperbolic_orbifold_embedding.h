@@ -8,11 +8,11 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
@@ -88,10 +88,10 @@ Error_code certify_hyperbolic_orbifold_embedding(
   Orbifold_type type = Sphere_type;
   if(!internal::orbifold_type_parameter(tm, np, type)) {
     // no face, or several boundary loops: check_mesh() says which check fails first
-    const internal::Check_result r = internal::check_mesh(tm, std::nullopt);
+    const Status r = check_mesh(tm, std::nullopt);
     return fail(r ? ERROR_WRONG_TOPOLOGY : r.code, r ? "the mesh is neither closed nor a disk" : r.message);
   }
-  internal::Check_result r = internal::check_mesh(tm, type);
+  Status r = check_mesh(tm, type);
   if(!r)
     return fail(r.code, r.message);
   const int k = static_cast<int>(landmarks.size());

@@ -8,9 +8,9 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
@@ -28,28 +28,6 @@
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
-namespace internal {
-
-// check_landmarks() for vertex descriptors: a descriptor that is not a vertex of tm is
-// reported as out of range.
-template <class TriangleMesh>
-Check_result check_landmark_vertices(const TriangleMesh& tm,
-                                     const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
-                                     Orbifold_type type)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  const Dense_index<vertex_descriptor> index(vertices(tm));
-  std::vector<std::size_t> ids;
-  for(std::size_t i = 0; i < landmarks.size(); ++i) {
-    const std::size_t id = index(landmarks[i]);
-    ids.push_back(id == index.npos ? index.size() + i : id);
-  }
-  std::vector<vertex_descriptor> out;
-  return check_landmarks(tm, ids, type, out);
-}
-
-} // namespace internal
-
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
@@ -143,18 +121,18 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   if(!internal::orbifold_type_parameter(tm, np, type)) {
     // no face, or several boundary loops: check_mesh() says which check fails first
     // (empty, non-manifold, several components, ..., or the boundary loops)
-    const internal::Check_result r = internal::check_mesh(tm, vpm, std::nullopt);
+    const Status r = check_mesh(tm, vpm, std::nullopt);
     return fail(r ? ERROR_WRONG_TOPOLOGY : r.code,
                 r ? "the mesh is neither closed nor a disk (it has more than one boundary loop)" : r.message);
   }
   {
-    const internal::Check_result r = internal::check_mesh(tm, vpm, type);
+    const Status r = check_mesh(tm, vpm, type);
     if(!r)
       return fail(r.code, r.message);
   }
   // 2. the landmarks
   {
-    const internal::Check_result r = internal::check_landmark_vertices(tm, landmarks, type);
+    const Status r = check_landmark_vertices(tm, landmarks, type);
     if(!r)
       return fail(r.code, r.message);
   }
@@ -164,7 +142,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
     st.landmark_order[i] = i;
   const Landmark_order order = choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order);
   if(order == Tsp_order && type == Sphere_type) {
-    const std::vector<std::size_t> perm = internal::compute_tsp_landmark_order(tm, landmarks, vpm);
+    const std::vector<std::size_t> perm = compute_landmark_tour(tm, landmarks, vpm);
     if(perm.size() != landmarks.size())
       return fail(ERROR_CUT_FAILED, "the landmark tour could not be computed");
     for(std::size_t i = 0; i < perm.size(); ++i)
@@ -178,10 +156,10 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
   Mesh& mesh = seams.mesh;
   if(type == Sphere_type) {
-    const internal::Cut_result<TriangleMesh> cut = internal::compute_cut_through_landmarks(tm, ordered, vpm);
+    const Cut_result<TriangleMesh> cut = compute_cut_through_landmarks(tm, ordered, vpm);
     if(!cut.ok)
       return fail(ERROR_CUT_FAILED, cut.message);
-    if(!internal::add_cut_to_seam_mesh(mesh, tm, cut))
+    if(!add_cut_to_seam_mesh(mesh, tm, cut))
       return fail(ERROR_CUT_FAILED, "the cut could not be marked on the seam mesh");
   }
   typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;

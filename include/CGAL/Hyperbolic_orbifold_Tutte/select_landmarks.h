@@ -5,6 +5,8 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_SELECT_LANDMARKS_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_SELECT_LANDMARKS_H
 
+#include <CGAL/disable_warnings.h>
+
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
 
 #include <vector>
@@ -45,5 +47,7 @@ select_landmarks(const TriangleMesh& tm, std::size_t k)
 
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_SELECT_LANDMARKS_H

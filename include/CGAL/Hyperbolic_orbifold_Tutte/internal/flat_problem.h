@@ -9,6 +9,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/hyperbolic_energy.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -112,67 +113,67 @@ inline int variable_owner(const Flat_problem& P, int v)
   }
 }
 
-// Builds the topology part of a Flat_problem from a seam mesh (a topological disk) whose
-// border loop goes through copies of the landmarks. `landmarks` are base-mesh vertices in
-// cone order. Fills faces, base, border_loop, side, corner, kind, var, twin, transform,
-// fixed, line_k0/D, edges (weights are set by the caller); `base_vertex`: the mesh vertex of
-// each base index (the order of vertices(tm)).
-template <class SeamMesh, class Tile>
-Error_code build_flat_topology(const SeamMesh& mesh,
-                               typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
-                               const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
-                               const Tile& tile,
-                               Flat_problem& P,
-                               std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& base_vertex,
-                               std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor>& cut_vertices,
-                               std::string& message)
+// The dense numbering of the vertices of a seam mesh (by their canonical halfedge of tm: a
+// Seam_mesh vertex descriptor is a halfedge of tm, not on the seam) and of its base mesh
+// (a vertex's base index is its position in vertices(tm)).
+template <class SeamMesh>
+struct Cut_mesh_numbering
 {
   typedef typename SeamMesh::TriangleMesh TM;
-  typedef boost::graph_traits<SeamMesh> GT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<SeamMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<TM>::vertex_descriptor tm_vertex_descriptor;
   typedef typename boost::graph_traits<TM>::halfedge_descriptor tm_halfedge_descriptor;
-  typedef Complex<double> C;
-  typedef Hyperbolic_isometry_2<double> Isometry;
 
-  const TM& tm = mesh.mesh();
-  const int k = static_cast<int>(landmarks.size());
-  P = Flat_problem();
-  P.type = tile.type();
-  P.k = k;
+  const Dense_index<tm_vertex_descriptor> base_of;
+  const Dense_index<tm_halfedge_descriptor> hindex;
+  std::vector<int> vindex; // seam-mesh vertex index of each halfedge of tm (-1: none)
 
-  // index the base mesh: a vertex's base index is its position in vertices(tm)
-  const Dense_index<tm_vertex_descriptor> base_of(vertices(tm));
+  explicit Cut_mesh_numbering(const TM& tm)
+    : base_of(vertices(tm)), hindex(halfedges(tm)), vindex(hindex.size(), -1)
+  {}
+
+  // the cut-mesh index of a seam-mesh vertex, or -1
+  int operator()(vertex_descriptor vd) const
+  {
+    const std::size_t i = hindex(vd.hd.tmhd);
+    return i == Dense_index<tm_halfedge_descriptor>::npos ? -1 : vindex[i];
+  }
+};
+
+// Numbers the vertices of `mesh` (`cut_vertices`, P.n, P.base) and of its base mesh
+// (`base_vertex`, P.n_base).
+template <class SeamMesh>
+void number_cut_mesh(const SeamMesh& mesh, Cut_mesh_numbering<SeamMesh>& numbering, Flat_problem& P,
+                     std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& base_vertex,
+                     std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor>& cut_vertices)
+{
+  const typename SeamMesh::TriangleMesh& tm = mesh.mesh();
   base_vertex.assign(vertices(tm).begin(), vertices(tm).end());
   P.n_base = static_cast<int>(base_vertex.size());
-
-  // index the seam-mesh vertices by their canonical halfedge of tm (a Seam_mesh vertex
-  // descriptor is a halfedge of tm, not on the seam)
-  const Dense_index<tm_halfedge_descriptor> hindex(halfedges(tm));
-  std::vector<int> vindex(hindex.size(), -1);
   cut_vertices.clear();
-  for(vertex_descriptor vd : vertices(mesh)) {
-    vindex[hindex(vd.hd.tmhd)] = static_cast<int>(cut_vertices.size());
+  for(auto vd : vertices(mesh)) {
+    numbering.vindex[numbering.hindex(vd.hd.tmhd)] = static_cast<int>(cut_vertices.size());
     cut_vertices.push_back(vd);
   }
   P.n = static_cast<int>(cut_vertices.size());
-  auto index_of = [&](vertex_descriptor vd) -> int {
-    const std::size_t i = hindex(vd.hd.tmhd);
-    return i == Dense_index<tm_halfedge_descriptor>::npos ? -1 : vindex[i];
-  };
   P.base.resize(P.n);
   for(int i = 0; i < P.n; ++i)
-    P.base[i] = static_cast<int>(base_of(target(cut_vertices[i].hd.tmhd, tm)));
+    P.base[i] = static_cast<int>(numbering.base_of(target(cut_vertices[i].hd.tmhd, tm)));
+}
 
-  P.faces.reserve(num_faces(tm));
-  for(face_descriptor f : faces(mesh)) {
+// The triangles of `mesh` (P.faces) and its edges, each once (P.edges, from the halfedge
+// with the smaller index pair).
+template <class SeamMesh>
+Error_code flat_faces_and_edges(const SeamMesh& mesh, const Cut_mesh_numbering<SeamMesh>& numbering,
+                                Flat_problem& P, std::string& message)
+{
+  P.faces.reserve(num_faces(mesh.mesh()));
+  for(auto f : faces(mesh)) {
     std::array<int, 3> t;
     int j = 0;
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh)) {
       if(j < 3)
-        t[j] = index_of(target(h, mesh));
+        t[j] = numbering(target(h, mesh));
       ++j;
     }
     if(j != 3 || t[0] < 0 || t[1] < 0 || t[2] < 0) {
@@ -182,57 +183,69 @@ Error_code build_flat_topology(const SeamMesh& mesh,
     P.faces.push_back(t);
   }
 
-  // edges of the cut mesh, each once (from its halfedge with the smaller index pair)
-  {
-    std::vector<std::vector<int> > adj(P.n);
-    for(const auto& t : P.faces)
-      for(int e = 0; e < 3; ++e) {
-        const int a = t[e], b = t[(e + 1) % 3];
-        adj[std::min(a, b)].push_back(std::max(a, b));
-      }
-    for(int a = 0; a < P.n; ++a) {
-      std::sort(adj[a].begin(), adj[a].end());
-      adj[a].erase(std::unique(adj[a].begin(), adj[a].end()), adj[a].end());
-      for(int b : adj[a])
-        P.edges.push_back({a, b});
+  std::vector<std::vector<int> > adj(P.n);
+  for(const auto& t : P.faces)
+    for(int e = 0; e < 3; ++e) {
+      const int a = t[e], b = t[(e + 1) % 3];
+      adj[std::min(a, b)].push_back(std::max(a, b));
     }
+  for(int a = 0; a < P.n; ++a) {
+    std::sort(adj[a].begin(), adj[a].end());
+    adj[a].erase(std::unique(adj[a].begin(), adj[a].end()), adj[a].end());
+    for(int b : adj[a])
+      P.edges.push_back({a, b});
   }
+  return OK;
+}
 
-  // border loop: next() walks border halfedges with the mesh on their right; reverse it
+// The border loop of `mesh` through `bhd`, counterclockwise (next() walks border halfedges
+// with the mesh on their right: the walk is reversed), as cut-mesh vertex indices.
+template <class SeamMesh>
+Error_code flat_border_loop(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
+                            const Cut_mesh_numbering<SeamMesh>& numbering, const Flat_problem& P,
+                            std::vector<int>& loop, std::string& message)
+{
   if(!is_border(bhd, mesh)) {
     message = "the given halfedge is not on the border of the cut mesh";
     return ERROR_WRONG_PARAMETER;
   }
-  std::vector<int> loop;
-  {
-    halfedge_descriptor h = bhd;
-    std::size_t guard = 0;
-    do {
-      loop.push_back(index_of(target(h, mesh)));
-      h = next(h, mesh);
-      if(++guard > static_cast<std::size_t>(P.n) + 1) {
-        message = "the border of the cut mesh is not a simple loop";
-        return ERROR_CUT_FAILED;
-      }
-    } while(h != bhd);
+  loop.clear();
+  if(!walk_next_cycle(bhd, mesh, static_cast<std::size_t>(P.n) + 1,
+                      [&](typename boost::graph_traits<SeamMesh>::halfedge_descriptor h) {
+                        loop.push_back(numbering(target(h, mesh)));
+                        return true;
+                      })) {
+    message = "the border of the cut mesh is not a simple loop";
+    return ERROR_CUT_FAILED;
   }
   std::reverse(loop.begin(), loop.end());
-  {
-    std::vector<char> seen(P.n, 0);
-    for(int v : loop) {
-      if(v < 0 || seen[v]) {
-        message = "the border of the cut mesh is not a simple loop";
-        return ERROR_CUT_FAILED;
-      }
-      seen[v] = 1;
+  std::vector<char> seen(P.n, 0);
+  for(int v : loop) {
+    if(v < 0 || seen[v]) {
+      message = "the border of the cut mesh is not a simple loop";
+      return ERROR_CUT_FAILED;
     }
+    seen[v] = 1;
   }
+  return OK;
+}
 
+// Checks that the border loop holds one copy of each tile corner's cone, in the tile's
+// order (disk type: or the reverse order, then P.landmark_order_reversed), and rotates it
+// to start at a copy of cone 0 (P.border_loop); `loop_cone_pos` gets the sorted positions
+// of the cone copies along it.
+template <class TMVertex, class Tile, class BaseIndex>
+Error_code start_border_loop_at_first_landmark(const std::vector<TMVertex>& landmarks, const Tile& tile,
+                                               const BaseIndex& base_of, Flat_problem& P,
+                                               std::vector<int>& loop, std::vector<int>& loop_cone_pos,
+                                               std::string& message)
+{
+  const int k = static_cast<int>(landmarks.size());
   // cone index of each base vertex
   std::vector<int> cone_of_base(P.n_base, -1);
   for(int c = 0; c < k; ++c) {
     const std::size_t b = base_of(landmarks[c]);
-    if(b == Dense_index<tm_vertex_descriptor>::npos) {
+    if(b == BaseIndex::npos) {
       message = "a landmark is not a vertex of the mesh";
       return ERROR_LANDMARK_OUT_OF_RANGE;
     }
@@ -240,7 +253,7 @@ Error_code build_flat_topology(const SeamMesh& mesh,
   }
 
   // Positions of cone copies along the loop, in loop order.
-  std::vector<int> loop_cone_pos; // indices into loop
+  loop_cone_pos.clear(); // indices into loop
   for(std::size_t i = 0; i < loop.size(); ++i)
     if(cone_of_base[P.base[loop[i]]] >= 0)
       loop_cone_pos.push_back(static_cast<int>(i));
@@ -266,9 +279,6 @@ Error_code build_flat_topology(const SeamMesh& mesh,
   std::vector<int> seq(nc);
   for(int i = 0; i < nc; ++i)
     seq[i] = cone_of_base[P.base[loop[loop_cone_pos[(start + i) % nc]]]];
-  std::vector<int> cone_map(k);
-  for(int c = 0; c < k; ++c)
-    cone_map[c] = c;
   if(seq != expected) {
     bool ok = false;
     if(tile.type() == Disk_type) {
@@ -279,8 +289,6 @@ Error_code build_flat_topology(const SeamMesh& mesh,
       if(rev == expected) {
         ok = true;
         P.landmark_order_reversed = true;
-        for(int c = 0; c < k; ++c)
-          cone_map[c] = (k - c) % k;
       }
     }
     if(!ok) {
@@ -296,18 +304,28 @@ Error_code build_flat_topology(const SeamMesh& mesh,
   for(int& p : loop_cone_pos)
     p = (p - shift + static_cast<int>(loop.size())) % static_cast<int>(loop.size());
   std::sort(loop_cone_pos.begin(), loop_cone_pos.end());
+  return OK;
+}
 
+// Sizes the per-vertex arrays of P, fixes the cone copies at the tile corners and gives
+// every other border vertex its tile side.
+template <class Tile>
+void place_corners_and_sides(const Tile& tile, const std::vector<int>& loop,
+                             const std::vector<int>& loop_cone_pos, Flat_problem& P)
+{
+  typedef Complex<double> C;
   P.side.assign(P.n, -1);
   P.corner.assign(P.n, -1);
   P.border_param.assign(P.n, 0.0);
   P.kind.assign(P.n, Free);
   P.var.assign(P.n, -1);
   P.twin.assign(P.n, -1);
-  P.transform.assign(P.n, Isometry());
+  P.transform.assign(P.n, Hyperbolic_isometry_2<double>());
   P.fixed.assign(P.n, C());
   P.line_k0.assign(P.n, C());
   P.line_D.assign(P.n, C());
 
+  const int nc = tile.number_of_corners();
   const int L = static_cast<int>(loop.size());
   for(int s = 0; s < nc; ++s) {
     const int a = loop_cone_pos[s], b = (s + 1 < nc) ? loop_cone_pos[s + 1] : L;
@@ -317,9 +335,16 @@ Error_code build_flat_topology(const SeamMesh& mesh,
     for(int i = a + 1; i < b; ++i)
       P.side[loop[i]] = s;
   }
-  (void)cone_map;
+}
 
-  // Seam twins (sphere type): q-side vertices are images of their p-side copies.
+// The constraints of the border vertices: sphere type, seam twins (q-side vertices are
+// images of their p-side copies); disk type, sliding on the Klein segment of their side.
+template <class Tile>
+Error_code constrain_border_vertices(const Tile& tile, const std::vector<int>& loop, Flat_problem& P,
+                                     std::string& message)
+{
+  typedef Complex<double> C;
+  const int k = P.k;
   if(tile.type() == Sphere_type) {
     std::vector<int> p_copy(P.n_base, -1);
     for(int v : loop)
@@ -351,39 +376,50 @@ Error_code build_flat_topology(const SeamMesh& mesh,
         P.line_D[v] = C(CGAL::to_double(k1.x() - k0.x()), CGAL::to_double(k1.y() - k0.y()));
       }
   }
-  // Disk type: an inner edge (not on the border loop) whose two ends lie on one closed
-  // tile side bounds, with the border, a region that the embedding must flatten onto a
-  // straight Klein segment: its triangles would be degenerate. Refuse such input.
-  if(tile.type() == Disk_type) {
-    std::vector<int> loop_pos(P.n, -1);
-    for(int i = 0; i < L; ++i)
-      loop_pos[loop[i]] = i;
-    auto on_closed_side = [&](int v, int s) {
-      if(P.side[v] == s)
-        return true;
-      const int c = P.corner[v];
-      return c >= 0 && (c == tile.side_source(s) || c == tile.side_target(s));
-    };
-    for(const auto& e : P.edges) {
-      const int a = e[0], b = e[1];
-      if(loop_pos[a] < 0 || loop_pos[b] < 0)
-        continue;
-      const int d = std::abs(loop_pos[a] - loop_pos[b]);
-      if(d == 1 || d == L - 1)
-        continue; // a border edge
-      for(int s = 0; s < nc; ++s)
-        if(on_closed_side(a, s) && on_closed_side(b, s)) {
-          P.problem_vertices = {P.base[a], P.base[b]};
-          message = "the inner edge between mesh vertices " + std::to_string(P.base[a]) + " and " +
-                    std::to_string(P.base[b]) + " joins two boundary vertices of tile side " + std::to_string(s) +
-                    " (between landmarks " + std::to_string(s) + " and " + std::to_string((s + 1) % nc) +
-                    "): its triangles would be degenerate; put a landmark on the boundary between its ends, or split it";
-          return ERROR_BOUNDARY_CHORD;
-        }
-    }
-  }
+  return OK;
+}
 
-  // variables
+// Disk type: an inner edge (not on the border loop) whose two ends lie on one closed
+// tile side bounds, with the border, a region that the embedding must flatten onto a
+// straight Klein segment: its triangles would be degenerate. Refuse such input.
+template <class Tile>
+Error_code check_boundary_chords(const Tile& tile, const std::vector<int>& loop, Flat_problem& P,
+                                 std::string& message)
+{
+  const int nc = tile.number_of_corners();
+  const int L = static_cast<int>(loop.size());
+  std::vector<int> loop_pos(P.n, -1);
+  for(int i = 0; i < L; ++i)
+    loop_pos[loop[i]] = i;
+  auto on_closed_side = [&](int v, int s) {
+    if(P.side[v] == s)
+      return true;
+    const int c = P.corner[v];
+    return c >= 0 && (c == tile.side_source(s) || c == tile.side_target(s));
+  };
+  for(const auto& e : P.edges) {
+    const int a = e[0], b = e[1];
+    if(loop_pos[a] < 0 || loop_pos[b] < 0)
+      continue;
+    const int d = std::abs(loop_pos[a] - loop_pos[b]);
+    if(d == 1 || d == L - 1)
+      continue; // a border edge
+    for(int s = 0; s < nc; ++s)
+      if(on_closed_side(a, s) && on_closed_side(b, s)) {
+        P.problem_vertices = {P.base[a], P.base[b]};
+        message = "the inner edge between mesh vertices " + std::to_string(P.base[a]) + " and " +
+                  std::to_string(P.base[b]) + " joins two boundary vertices of tile side " + std::to_string(s) +
+                  " (between landmarks " + std::to_string(s) + " and " + std::to_string((s + 1) % nc) +
+                  "): its triangles would be degenerate; put a landmark on the boundary between its ends, or split it";
+        return ERROR_BOUNDARY_CHORD;
+      }
+  }
+  return OK;
+}
+
+// The variables: two per free vertex, one per vertex sliding on a side.
+inline void number_variables(Flat_problem& P)
+{
   P.n_vars = 0;
   for(int v = 0; v < P.n; ++v) {
     if(P.kind[v] == Free) {
@@ -394,6 +430,44 @@ Error_code build_flat_topology(const SeamMesh& mesh,
       P.n_vars += 1;
     }
   }
+}
+
+// Builds the topology part of a Flat_problem from a seam mesh (a topological disk) whose
+// border loop goes through copies of the landmarks. `landmarks` are base-mesh vertices in
+// cone order. Fills faces, base, border_loop, side, corner, kind, var, twin, transform,
+// fixed, line_k0/D, edges (weights are set by the caller); `base_vertex`: the mesh vertex of
+// each base index (the order of vertices(tm)).
+template <class SeamMesh, class Tile>
+Error_code build_flat_topology(const SeamMesh& mesh,
+                               typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
+                               const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
+                               const Tile& tile,
+                               Flat_problem& P,
+                               std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& base_vertex,
+                               std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor>& cut_vertices,
+                               std::string& message)
+{
+  P = Flat_problem();
+  P.type = tile.type();
+  P.k = static_cast<int>(landmarks.size());
+
+  Cut_mesh_numbering<SeamMesh> numbering(mesh.mesh());
+  number_cut_mesh(mesh, numbering, P, base_vertex, cut_vertices);
+  Error_code ec = flat_faces_and_edges(mesh, numbering, P, message);
+  std::vector<int> loop, loop_cone_pos;
+  if(ec == OK)
+    ec = flat_border_loop(mesh, bhd, numbering, P, loop, message);
+  if(ec == OK)
+    ec = start_border_loop_at_first_landmark(landmarks, tile, numbering.base_of, P, loop, loop_cone_pos, message);
+  if(ec != OK)
+    return ec;
+  place_corners_and_sides(tile, loop, loop_cone_pos, P);
+  ec = constrain_border_vertices(tile, loop, P, message);
+  if(ec == OK && tile.type() == Disk_type)
+    ec = check_boundary_chords(tile, loop, P, message);
+  if(ec != OK)
+    return ec;
+  number_variables(P);
   return OK;
 }
 

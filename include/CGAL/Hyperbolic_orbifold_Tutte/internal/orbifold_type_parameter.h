@@ -5,7 +5,7 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_ORBIFOLD_TYPE_PARAMETER_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_ORBIFOLD_TYPE_PARAMETER_H
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
 namespace CGAL {
@@ -19,7 +19,7 @@ template <class TriangleMesh, class NamedParameters>
 bool orbifold_type_parameter(const TriangleMesh& tm, const NamedParameters& np, Orbifold_type& type)
 {
   if(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value)
-    return detect_orbifold_type(tm, type);
+    return CGAL::Hyperbolic_orbifold_Tutte::detect_orbifold_type(tm, type);
   type = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::orbifold_type), Sphere_type);
   return true;
 }
