@@ -34,7 +34,7 @@ namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 
 /*!
-\ingroup PkgHyperbolicOrbifoldTutteEnums
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 the `Surface_mesh_parameterization::Error_code` nearest to `code`, for the drop-in
 interface of `Hyperbolic_orbifold_Tutte_parameterizer_3`: `OK`, the empty-mesh and
 non-triangle errors, `ERROR_NO_TOPOLOGICAL_BALL` (sphere type) or

@@ -13,7 +13,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
@@ -86,12 +86,7 @@ Error_code certify_hyperbolic_orbifold_embedding(
   };
 
   Orbifold_type type = Sphere_type;
-  if(!internal::orbifold_type_parameter(tm, np, type)) {
-    // no face, or several boundary loops: check_mesh() says which check fails first
-    const Status r = check_mesh(tm, std::nullopt);
-    return fail(r ? ERROR_WRONG_TOPOLOGY : r.code, r ? "the mesh is neither closed nor a disk" : r.message);
-  }
-  Status r = check_mesh(tm, type);
+  const Status r = internal::prepare_mesh(tm, get_const_property_map(vertex_point, tm), np, type);
   if(!r)
     return fail(r.code, r.message);
   const int k = static_cast<int>(landmarks.size());

@@ -92,7 +92,7 @@ inline const char* error_message(Error_code code)
 }
 
 /*!
-\ingroup PkgHyperbolicOrbifoldTutteEnums
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
 the outcome of an operation, the one way the package reports an error: `code == OK`, or an
 error code with a one-line message saying what is wrong and where (`message` may then be
 more specific than `error_message(code)`).

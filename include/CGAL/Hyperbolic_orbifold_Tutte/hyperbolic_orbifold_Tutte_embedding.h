@@ -11,7 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_type_parameter.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
@@ -116,58 +116,28 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
 
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, tm));
 
-  // 1. the mesh and the orbifold type
+  // 1. prepare: the orbifold type and the mesh's checks; the landmarks and their order
   Orbifold_type type = Sphere_type;
-  if(!internal::orbifold_type_parameter(tm, np, type)) {
-    // no face, or several boundary loops: check_mesh() says which check fails first
-    // (empty, non-manifold, several components, ..., or the boundary loops)
-    const Status r = check_mesh(tm, vpm, std::nullopt);
-    return fail(r ? ERROR_WRONG_TOPOLOGY : r.code,
-                r ? "the mesh is neither closed nor a disk (it has more than one boundary loop)" : r.message);
-  }
-  {
-    const Status r = check_mesh(tm, vpm, type);
-    if(!r)
-      return fail(r.code, r.message);
-  }
-  // 2. the landmarks
-  {
-    const Status r = check_landmark_vertices(tm, landmarks, type);
-    if(!r)
-      return fail(r.code, r.message);
-  }
-  std::vector<vertex_descriptor> ordered = landmarks;
-  st.landmark_order.resize(landmarks.size());
-  for(std::size_t i = 0; i < landmarks.size(); ++i)
-    st.landmark_order[i] = i;
-  const Landmark_order order = choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order);
-  if(order == Tsp_order && type == Sphere_type) {
-    const std::vector<std::size_t> perm = compute_landmark_tour(tm, landmarks, vpm);
-    if(perm.size() != landmarks.size())
-      return fail(ERROR_CUT_FAILED, "the landmark tour could not be computed");
-    for(std::size_t i = 0; i < perm.size(); ++i)
-      ordered[i] = landmarks[perm[i]];
-    st.landmark_order = perm;
-  }
-
-  // 3. the cut and the seam mesh (seams on edges and vertices held in the storage's own
-  //    flags, so that the input mesh is not modified and may be const)
+  Status r = internal::prepare_mesh(tm, vpm, np, type);
+  if(r)
+    r = check_landmark_vertices(tm, landmarks, type);
+  std::vector<vertex_descriptor> ordered;
+  if(r)
+    r = internal::order_landmarks(tm, vpm, landmarks, type,
+                                  choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order),
+                                  ordered, st.landmark_order);
+  // 2. cut: the seam mesh
   internal::Seam_mesh_storage<TriangleMesh> seams(tm);
   typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
   Mesh& mesh = seams.mesh;
-  if(type == Sphere_type) {
-    const Cut_result<TriangleMesh> cut = compute_cut_through_landmarks(tm, ordered, vpm);
-    if(!cut.ok)
-      return fail(ERROR_CUT_FAILED, cut.message);
-    if(!add_cut_to_seam_mesh(mesh, tm, cut))
-      return fail(ERROR_CUT_FAILED, "the cut could not be marked on the seam mesh");
-  }
   typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
-  if(!seams.border_halfedge(bhd))
-    return fail(ERROR_CUT_FAILED, "the cut mesh has no border");
+  if(r)
+    r = internal::cut_open(tm, vpm, ordered, type, seams, bhd);
+  if(!r)
+    return fail(r.code, r.message);
   const double time_cut = std::chrono::duration<double>(Clock::now() - t0).count();
 
-  // 4. the embedding
+  // 3. solve, certify and mend (the parameterizer runs the pipeline's solve stage)
   typedef Hyperbolic_orbifold_Tutte_parameterizer_3<Mesh> Parameterizer;
   typedef typename Parameterizer::Point_2 Point_2;
   Parameterizer parameterizer(type, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
@@ -189,7 +159,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   if(ec != OK)
     return ec;
 
-  // 5. corner coordinates
+  // 4. corner coordinates
   for(face_descriptor f : faces(tm))
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
       const typename boost::graph_traits<Mesh>::halfedge_descriptor sh(h, false);
