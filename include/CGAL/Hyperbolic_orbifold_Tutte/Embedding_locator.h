@@ -161,6 +161,7 @@ public:
 
   /// \name Access
   /// @{
+
   /// whether the locator was built (see `message()` otherwise)
   bool is_valid() const { return lt_.valid; }
   /// how barycentric coordinates are defined (see `Interpolation_model`)
