@@ -18,7 +18,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 
 #include "io/read_and_check.h"
 #include "io/svg.h"
@@ -308,8 +308,8 @@ int run_embed(int argc, char** argv)
 
   // reading and checking: the same calls as the fuzz target (fuzz/fuzz_mesh_reader.cpp)
   Surface_mesh m;
-  HOT::internal::Mesh_info info;
-  HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info);
+  HOT::Mesh_info info;
+  HOT::Status r = hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info);
   if(!r)
     throw Failure{r.code, r.message};
   const HOT::Orbifold_type type = info.type;
@@ -416,8 +416,8 @@ struct Embedded
 
 void read_and_check(const std::string& mesh_path, const std::string& cones_path, Embedded& e)
 {
-  HOT::internal::Mesh_info info;
-  HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, e.mesh, &info);
+  HOT::Mesh_info info;
+  HOT::Status r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, e.mesh, &info);
   if(!r) throw Failure{r.code, r.message};
   e.type = info.type;
   r = hot_tools::read_and_check_landmarks(cones_path, e.mesh, e.type, e.landmarks);
@@ -470,7 +470,7 @@ int run_map(int argc, char** argv)
   std::vector<std::size_t> order(A.landmarks.size());
   for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   if(A.type == HOT::Sphere_type) {
-    order = HOT::internal::compute_tsp_landmark_order(A.mesh, A.landmarks, get(CGAL::vertex_point, A.mesh));
+    order = HOT::compute_landmark_tour(A.mesh, A.landmarks);
     if(order.size() != A.landmarks.size())
       throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the source"};
   }
@@ -549,7 +549,7 @@ typedef std::vector<std::pair<std::string, std::string> > Manifest; // (mesh pat
 Manifest read_manifest(const std::string& manifest)
 {
   std::string manifest_text; // a missing file, a directory etc. get their own reason
-  const HOT::internal::Check_result mr = hot_tools::read_file_contents(manifest, manifest_text);
+  const HOT::Status mr = hot_tools::read_file_contents(manifest, manifest_text);
   if(!mr)
     throw Failure{mr.code, mr.message};
   std::istringstream in(manifest_text);
@@ -773,17 +773,17 @@ int run_landmarks(int argc, char** argv)
   const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
   const long k = opt.get_int("count", 1, 100000);
   Surface_mesh m;
-  const HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, m);
+  const HOT::Status r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, m);
   if(!r)
     throw Failure{r.code, r.message};
   if(static_cast<std::size_t>(k) > num_vertices(m))
     throw Usage_error{"--count is larger than the number of vertices (" + std::to_string(num_vertices(m)) + ")"};
-  const std::vector<std::size_t> lm = HOT::internal::sample_landmarks(m, get(CGAL::vertex_point, m), static_cast<std::size_t>(k));
+  const std::vector<SM_vertex> lm = HOT::select_landmarks(m, static_cast<std::size_t>(k));
   if(lm.size() != static_cast<std::size_t>(k))
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the boundary has fewer than " + std::to_string(k) + " vertices"};
   write_file_atomically(out, [&](std::ostream& os) {
-    for(std::size_t i : lm)
-      os << i << "\n";
+    for(SM_vertex v : lm)
+      os << v.idx() << "\n"; // read_mesh() keeps the file's vertex order: idx() is the file's index
   });
   std::cout << "wrote " << k << " landmarks of " << mesh_path << " to " << out << std::endl;
   return EXIT_SUCCESS;
