@@ -6,12 +6,12 @@
 //   hyperbolic_orbifold_tutte embed|map|collection|landmarks|cut|tile ... (--help lists them)
 //
 // Every error ends the program with a non-zero status and one line on stderr;
-// output files are written to a temporary name and renamed only when complete.
+// output files are written to a temporary name and renamed only when complete
+// (command_line.h). The files' formats are written by the headers of io/.
 
 // the mesh's header first: Seam_mesh calls CGAL::halfedges(tm) etc. qualified
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
@@ -22,6 +22,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 
+#include "command_line.h"
 #include "io/embedding_obj.h"
 #include "io/map_files.h"
 #include "io/read_and_check.h"
@@ -36,10 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <functional>
 #include <iostream>
-#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -49,10 +47,7 @@ namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 
 namespace {
 
-struct Usage_error
-{
-  std::string message;
-};
+using namespace hot_cli;
 
 const char* const usage_text =
   "usage:\n"
@@ -82,123 +77,6 @@ const char* const usage_text =
   "      given one by default, or the paper's tour) and writes it as CGAL's selection file:\n"
   "      line 1 the cones in that order, line 2 empty, line 3 the seam edges 's0 t0 s1 t1 ...'\n"
   "      (for Seam_mesh::add_seams() and Surface_mesh_parameterization::locate_cones())\n";
-
-// --name value options, and --flag options without value (listed in `flags`).
-class Options
-{
-public:
-  Options(int argc, char** argv, int first, const std::set<std::string>& known,
-          const std::set<std::string>& flags = std::set<std::string>())
-  {
-    for(int i = first; i < argc; ++i) {
-      const std::string a = argv[i];
-      if(a.size() < 3 || a.compare(0, 2, "--") != 0)
-        throw Usage_error{"unexpected argument '" + a + "'"};
-      const std::string name = a.substr(2);
-      if(flags.count(name)) {
-        if(values_.count(name))
-          throw Usage_error{"option '" + a + "' given twice"};
-        values_[name] = "1";
-        continue;
-      }
-      if(!known.count(name))
-        throw Usage_error{"unknown option '" + a + "'"};
-      if(i + 1 >= argc)
-        throw Usage_error{"option '" + a + "' needs a value"};
-      if(values_.count(name))
-        throw Usage_error{"option '" + a + "' given twice"};
-      values_[name] = argv[++i];
-    }
-  }
-  bool has(const std::string& name) const { return values_.count(name) != 0; }
-  std::string get(const std::string& name) const
-  {
-    auto it = values_.find(name);
-    if(it == values_.end())
-      throw Usage_error{"missing option --" + name};
-    return it->second;
-  }
-  long get_int(const std::string& name, long lo, long hi) const
-  {
-    const std::string s = get(name);
-    errno = 0;
-    char* end = nullptr;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    if(s.empty() || *end != '\0' || errno != 0)
-      throw Usage_error{"--" + name + " must be an integer, got '" + s + "'"};
-    if(v < lo || v > hi)
-      throw Usage_error{"--" + name + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-                        ", got " + s};
-    return v;
-  }
-
-private:
-  std::map<std::string, std::string> values_;
-};
-
-// Writes a file atomically: the content goes to FILE.tmp, renamed to FILE on success.
-void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& writer)
-{
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if(!out)
-      throw std::runtime_error("cannot write '" + path + "'");
-    writer(out);
-    out.flush();
-    if(!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw std::runtime_error("error while writing '" + path + "'");
-    }
-  }
-  if(std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "'");
-  }
-}
-
-// The output files of a command, each written atomically. Unless commit() is called, the
-// destructor removes those already written: a command that fails leaves no output file.
-class Output_files
-{
-public:
-  Output_files() = default;
-  Output_files(const Output_files&) = delete;
-  Output_files& operator=(const Output_files&) = delete;
-  ~Output_files()
-  {
-    for(const std::string& f : written_)
-      std::remove(f.c_str());
-  }
-  void write(const std::string& path, const std::function<void(std::ostream&)>& writer)
-  {
-    write_file_atomically(path, writer);
-    written_.push_back(path);
-  }
-  void commit() { written_.clear(); }
-
-private:
-  std::vector<std::string> written_;
-};
-
-HOT::Orbifold_type parse_orbifold(const std::string& s)
-{
-  if(s == "sphere")
-    return HOT::Sphere_type;
-  if(s == "disk")
-    return HOT::Disk_type;
-  throw Usage_error{"--orbifold must be 'sphere' or 'disk', got '" + s + "'"};
-}
-
-// --order given|tsp; `fallback` when the option is absent (empty: the default of the type)
-std::string parse_order(const Options& opt, const std::string& fallback)
-{
-  const std::string s = opt.has("order") ? opt.get("order") : fallback;
-  if(!s.empty() && s != "given" && s != "tsp")
-    throw Usage_error{"--order must be given or tsp, got '" + s + "'"};
-  return s;
-}
 
 int run_tile(int argc, char** argv)
 {
@@ -235,20 +113,7 @@ typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
 typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor SM_halfedge;
 typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
 
-struct Failure
-{
-  HOT::Error_code code;
-  std::string message;
-};
-
 typedef Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> UV_map;
-
-// throws a failed check's reason
-void require(const HOT::Status& r)
-{
-  if(!r)
-    throw Failure{r.code, r.message};
-}
 
 // reads and checks a mesh and its landmarks (the same calls as the fuzz target,
 // fuzz/fuzz_mesh_reader.cpp); returns the orbifold type (required or detected)
