@@ -36,7 +36,7 @@
 
 #include "bench_common.h"
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 
 #include <io/read_and_check.h>
 

@@ -3,7 +3,7 @@
 //
 // libFuzzer target for the mesh and landmark readers and the input checks, through the
 // calls the command-line program makes before embedding (tools/hyperbolic_orbifold_tutte.cpp:
-// read_and_check_mesh(), read_and_check_landmarks(), and for `landmarks`, sample_landmarks()),
+// read_and_check_mesh(), read_and_check_landmarks(), and for `landmarks`, select_landmarks()),
 // on the same mesh type (Surface_mesh of Epick points). Built and run by scripts/fuzz.sh.
 //
 // Input layout:
@@ -25,8 +25,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 
 #include <io/read_and_check.h>
 
@@ -42,7 +42,6 @@
 #include <vector>
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
-namespace HI = CGAL::Hyperbolic_orbifold_Tutte::internal;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Surface_mesh;
@@ -91,7 +90,7 @@ void write_file(const std::string& path, const std::uint8_t* data, std::size_t s
   }
 }
 
-[[noreturn]] void contract_broken(const char* what, const HI::Check_result& r)
+[[noreturn]] void contract_broken(const char* what, const HOT::Status& r)
 {
   std::fprintf(stderr, "fuzz_mesh_reader: contract broken: %s (code %d, message '%s')\n", what, int(r.code),
                r.message.c_str());
@@ -99,7 +98,7 @@ void write_file(const std::string& path, const std::uint8_t* data, std::size_t s
 }
 
 // every result: a valid code; a failure has a non-empty one-line message
-void check_result(const HI::Check_result& r)
+void check_result(const HOT::Status& r)
 {
   if(int(r.code) < 0 || int(r.code) >= HOT::number_of_error_codes)
     contract_broken("invalid Error_code", r);
@@ -140,8 +139,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // embed, map, collection, landmarks: the mesh
   Surface_mesh m;
-  HI::Mesh_info info;
-  const HI::Check_result r = hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info);
+  HOT::Mesh_info info;
+  const HOT::Status r = hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info);
   check_result(r);
   if(!r)
     return 0;
@@ -152,11 +151,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // embed, map, collection: the landmarks
   std::vector<SM_vertex> landmarks;
-  const HI::Check_result rl = hot_tools::read_and_check_landmarks(cones_path, m, info.type, landmarks);
+  const HOT::Status rl = hot_tools::read_and_check_landmarks(cones_path, m, info.type, landmarks);
   check_result(rl);
   if(rl) {
     std::set<SM_vertex> distinct(landmarks.begin(), landmarks.end());
-    if(landmarks.size() < HI::minimum_number_of_landmarks || distinct.size() != landmarks.size())
+    if(landmarks.size() < HOT::minimum_number_of_landmarks || distinct.size() != landmarks.size())
       contract_broken("accepted landmarks that are too few or not distinct", rl);
     for(SM_vertex v : landmarks) {
       if(std::size_t(v.idx()) >= num_vertices(m))
@@ -170,10 +169,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // landmarks: farthest-point / border sampling on the checked mesh
   if(sample && num_vertices(m) >= 5 && num_vertices(m) <= 5000) {
-    const std::vector<std::size_t> lm = HI::sample_landmarks(m, get(CGAL::vertex_point, m), 5);
-    std::set<std::size_t> distinct(lm.begin(), lm.end());
-    for(std::size_t i : lm)
-      if(i >= num_vertices(m))
+    const std::vector<SM_vertex> lm = HOT::select_landmarks(m, 5);
+    std::set<SM_vertex> distinct(lm.begin(), lm.end());
+    for(SM_vertex v : lm)
+      if(std::size_t(v.idx()) >= num_vertices(m))
         contract_broken("a sampled landmark out of range", r);
     if(distinct.size() != lm.size())
       contract_broken("sampled landmarks are not distinct", r);

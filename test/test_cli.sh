@@ -180,5 +180,58 @@ case "$case_name" in
     printf 'hand_a.off cones.txt\nhand_b.off five.txt\n' > "$tmp/bad.txt"
     expect_error "$tmp/o3/report.json" collection --manifest "$tmp/bad.txt" --out "$tmp/o3"
     echo "ok (cycle consistency $cc)" ;;
+  cut)
+    # CGAL's selection file of the cut of bear.off through 7 landmarks: line 1 the cones in the
+    # cut's order, line 2 empty, line 3 the seam as vertex pairs "s0 t0 s1 t1 ...", which must be
+    # mesh edges forming one simple path from the first cone to the last through every cone in order
+    off="$data/meshes/bear.off"
+    nv=$(sed -n 2p "$off" | awk '{print $1}')
+    check_selection() { # check_selection FILE: the file's format and its seam
+      [ "$(grep -c '' "$1")" -eq 3 ] || fail "$1: not 3 lines"
+      [ -z "$(sed -n 2p "$1")" ] || fail "$1: line 2 is not empty"
+      awk -v n="$nv" '
+        NR == FNR { if(FNR > 2 + n && NF >= 4) { e[$2 " " $3]; e[$3 " " $2]; e[$3 " " $4]; e[$4 " " $3]; e[$4 " " $2]; e[$2 " " $4] } next }
+        FNR == 1 { k = NF; for(i = 1; i <= NF; i++) { cone[i] = $i; rank[$i] = i } next }
+        FNR == 3 {
+          if(NF == 0 || NF % 2) { print "line 3 is not a list of vertex pairs"; exit 1 }
+          if($1 != cone[1]) { print "the seam does not start at the first cone"; exit 1 }
+          cur = $1; seen[cur]; next_cone = 2
+          for(i = 1; i < NF; i += 2) {
+            if($i != cur) { print "pair " (i + 1) / 2 " does not continue the path"; exit 1 }
+            if(!(($i " " $(i + 1)) in e)) { print $i " " $(i + 1) " is not an edge of the mesh"; exit 1 }
+            cur = $(i + 1)
+            if(cur in seen) { print "vertex " cur " is twice on the seam: not a simple path"; exit 1 }
+            seen[cur]
+            if(cur in rank) { if(rank[cur] != next_cone) { print "cone " cur " out of order"; exit 1 } next_cone++ }
+          }
+          if(next_cone != k + 1 || cur != cone[k]) { print "the seam does not pass every cone to end at the last"; exit 1 }
+          ok = 1
+        }
+        END { if(!ok) exit 1 }' "$off" "$1" || fail "$1: the seam is not a simple path of mesh edges through the cones"
+    }
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/bear.cones"
+    "$prog" cut --mesh "$off" --cones "$tmp/bear.cones" --out "$tmp/b.selection.txt" || fail "cut failed"
+    [ "$(sed -n 1p "$tmp/b.selection.txt")" = "$(cat "$tmp/bear.cones")" ] || fail "line 1 is not the given cones"
+    check_selection "$tmp/b.selection.txt"
+    # the paper's tour: line 1 is the cones in another order, the seam follows it
+    "$prog" cut --mesh "$off" --cones "$tmp/bear.cones" --order tsp --out "$tmp/t.selection.txt" || fail "cut --order tsp failed"
+    [ "$(sed -n 1p "$tmp/t.selection.txt" | tr ' ' '\n' | sort)" = "$(tr ' ' '\n' < "$tmp/bear.cones" | sort)" ] \
+      || fail "--order tsp: line 1 is not a permutation of the cones"
+    check_selection "$tmp/t.selection.txt"
+    # errors: a disk (3), too few cones (3), a cone out of range (3), no output folder (1), usage (2)
+    echo "1166 1785 147 932 2251 139" > "$tmp/m.cones"
+    echo "1 2 3 4" > "$tmp/four.cones"
+    echo "1 2 3 4 99999999" > "$tmp/range.cones"
+    expect_error "$tmp/x.selection.txt" cut --mesh "$data/meshes/mushroom.off" --cones "$tmp/m.cones" --out "$tmp/x.selection.txt"
+    grep -q "closed genus-0" "$tmp/stderr" || fail "the refusal of a disk does not say why"
+    "$prog" cut --mesh "$data/meshes/mushroom.off" --cones "$tmp/m.cones" --out "$tmp/x.selection.txt" 2>/dev/null; [ $? -eq 3 ] || fail "status for a disk"
+    expect_error "$tmp/x.selection.txt" cut --mesh "$off" --cones "$tmp/four.cones" --out "$tmp/x.selection.txt"
+    "$prog" cut --mesh "$off" --cones "$tmp/four.cones" --out "$tmp/x.selection.txt" 2>/dev/null; [ $? -eq 3 ] || fail "status for too few cones"
+    expect_error "$tmp/x.selection.txt" cut --mesh "$off" --cones "$tmp/range.cones" --out "$tmp/x.selection.txt"
+    expect_error "$tmp/nodir/x.selection.txt" cut --mesh "$off" --cones "$tmp/bear.cones" --out "$tmp/nodir/x.selection.txt"
+    "$prog" cut --mesh "$off" --cones "$tmp/bear.cones" --out "$tmp/nodir/x.selection.txt" 2>/dev/null; [ $? -eq 1 ] || fail "status for a missing folder"
+    expect_error "$tmp/x.selection.txt" cut --mesh "$off" --cones "$tmp/bear.cones" --order random --out "$tmp/x.selection.txt"
+    "$prog" cut --mesh "$off" --cones "$tmp/bear.cones" --order random --out "$tmp/x.selection.txt" 2>/dev/null; [ $? -eq 2 ] || fail "status for a usage error"
+    echo ok ;;
   *) fail "unknown case $case_name" ;;
 esac

@@ -503,7 +503,7 @@ static void test_bad_inputs()
   auto rn = HOT::compute_cut_through_landmarks(sm, std::vector<SM::Vertex_index>{vs[0], SM::null_vertex(), vs[9]}, vpm);
   CHECK(bad(rn), "null landmark -> ok=false (" << rn.message << ")");
   CHECK(HOT::compute_landmark_tour(sm, std::vector<SM::Vertex_index>{vs[0], vs[5], vs[0]}, vpm).empty(),
-        "compute_tsp_landmark_order returns an empty order for duplicate landmarks");
+        "compute_landmark_tour returns an empty order for duplicate landmarks");
 
   // A sphere with one face missing: it has a border.
   Triangles open_tris(tris.begin() + 1, tris.end());

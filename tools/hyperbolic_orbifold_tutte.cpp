@@ -3,24 +3,31 @@
 //
 // hyperbolic_orbifold_tutte: the package's main jobs from the command line.
 //
-//   hyperbolic_orbifold_tutte tile --orbifold sphere|disk --cones K --svg FILE [--depth D]
+//   hyperbolic_orbifold_tutte embed|map|collection|landmarks|cut|tile ... (--help lists them)
 //
 // Every error ends the program with a non-zero status and one line on stderr;
-// output files are written to a temporary name and renamed only when complete.
+// output files are written to a temporary name and renamed only when complete
+// (command_line.h). The files' formats are written by the headers of io/.
 
 // the mesh's header first: Seam_mesh calls CGAL::halfedges(tm) etc. qualified
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 
+#include "command_line.h"
+#include "io/embedding_obj.h"
+#include "io/map_files.h"
 #include "io/read_and_check.h"
+#include "io/reports.h"
+#include "io/selection.h"
 #include "io/svg.h"
 
 #include <sys/stat.h>
@@ -30,10 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <functional>
 #include <iostream>
-#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -43,10 +47,7 @@ namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 
 namespace {
 
-struct Usage_error
-{
-  std::string message;
-};
+using namespace hot_cli;
 
 const char* const usage_text =
   "usage:\n"
@@ -61,91 +62,21 @@ const char* const usage_text =
   "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
   "      bijective or the program fails. --order defaults to tsp for sphere type.\n"
   "      --recentre: a part too squeezed for double in the tile (a long protrusion without\n"
-  "      landmarks) may be solved in a moved frame; the report then gives the frame.\n";
-
-// --name value options, and --flag options without value (listed in `flags`).
-class Options
-{
-public:
-  Options(int argc, char** argv, int first, const std::set<std::string>& known,
-          const std::set<std::string>& flags = std::set<std::string>())
-  {
-    for(int i = first; i < argc; ++i) {
-      const std::string a = argv[i];
-      if(a.size() < 3 || a.compare(0, 2, "--") != 0)
-        throw Usage_error{"unexpected argument '" + a + "'"};
-      const std::string name = a.substr(2);
-      if(flags.count(name)) {
-        if(values_.count(name))
-          throw Usage_error{"option '" + a + "' given twice"};
-        values_[name] = "1";
-        continue;
-      }
-      if(!known.count(name))
-        throw Usage_error{"unknown option '" + a + "'"};
-      if(i + 1 >= argc)
-        throw Usage_error{"option '" + a + "' needs a value"};
-      if(values_.count(name))
-        throw Usage_error{"option '" + a + "' given twice"};
-      values_[name] = argv[++i];
-    }
-  }
-  bool has(const std::string& name) const { return values_.count(name) != 0; }
-  std::string get(const std::string& name) const
-  {
-    auto it = values_.find(name);
-    if(it == values_.end())
-      throw Usage_error{"missing option --" + name};
-    return it->second;
-  }
-  long get_int(const std::string& name, long lo, long hi) const
-  {
-    const std::string s = get(name);
-    errno = 0;
-    char* end = nullptr;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    if(s.empty() || *end != '\0' || errno != 0)
-      throw Usage_error{"--" + name + " must be an integer, got '" + s + "'"};
-    if(v < lo || v > hi)
-      throw Usage_error{"--" + name + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-                        ", got " + s};
-    return v;
-  }
-
-private:
-  std::map<std::string, std::string> values_;
-};
-
-// Writes a file atomically: the content goes to FILE.tmp, renamed to FILE on success.
-void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& writer)
-{
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if(!out)
-      throw std::runtime_error("cannot write '" + path + "'");
-    writer(out);
-    out.flush();
-    if(!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw std::runtime_error("error while writing '" + path + "'");
-    }
-  }
-  if(std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "'");
-  }
-}
-
-HOT::Orbifold_type parse_orbifold(const std::string& s)
-{
-  if(s == "sphere")
-    return HOT::Sphere_type;
-  if(s == "disk")
-    return HOT::Disk_type;
-  throw Usage_error{"--orbifold must be 'sphere' or 'disk', got '" + s + "'"};
-}
+  "      landmarks) may be solved in a moved frame; the report then gives the frame.\n"
+  "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
+  "      --out MAP.txt [--colors-out B_colored.ply]\n"
+  "      maps every vertex of A onto B through the common orbifold (landmark i of CA to\n"
+  "      landmark i of CB); MAP.txt: one line 'face b0 b1 b2' per vertex of A\n"
+  "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs]\n"
+  "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
+  "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt)\n"
+  "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES\n"
+  "      writes K well-spread landmarks of the mesh\n"
+  "  hyperbolic_orbifold_tutte cut --mesh IN --cones CONES [--order given|tsp] --out OUT.selection.txt\n"
+  "      cuts the closed genus-0 mesh along a simple path through the cones in order (the\n"
+  "      given one by default, or the paper's tour) and writes it as CGAL's selection file:\n"
+  "      line 1 the cones in that order, line 2 empty, line 3 the seam edges 's0 t0 s1 t1 ...'\n"
+  "      (for Seam_mesh::add_seams() and Surface_mesh_parameterization::locate_cones())\n";
 
 int run_tile(int argc, char** argv)
 {
@@ -182,20 +113,27 @@ typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
 typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor SM_halfedge;
 typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
 
-struct Failure
-{
-  HOT::Error_code code;
-  std::string message;
-};
+typedef Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> UV_map;
 
-std::string json_escape(const std::string& s)
+// reads and checks a mesh and its landmarks (the same calls as the fuzz target,
+// fuzz/fuzz_mesh_reader.cpp); returns the orbifold type (required or detected)
+HOT::Orbifold_type read_mesh_and_landmarks(const std::string& mesh_path, const std::string& cones_path,
+                                           std::optional<HOT::Orbifold_type> required_type, Surface_mesh& m,
+                                           std::vector<SM_vertex>& landmarks)
 {
-  std::string r;
-  for(char c : s) {
-    if(c == '"' || c == '\\') { r += '\\'; r += c; }
-    else if(static_cast<unsigned char>(c) < 0x20) { char b[8]; std::snprintf(b, sizeof(b), "\\u%04x", c); r += b; }
-    else r += c;
-  }
+  HOT::Mesh_info info;
+  require(hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info));
+  require(hot_tools::read_and_check_landmarks(cones_path, m, info.type, landmarks));
+  return info.type;
+}
+
+// the 0-based file indices of vertices of a mesh read by read_mesh(), which keeps the file's
+// vertex order: idx() is the file's index
+std::vector<std::size_t> file_indices(const std::vector<SM_vertex>& vs)
+{
+  std::vector<std::size_t> r;
+  for(SM_vertex v : vs)
+    r.push_back(v.idx());
   return r;
 }
 
@@ -248,158 +186,104 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
   svg.end(os);
 }
 
-// OUT.obj of `embed`: v = input vertices, vt = one Poincare point per cut-mesh vertex,
-// f = input faces in input order with their corners' vt
-template <class HalfedgeUVMap>
-void write_embedding_obj(std::ostream& os, const Surface_mesh& m, const HalfedgeUVMap& uv)
+// the options of `embed`
+struct Embed_job
 {
-  std::vector<std::vector<std::pair<Kernel::Point_2, std::size_t> > > vts(num_vertices(m));
-  std::vector<Kernel::Point_2> vt_points;
-  std::vector<std::size_t> corner_vt(num_halfedges(m), 0);
-  for(SM_face f : faces(m))
-    for(SM_halfedge h : halfedges_around_face(halfedge(f, m), m)) {
-      const Kernel::Point_2 p = get(uv, h);
-      auto& list = vts[target(h, m).idx()];
-      std::size_t id = std::size_t(-1);
-      for(const auto& e : list)
-        if(e.first == p) { id = e.second; break; }
-      if(id == std::size_t(-1)) {
-        id = vt_points.size();
-        vt_points.push_back(p);
-        list.push_back(std::make_pair(p, id));
-      }
-      corner_vt[h.idx()] = id;
-    }
-  os.precision(17);
-  os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
-  for(SM_vertex v : vertices(m))
-    os << "v " << m.point(v) << "\n";
-  for(const auto& p : vt_points)
-    os << "vt " << p.x() << " " << p.y() << "\n";
-  for(SM_face f : faces(m)) {
-    os << "f";
-    // read_mesh() builds face f with source(halfedge(f)) = the file's first vertex of the face
-    for(SM_halfedge h : halfedges_around_face(prev(halfedge(f, m), m), m))
-      os << " " << target(h, m).idx() + 1 << "/" << corner_vt[h.idx()] + 1;
-    os << "\n";
-  }
-}
+  hot_tools::Embedding_request request; // the mesh, weights and order (empty: the type's default)
+  std::string cones_path, out_path;
+  std::optional<std::string> svg_path, report_path;
+  std::optional<HOT::Orbifold_type> required_type;
+  HOT::Weight_type weights = HOT::Cotangent;
+  bool recentre = false;
+};
 
-int run_embed(int argc, char** argv)
+Embed_job parse_embed_options(int argc, char** argv)
 {
   const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report"}, {"recentre"});
-  const std::string mesh_path = opt.get("mesh"), cones_path = opt.get("cones"), out_path = opt.get("out");
-  HOT::Weight_type weights = HOT::Cotangent;
-  std::string weights_name = "cotan";
+  Embed_job job;
+  job.request.mesh_path = opt.get("mesh");
+  job.cones_path = opt.get("cones");
+  job.out_path = opt.get("out");
   if(opt.has("weights")) {
-    weights_name = opt.get("weights");
-    if(weights_name == "cotan") weights = HOT::Cotangent;
-    else if(weights_name == "mvc") weights = HOT::Mean_value;
-    else if(weights_name == "uniform") weights = HOT::Uniform;
-    else throw Usage_error{"--weights must be cotan, mvc or uniform, got '" + weights_name + "'"};
+    const std::string w = opt.get("weights");
+    if(w == "cotan") job.weights = HOT::Cotangent;
+    else if(w == "mvc") job.weights = HOT::Mean_value;
+    else if(w == "uniform") job.weights = HOT::Uniform;
+    else throw Usage_error{"--weights must be cotan, mvc or uniform, got '" + w + "'"};
+    job.request.weights = w;
   }
-  std::string order_name = opt.has("order") ? opt.get("order") : std::string();
-  if(!order_name.empty() && order_name != "given" && order_name != "tsp")
-    throw Usage_error{"--order must be given or tsp, got '" + order_name + "'"};
-
-  std::optional<HOT::Orbifold_type> required_type;
+  job.request.order = parse_order(opt, std::string());
   if(opt.has("orbifold"))
-    required_type = parse_orbifold(opt.get("orbifold"));
+    job.required_type = parse_orbifold(opt.get("orbifold"));
+  if(opt.has("svg"))
+    job.svg_path = opt.get("svg");
+  if(opt.has("report"))
+    job.report_path = opt.get("report");
+  job.recentre = opt.has("recentre");
+  return job;
+}
 
-  // reading and checking: the same calls as the fuzz target (fuzz/fuzz_mesh_reader.cpp)
-  Surface_mesh m;
-  HOT::internal::Mesh_info info;
-  HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info);
-  if(!r)
-    throw Failure{r.code, r.message};
-  const HOT::Orbifold_type type = info.type;
-  if(order_name.empty())
-    order_name = (type == HOT::Sphere_type) ? "tsp" : "given";
-  std::vector<SM_vertex> landmarks;
-  r = hot_tools::read_and_check_landmarks(cones_path, m, type, landmarks);
-  if(!r)
-    throw Failure{r.code, r.message};
-  std::vector<std::size_t> cone_indices;
-  for(SM_vertex v : landmarks)
-    cone_indices.push_back(v.idx()); // read_mesh() keeps the file's vertex order: idx() is the file's index
-
-  Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> uv =
-    m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+// the certified embedding of `m` with the job's options (the failure's reason otherwise)
+HOT::Embedding_statistics embed_mesh(const Embed_job& job, Surface_mesh& m, const std::vector<SM_vertex>& landmarks,
+                                     UV_map uv)
+{
   HOT::Embedding_statistics st;
+  const HOT::Landmark_order order = job.request.order == "tsp" ? HOT::Tsp_order : HOT::Given_order;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     m, landmarks, uv,
     HOT::parameters::recentring(
-      opt.has("recentre"),
+      job.recentre,
       HOT::parameters::embedding_statistics(
-        &st, HOT::parameters::landmark_order(order_name == "tsp" ? HOT::Tsp_order : HOT::Given_order,
-                                             HOT::parameters::weight_type(weights, HOT::parameters::orbifold_type(type))))));
+        &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type))))));
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
+  return st;
+}
 
+// OUT.obj, and the picture and the report when asked for
+void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_map& uv,
+                         const std::vector<SM_vertex>& landmarks, const HOT::Embedding_statistics& st)
+{
+  const HOT::Orbifold_type type = job.request.type;
   HOT::Orbifold_tile<> tile;
   HOT::make_orbifold_tile(type, static_cast<int>(landmarks.size()), tile);
   if(st.recentred)
     tile = tile.transformed(st.frame); // the tile of the written coordinates
 
-  std::vector<std::string> written;
-  try {
-    write_file_atomically(out_path, [&](std::ostream& os) { write_embedding_obj(os, m, uv); });
-    written.push_back(out_path);
-    if(opt.has("svg")) {
-      const std::string svg = opt.get("svg");
-      std::ostringstream title;
-      title << (type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold, " << landmarks.size() << " cones, "
-            << num_vertices(m) << " vertices, certified bijective";
-      write_file_atomically(svg, [&](std::ostream& os) { write_embedding_svg(os, m, uv, tile, landmarks, title.str()); });
-      written.push_back(svg);
-    }
-    if(opt.has("report")) {
-      const std::string rep = opt.get("report");
-      write_file_atomically(rep, [&](std::ostream& os) {
-        const HOT::Embedding_certificate& c = st.certificate;
-        os.precision(17);
-        os << "{\n  \"mesh\": \"" << json_escape(mesh_path) << "\",\n"
-           << "  \"vertices\": " << num_vertices(m) << ",\n  \"faces\": " << num_faces(m) << ",\n"
-           << "  \"cones\": [";
-        for(std::size_t i = 0; i < cone_indices.size(); ++i) os << (i ? ", " : "") << cone_indices[i];
-        os << "],\n  \"orbifold\": \"" << (type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n"
-           << "  \"weights\": \"" << weights_name << "\",\n  \"order\": \"" << order_name << "\",\n"
-           << "  \"landmark_order_used\": [";
-        for(std::size_t i = 0; i < st.landmark_order.size(); ++i)
-          os << (i ? ", " : "") << cone_indices[st.landmark_order[i]];
-        os << "],\n  \"landmark_order_reversed\": " << (st.landmark_order_reversed ? "true" : "false") << ",\n"
-           << "  \"cut_mesh_vertices\": " << st.number_of_vertices << ",\n"
-           << "  \"time_seconds\": {\"setup_and_cut\": " << st.time_setup << ", \"initialization\": "
-           << st.time_initialization << ", \"optimization\": " << st.time_optimization << ", \"certificate\": "
-           << st.time_certificate << "},\n"
-           << "  \"iterations\": " << st.iterations << ",\n  \"initial_energy\": " << st.initial_energy << ",\n"
-           << "  \"energy\": " << st.energy << ",\n  \"relative_gradient_norm\": " << st.relative_gradient_norm << ",\n"
-           << "  \"rounding_floor\": " << st.rounding_floor << ",\n  \"converged_at_rounding_floor\": "
-           << (st.converged_at_rounding_floor ? "true" : "false") << ",\n  \"polishing_iterations\": " << st.polishing_iterations
-           << ",\n  \"repaired_vertices\": " << st.repaired_vertices << ",\n"
-           << "  \"recentred\": " << (st.recentred ? "true" : "false") << ",\n  \"frame\": {\"a\": ["
-           << st.frame.a().re << ", " << st.frame.a().im << "], \"b\": [" << st.frame.b().re << ", " << st.frame.b().im
-           << "]},\n"
-           << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
-           << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk
-           << ", \"flipped_faces\": " << c.flipped_faces << ", \"degenerate_faces\": " << c.degenerate_faces
-           << ", \"angle_sum_failures\": " << c.angle_sum_failures << ", \"max_angle_sum_error\": " << c.max_angle_sum_error
-           << ", \"twin_failures\": " << c.twin_failures << ", \"cone_failures\": " << c.cone_failures
-           << ", \"border_failures\": " << c.border_failures << ", \"total_area\": " << c.total_area
-           << ", \"expected_area\": " << c.expected_area << "}\n}\n";
-      });
-      written.push_back(rep);
-    }
-  } catch(...) {
-    for(const std::string& f : written)
-      std::remove(f.c_str());
-    throw;
+  Output_files files;
+  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv); });
+  if(job.svg_path) {
+    std::ostringstream title;
+    title << (type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold, " << landmarks.size() << " cones, "
+          << num_vertices(m) << " vertices, certified bijective";
+    files.write(*job.svg_path, [&](std::ostream& os) { write_embedding_svg(os, m, uv, tile, landmarks, title.str()); });
   }
-  std::cout << "embedded " << mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
+  if(job.report_path)
+    files.write(*job.report_path, [&](std::ostream& os) {
+      hot_tools::write_embedding_report(os, job.request, num_vertices(m), num_faces(m), st);
+    });
+  files.commit();
+}
+
+int run_embed(int argc, char** argv)
+{
+  Embed_job job = parse_embed_options(argc, argv);
+  Surface_mesh m;
+  std::vector<SM_vertex> landmarks;
+  const HOT::Orbifold_type type = read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, m, landmarks);
+  job.request.type = type;
+  if(job.request.order.empty())
+    job.request.order = (type == HOT::Sphere_type) ? "tsp" : "given";
+  job.request.cones = file_indices(landmarks);
+
+  const UV_map uv = m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv);
+  write_embed_outputs(job, m, uv, landmarks, st);
+  std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
             << (type == HOT::Sphere_type ? "sphere" : "disk") << " type) in "
             << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
             << st.iterations << " Newton iterations, certified bijective"
-            << (st.recentred ? " in a recentred frame (given in the report)" : "") << "; wrote " << out_path << std::endl;
+            << (st.recentred ? " in a recentred frame (given in the report)" : "") << "; wrote " << job.out_path << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -410,18 +294,13 @@ struct Embedded
   HOT::Orbifold_type type = HOT::Sphere_type;
   std::vector<SM_vertex> landmarks;                  // as read
   std::vector<SM_vertex> ordered;                    // in cone order
-  Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> uv;
+  UV_map uv;
   HOT::Embedding_statistics stats;
 };
 
 void read_and_check(const std::string& mesh_path, const std::string& cones_path, Embedded& e)
 {
-  HOT::internal::Mesh_info info;
-  HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, e.mesh, &info);
-  if(!r) throw Failure{r.code, r.message};
-  e.type = info.type;
-  r = hot_tools::read_and_check_landmarks(cones_path, e.mesh, e.type, e.landmarks);
-  if(!r) throw Failure{r.code, r.message};
+  e.type = read_mesh_and_landmarks(mesh_path, cones_path, std::nullopt, e.mesh, e.landmarks);
 }
 
 void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::string& name)
@@ -435,22 +314,31 @@ void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const st
     throw Failure{ec, name + ": " + e.stats.message};
 }
 
-typedef HOT::Embedding_locator<Surface_mesh, Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> > Locator;
+typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
 
-// barycentric coordinates w.r.t. the face's vertices in input order (read_mesh() builds face f
-// with source(halfedge(f)) = its first vertex in the file)
-template <class SM_locator>
-std::array<double, 3> input_order_barycentric(const Surface_mesh& m, const SM_locator& loc, const typename SM_locator::Location& l)
+// the source and the target of a map: the same topology and number of landmarks
+void check_map_pair(const Embedded& A, const Embedded& B)
 {
-  std::array<double, 3> b{{0, 0, 0}};
-  int j = 0;
-  for(SM_halfedge h : halfedges_around_face(prev(halfedge(l.face, m), m), m)) {
-    const std::size_t v = target(h, m).idx();
-    for(int c = 0; c < 3; ++c)
-      if(loc.corner_vertex_index(l.face_index, c) == v) b[j] = l.barycentric[c];
-    ++j;
+  if(A.type != B.type)
+    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, "the source is " + std::string(A.type == HOT::Sphere_type ? "closed" : "a disk") +
+                                           " but the target is " + (B.type == HOT::Sphere_type ? "closed" : "a disk")};
+  if(A.landmarks.size() != B.landmarks.size())
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the source has " + std::to_string(A.landmarks.size()) +
+                                              " landmarks and the target " + std::to_string(B.landmarks.size())};
+}
+
+// one cone order for both meshes of a map: the paper's tour on the source (sphere type), the
+// given one (disk)
+std::vector<std::size_t> map_cone_order(const Embedded& A)
+{
+  std::vector<std::size_t> order(A.landmarks.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if(A.type == HOT::Sphere_type) {
+    order = HOT::compute_landmark_tour(A.mesh, A.landmarks);
+    if(order.size() != A.landmarks.size())
+      throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the source"};
   }
-  return b;
+  return order;
 }
 
 int run_map(int argc, char** argv)
@@ -460,20 +348,8 @@ int run_map(int argc, char** argv)
   Embedded A, B;
   read_and_check(opt.get("source"), opt.get("source-cones"), A);
   read_and_check(opt.get("target"), opt.get("target-cones"), B);
-  if(A.type != B.type)
-    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, "the source is " + std::string(A.type == HOT::Sphere_type ? "closed" : "a disk") +
-                                           " but the target is " + (B.type == HOT::Sphere_type ? "closed" : "a disk")};
-  if(A.landmarks.size() != B.landmarks.size())
-    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the source has " + std::to_string(A.landmarks.size()) +
-                                              " landmarks and the target " + std::to_string(B.landmarks.size())};
-  // one cone order for both: the paper's tour on the source (sphere type), the given one (disk)
-  std::vector<std::size_t> order(A.landmarks.size());
-  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  if(A.type == HOT::Sphere_type) {
-    order = HOT::internal::compute_tsp_landmark_order(A.mesh, A.landmarks, get(CGAL::vertex_point, A.mesh));
-    if(order.size() != A.landmarks.size())
-      throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the source"};
-  }
+  check_map_pair(A, B);
+  const std::vector<std::size_t> order = map_cone_order(A);
   embed_in_order(A, order, "source");
   embed_in_order(B, order, "target");
   if(A.stats.landmark_order_reversed != B.stats.landmark_order_reversed)
@@ -485,58 +361,15 @@ int run_map(int argc, char** argv)
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
-  std::vector<std::string> written;
-  try {
-    write_file_atomically(out, [&](std::ostream& os) {
-      os.precision(17);
-      for(const Locator::Location& l : f) {
-        const std::array<double, 3> b = input_order_barycentric(B.mesh, locB, l);
-        os << l.face_index << " " << b[0] << " " << b[1] << " " << b[2] << "\n";
-      }
-    });
-    written.push_back(out);
-    if(opt.has("colors-out")) {
-      // a smooth colouring of A (its bounding box mapped to RGB), carried to B by f_BA
-      const Locator locA(A.mesh, A.uv, A.type, k, HOT::Hyperboloid_linear);
-      const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, locA);
-      const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(A.mesh);
-      auto colour = [&](const Kernel::Point_3& p) {
-        return Kernel::Vector_3((p.x() - bb.xmin()) / (bb.xmax() - bb.xmin() + 1e-300),
-                                (p.y() - bb.ymin()) / (bb.ymax() - bb.ymin() + 1e-300),
-                                (p.z() - bb.zmin()) / (bb.zmax() - bb.zmin() + 1e-300));
-      };
-      std::vector<Kernel::Vector_3> colA;
-      for(SM_vertex v : vertices(A.mesh)) colA.push_back(colour(A.mesh.point(v)));
-      const std::string path = opt.get("colors-out");
-      write_file_atomically(path, [&](std::ostream& os) {
-        os << "ply\nformat ascii 1.0\nelement vertex " << num_vertices(B.mesh)
-           << "\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
-           << "element face " << num_faces(B.mesh) << "\nproperty list uchar int vertex_indices\nend_header\n";
-        os.precision(17);
-        std::size_t i = 0;
-        for(SM_vertex v : vertices(B.mesh)) {
-          const Locator::Location& l = g[i++];
-          Kernel::Vector_3 c(0.5, 0.5, 0.5);
-          if(l.success)
-            c = l.barycentric[0] * colA[locA.corner_vertex_index(l.face_index, 0)] +
-                l.barycentric[1] * colA[locA.corner_vertex_index(l.face_index, 1)] +
-                l.barycentric[2] * colA[locA.corner_vertex_index(l.face_index, 2)];
-          auto byte = [](double t) { return static_cast<int>(std::lround(255 * std::min(1.0, std::max(0.0, t)))); };
-          os << B.mesh.point(v) << " " << byte(c.x()) << " " << byte(c.y()) << " " << byte(c.z()) << "\n";
-        }
-        for(SM_face fc : faces(B.mesh)) {
-          os << "3";
-          for(SM_halfedge h : halfedges_around_face(prev(halfedge(fc, B.mesh), B.mesh), B.mesh))
-            os << " " << target(h, B.mesh).idx();
-          os << "\n";
-        }
-      });
-      written.push_back(path);
-    }
-  } catch(...) {
-    for(const std::string& w : written) std::remove(w.c_str());
-    throw;
+  Output_files files;
+  files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f); });
+  if(opt.has("colors-out")) {
+    // a smooth colouring of A, carried to B by f_BA
+    const Locator locA(A.mesh, A.uv, A.type, k, HOT::Hyperboloid_linear);
+    const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, locA);
+    files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g); });
   }
+  files.commit();
   std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << opt.get("source") << " onto "
             << opt.get("target") << "; wrote " << out << std::endl;
   return EXIT_SUCCESS;
@@ -544,14 +377,13 @@ int run_map(int argc, char** argv)
 
 typedef HOT::Orbifold_collection<Surface_mesh, CGAL::Parallel_tag> Collection;
 typedef std::vector<std::pair<std::string, std::string> > Manifest; // (mesh path, cones path) per line
+typedef hot_tools::Collection_maps Collection_maps;
 
 // the manifest's entries, relative paths resolved against the manifest's folder
 Manifest read_manifest(const std::string& manifest)
 {
   std::string manifest_text; // a missing file, a directory etc. get their own reason
-  const HOT::internal::Check_result mr = hot_tools::read_file_contents(manifest, manifest_text);
-  if(!mr)
-    throw Failure{mr.code, mr.message};
+  require(hot_tools::read_file_contents(manifest, manifest_text));
   std::istringstream in(manifest_text);
   const std::string base = manifest.find('/') == std::string::npos ? std::string(".") : manifest.substr(0, manifest.find_last_of('/'));
   auto resolve = [&](const std::string& f) { return (!f.empty() && f[0] == '/') ? f : base + "/" + f; };
@@ -626,16 +458,8 @@ void embed_collection(const Manifest& entries, Collection& coll)
   throw Failure{ec, coll.message()};
 }
 
-// the maps the command needs, and the cycle consistency: f_bc(f_ab(x)) against f_ac(x),
-// relative to c's bounding-box diagonal, over every triple (all of them up to 6 meshes, else N
-// consecutive triples); with --all-pairs f_ab for every ordered pair too
-struct Collection_maps
-{
-  std::vector<std::vector<char> > used; // used[a][b]: f_ab computed (and reported)
-  double cycle = 0;
-  std::size_t triples = 0;
-};
-
+// computes the maps the command needs (in parallel) and the cycle consistency over the
+// triples (see Collection_maps); a point not located fails
 Collection_maps map_collection(Collection& coll, bool all_pairs)
 {
   const std::size_t N = coll.number_of_meshes();
@@ -687,32 +511,34 @@ Collection_maps map_collection(Collection& coll, bool all_pairs)
   return r;
 }
 
-void write_collection_report(std::ostream& os, const Manifest& entries, Collection& coll, HOT::Orbifold_type type,
-                             const Collection_maps& maps)
+// DIR/<i>_<name>.obj per mesh, with --all-pairs DIR/<a>_to_<b>.map.txt per ordered pair, and
+// DIR/report.json
+void write_collection_files(const std::string& dir, const Manifest& entries, Collection& coll, HOT::Orbifold_type type,
+                            const Collection_maps& maps, bool all_pairs)
 {
   const std::size_t N = entries.size();
-  os.precision(17);
-  os << "{\n  \"meshes\": [\n";
-  for(std::size_t i = 0; i < N; ++i) {
-    const HOT::Embedding_statistics& st = coll.statistics(i);
-    os << "    {\"index\": " << i << ", \"mesh\": \"" << json_escape(entries[i].first) << "\", \"vertices\": "
-       << num_vertices(coll.mesh(i)) << ", \"embedding_seconds\": "
-       << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << ", \"iterations\": "
-       << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
-       << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false") << "}" << (i + 1 < N ? "," : "") << "\n";
-  }
-  os << "  ],\n  \"orbifold\": \"" << (type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << coll.order().size()
-     << ",\n  \"landmark_order_used\": [";
-  for(std::size_t i = 0; i < coll.order().size(); ++i) os << (i ? ", " : "") << coll.order()[i];
-  os << "],\n  \"pairs\": [\n";
-  bool first = true;
-  for(std::size_t a = 0; a < N; ++a)
-    for(std::size_t b = 0; b < N; ++b)
-      if(maps.used[a][b]) {
-        os << (first ? "" : ",\n") << "    {\"source\": " << a << ", \"target\": " << b << ", \"map_seconds\": " << coll.map_seconds(a, b) << "}";
-        first = false;
+  std::vector<std::string> mesh_paths;
+  for(const auto& e : entries)
+    mesh_paths.push_back(e.first);
+  auto stem = [&](std::size_t i) {
+    std::string f = mesh_paths[i].substr(mesh_paths[i].find_last_of('/') + 1);
+    return std::to_string(i) + "_" + f.substr(0, f.find_last_of('.'));
+  };
+  if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
+    throw std::runtime_error("cannot create the folder '" + dir + "'");
+  Output_files files;
+  for(std::size_t i = 0; i < N; ++i)
+    files.write(dir + "/" + stem(i) + ".obj", [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i)); });
+  if(all_pairs)
+    for(std::size_t a = 0; a < N; ++a)
+      for(std::size_t b = 0; b < N; ++b) {
+        if(a == b) continue;
+        const auto& f = coll.map(a, b);
+        files.write(dir + "/" + std::to_string(a) + "_to_" + std::to_string(b) + ".map.txt",
+                    [&](std::ostream& os) { hot_tools::write_map(os, coll.mesh(b), coll.locator(b), f); });
       }
-  os << "\n  ],\n  \"triples_checked\": " << maps.triples << ",\n  \"cycle_consistency_max_rel_error\": " << maps.cycle << "\n}\n";
+  files.write(dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, mesh_paths, coll, type, maps); });
+  files.commit();
 }
 
 int run_collection(int argc, char** argv)
@@ -721,48 +547,12 @@ int run_collection(int argc, char** argv)
   const std::string manifest = opt.get("manifest"), dir = opt.get("out");
   const bool all_pairs = opt.has("all-pairs");
   const Manifest entries = read_manifest(manifest);
-  const std::size_t N = entries.size();
   Collection coll;
   const HOT::Orbifold_type type = read_collection(entries, coll);
   embed_collection(entries, coll);
   const Collection_maps maps = map_collection(coll, all_pairs);
-  auto stem = [&](std::size_t i) {
-    std::string f = entries[i].first.substr(entries[i].first.find_last_of('/') + 1);
-    return std::to_string(i) + "_" + f.substr(0, f.find_last_of('.'));
-  };
-  // files
-  if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
-    throw std::runtime_error("cannot create the folder '" + dir + "'");
-  std::vector<std::string> written;
-  try {
-    for(std::size_t i = 0; i < N; ++i) {
-      const std::string path = dir + "/" + stem(i) + ".obj";
-      write_file_atomically(path, [&](std::ostream& os) { write_embedding_obj(os, coll.mesh(i), coll.uv_map(i)); });
-      written.push_back(path);
-    }
-    if(all_pairs)
-      for(std::size_t a = 0; a < N; ++a)
-        for(std::size_t b = 0; b < N; ++b) {
-          if(a == b) continue;
-          const auto& f = coll.map(a, b);
-          const std::string path = dir + "/" + std::to_string(a) + "_to_" + std::to_string(b) + ".map.txt";
-          write_file_atomically(path, [&](std::ostream& os) {
-            os.precision(17);
-            for(const Collection::Location& l : f) {
-              const std::array<double, 3> bc = input_order_barycentric(coll.mesh(b), coll.locator(b), l);
-              os << l.face_index << " " << bc[0] << " " << bc[1] << " " << bc[2] << "\n";
-            }
-          });
-          written.push_back(path);
-        }
-    const std::string rep = dir + "/report.json";
-    write_file_atomically(rep, [&](std::ostream& os) { write_collection_report(os, entries, coll, type, maps); });
-    written.push_back(rep);
-  } catch(...) {
-    for(const std::string& w : written) std::remove(w.c_str());
-    throw;
-  }
-  std::cout << "collection of " << N << " meshes embedded" << (all_pairs ? " and mapped pairwise" : "") << "; "
+  write_collection_files(dir, entries, coll, type, maps, all_pairs);
+  std::cout << "collection of " << entries.size() << " meshes embedded" << (all_pairs ? " and mapped pairwise" : "") << "; "
             << maps.triples << " triples checked, cycle consistency " << maps.cycle << "; wrote " << dir << std::endl;
   return EXIT_SUCCESS;
 }
@@ -773,19 +563,49 @@ int run_landmarks(int argc, char** argv)
   const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
   const long k = opt.get_int("count", 1, 100000);
   Surface_mesh m;
-  const HOT::internal::Check_result r = hot_tools::read_and_check_mesh(mesh_path, std::nullopt, m);
-  if(!r)
-    throw Failure{r.code, r.message};
+  require(hot_tools::read_and_check_mesh(mesh_path, std::nullopt, m));
   if(static_cast<std::size_t>(k) > num_vertices(m))
     throw Usage_error{"--count is larger than the number of vertices (" + std::to_string(num_vertices(m)) + ")"};
-  const std::vector<std::size_t> lm = HOT::internal::sample_landmarks(m, get(CGAL::vertex_point, m), static_cast<std::size_t>(k));
+  const std::vector<SM_vertex> lm = HOT::select_landmarks(m, static_cast<std::size_t>(k));
   if(lm.size() != static_cast<std::size_t>(k))
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the boundary has fewer than " + std::to_string(k) + " vertices"};
   write_file_atomically(out, [&](std::ostream& os) {
-    for(std::size_t i : lm)
+    for(std::size_t i : file_indices(lm))
       os << i << "\n";
   });
   std::cout << "wrote " << k << " landmarks of " << mesh_path << " to " << out << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// CGAL's selection file of the cut through the cones (sphere type), for CGAL's orbifold
+// example (Seam_mesh::add_seams() and SMP::locate_cones(); CGAL's own
+// compute_shortest_paths_between_cones() takes 3 or 4 cones only)
+int run_cut(int argc, char** argv)
+{
+  const Options opt(argc, argv, 2, {"mesh", "cones", "order", "out"});
+  const std::string mesh_path = opt.get("mesh"), cones_path = opt.get("cones"), out = opt.get("out");
+  const bool tour = parse_order(opt, "given") == "tsp";
+  Surface_mesh m;
+  HOT::Mesh_info info;
+  require(hot_tools::read_and_check_mesh(mesh_path, std::nullopt, m, &info));
+  if(info.type != HOT::Sphere_type)
+    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, mesh_path + ": the mesh has a boundary loop; only a closed genus-0 mesh "
+                                             "(sphere type) is cut, a disk-type orbifold needs no cut"};
+  std::vector<SM_vertex> landmarks;
+  require(hot_tools::read_and_check_landmarks(cones_path, m, info.type, landmarks));
+  std::vector<SM_vertex> cones = landmarks;
+  if(tour) {
+    const std::vector<std::size_t> order = HOT::compute_landmark_tour(m, landmarks);
+    if(order.size() != landmarks.size())
+      throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed"};
+    for(std::size_t i = 0; i < order.size(); ++i) cones[i] = landmarks[order[i]];
+  }
+  const HOT::Cut_result<Surface_mesh> cut = HOT::compute_cut_through_landmarks(m, cones, get(CGAL::vertex_point, m));
+  if(!cut.ok)
+    throw Failure{HOT::ERROR_CUT_FAILED, cut.message};
+  write_file_atomically(out, [&](std::ostream& os) { hot_tools::write_selection_file(os, m, cones, cut); });
+  std::cout << "wrote the cut of " << mesh_path << " through " << cones.size() << " cones (" << cut.number_of_cut_edges()
+            << " seam edges) to " << out << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -811,6 +631,8 @@ int main(int argc, char** argv)
       return run_map(argc, argv);
     if(command == "collection")
       return run_collection(argc, argv);
+    if(command == "cut")
+      return run_cut(argc, argv);
     throw Usage_error{"unknown command '" + command + "'"};
   } catch(const Failure& e) {
     std::cerr << "hyperbolic_orbifold_tutte: " << HOT::error_message(e.code) << ": " << e.message << std::endl;

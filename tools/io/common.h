@@ -10,7 +10,6 @@
 // strict integer and real number parsing, and little / big endian binary values.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
 
 #include <algorithm>
 #include <cctype>
@@ -33,19 +32,16 @@ namespace hot_tools {
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 
-// The library's result of a check: an Error_code and a one-line message.
-using HOT::internal::Check_result;
-
 namespace io_impl {
 
-inline Check_result fail(HOT::Error_code code, const std::string& message)
+inline HOT::Status fail(HOT::Error_code code, const std::string& message)
 {
-  return HOT::internal::make_check_result(code, message);
+  return HOT::Status::failure(code, message);
 }
 
-inline Check_result read_fail(const std::string& message)
+inline HOT::Status read_fail(const std::string& message)
 {
-  return HOT::internal::make_check_result(HOT::ERROR_READ_FAILED, message);
+  return HOT::Status::failure(HOT::ERROR_READ_FAILED, message);
 }
 
 inline bool is_space(char c)

@@ -24,7 +24,7 @@
 namespace hot_tools {
 
 /// the file exists, is a regular file and can be opened
-inline Check_result check_readable_file(const std::string& path)
+inline HOT::Status check_readable_file(const std::string& path)
 {
   if(path.empty())
     return io_impl::read_fail("no file name given");
@@ -39,14 +39,14 @@ inline Check_result check_readable_file(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   if(!in)
     return io_impl::read_fail("'" + path + "': cannot open the file for reading (permission denied?)");
-  return Check_result();
+  return HOT::Status();
 }
 
 /// reads the whole file `path` into `data` (a missing file, a directory etc. get their own reason)
-inline Check_result read_file_contents(const std::string& path, std::string& data)
+inline HOT::Status read_file_contents(const std::string& path, std::string& data)
 {
   data.clear();
-  Check_result r = check_readable_file(path);
+  HOT::Status r = check_readable_file(path);
   if(!r)
     return r;
   std::error_code ec;
@@ -63,7 +63,7 @@ inline Check_result read_file_contents(const std::string& path, std::string& dat
   }
   if(size > 0 && !in.read(&data[0], static_cast<std::streamsize>(size)))
     return io_impl::read_fail("'" + path + "': read error");
-  return Check_result();
+  return HOT::Status();
 }
 
 /// the extension of the file name of `path`, in lowercase, without the dot (empty if none)

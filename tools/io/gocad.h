@@ -31,7 +31,7 @@ namespace io_impl {
 /// "TRGL a b c" is a triangle of ids (defined before or after it), "TFACE" starts another
 /// patch, "BSTONE" / "BORDER" / "SEG" are ignored, and the first "END" ends the object
 /// (what follows is ignored). Any other keyword after TFACE is an error.
-inline Check_result parse_gocad(const std::string& data, Polygon_soup& soup)
+inline HOT::Status parse_gocad(const std::string& data, Polygon_soup& soup)
 {
   Cursor cur(data.data(), data.data() + data.size());
   std::vector<std::string_view> fields;
@@ -45,16 +45,16 @@ inline Check_result parse_gocad(const std::string& data, Polygon_soup& soup)
 
   std::unordered_map<std::int64_t, std::size_t> vertex_of_id;
   std::vector<std::int64_t> triangle_ids; // 3 per triangle, resolved at the end
-  auto parse_id = [&](std::string_view t, std::size_t line, std::int64_t& id) -> Check_result {
+  auto parse_id = [&](std::string_view t, std::size_t line, std::int64_t& id) -> HOT::Status {
     switch(parse_signed(t, id)) {
-    case NUMBER_OK: return Check_result();
+    case NUMBER_OK: return HOT::Status();
     case NUMBER_TOO_LARGE: return read_fail(at_line(line) + "vertex id " + quote(t) + " is too large");
     default: return read_fail(at_line(line) + quote(t) + " is not a vertex id (an integer)");
     }
   };
   for(std::size_t line = 0; next_fields(cur, false, fields, line);) {
     const std::string_view kw = fields[0];
-    Check_result r;
+    HOT::Status r;
     if(kw == "VRTX" || kw == "PVRTX") {
       const std::size_t i = soup.points.size();
       if(fields.size() < 5)
@@ -118,7 +118,7 @@ inline Check_result parse_gocad(const std::string& data, Polygon_soup& soup)
     if(t % 3 == 2)
       soup.face_begin.push_back(soup.face_vertices.size());
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 } // namespace io_impl

@@ -39,12 +39,12 @@ is not one (garbage, a negative number, "12abc", "1.0", a number that overflows 
 gives ERROR_READ_FAILED with the token and its line; so do a missing / unreadable file
 and a file without index. The range and duplicates are checked by `check_landmarks()`.
 */
-inline Check_result read_landmarks(const std::string& path, std::vector<std::size_t>& indices)
+inline HOT::Status read_landmarks(const std::string& path, std::vector<std::size_t>& indices)
 {
   using namespace io_impl;
   indices.clear();
   std::string data;
-  Check_result r = read_file_contents(path, data);
+  HOT::Status r = read_file_contents(path, data);
   if(!r)
     return r;
 
@@ -100,7 +100,7 @@ inline Check_result read_landmarks(const std::string& path, std::vector<std::siz
     return read_fail(path + ": " + at_line(first_several_line)
                      + "ambiguous layout: give all indices on one line, or one index per line");
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 } // namespace hot_tools

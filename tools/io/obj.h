@@ -40,7 +40,7 @@ inline bool is_ignored_obj_statement(std::string_view s)
 /// Wavefront OBJ: "v x y z [...]" and "f i[/t[/n]] ..." (1-based; negative indices are
 /// relative to the vertices read so far, as the format specifies); the statements listed
 /// in `is_ignored_obj_statement()` and '#' comments are skipped; any other is an error.
-inline Check_result parse_obj(const std::string& data, Polygon_soup& soup)
+inline HOT::Status parse_obj(const std::string& data, Polygon_soup& soup)
 {
   Cursor cur(data.data(), data.data() + data.size());
   std::vector<std::string_view> fields;
@@ -106,7 +106,7 @@ inline Check_result parse_obj(const std::string& data, Polygon_soup& soup)
         return read_fail(at_line(soup.face_lines[f]) + "face " + std::to_string(f) + ": vertex index "
                          + std::to_string(soup.face_vertices[c] + 1) + " is out of range (the file has "
                          + std::to_string(np) + " vertices)");
-  return Check_result();
+  return HOT::Status();
 }
 
 } // namespace io_impl

@@ -26,7 +26,7 @@ namespace io_impl {
 /// Binary OFF as specified by Geomview ("OFF BINARY"): big-endian int32 counts,
 /// float32 coordinates, faces as int32 n, n int32 indices, int32 number of color
 /// components (0 to 4) and that many float32. Only plain OFF (no C/N/ST/4 prefix).
-inline Check_result parse_off_binary(const char* b, const char* e, Polygon_soup& soup)
+inline HOT::Status parse_off_binary(const char* b, const char* e, Polygon_soup& soup)
 {
   const unsigned char* p = reinterpret_cast<const unsigned char*>(b);
   const unsigned char* end = reinterpret_cast<const unsigned char*>(e);
@@ -86,12 +86,12 @@ inline Check_result parse_off_binary(const char* b, const char* e, Polygon_soup&
     p += std::size_t(colors) * 4;
     soup.end_face();
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 /// reads the OFF keyword ([ST][C][N][4][n]OFF, and the dimension 3 of nOFF): `prefixed`
 /// if it has a prefix, `homogeneous` for 4OFF
-inline Check_result read_off_keyword(Cursor& cur, bool& prefixed, bool& homogeneous)
+inline HOT::Status read_off_keyword(Cursor& cur, bool& prefixed, bool& homogeneous)
 {
   std::string_view tok;
   if(!cur.token(tok, true))
@@ -113,12 +113,12 @@ inline Check_result read_off_keyword(Cursor& cur, bool& prefixed, bool& homogene
     if(!cur.token(d, true) || d != "3")
       return read_fail(at_line(cur.line()) + "nOFF files are supported only with dimension 3");
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 /// reads the vertex, face and edge counts of the OFF header, and checks that the rest of
 /// the file can hold that many vertex and face records
-inline Check_result read_off_counts(Cursor& cur, std::uint64_t counts[3])
+inline HOT::Status read_off_counts(Cursor& cur, std::uint64_t counts[3])
 {
   std::string_view tok;
   const char* names[3] = { "vertex", "face", "edge" };
@@ -143,11 +143,11 @@ inline Check_result read_off_counts(Cursor& cur, std::uint64_t counts[3])
   if(nv > rest / 6 + 1 || nf > rest / 2 + 1 || nv * 6 + nf * 2 > rest + 8)
     return read_fail("the OFF header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf)
                      + " faces, but only " + std::to_string(rest) + " bytes follow (truncated file or wrong header)");
-  return Check_result();
+  return HOT::Status();
 }
 
 /// reads the `nv` vertex records of an ASCII OFF file (4 coordinates if `homogeneous`)
-inline Check_result read_off_vertices(Cursor& cur, std::uint64_t nv, bool homogeneous, Polygon_soup& soup,
+inline HOT::Status read_off_vertices(Cursor& cur, std::uint64_t nv, bool homogeneous, Polygon_soup& soup,
                                       std::vector<std::string_view>& fields)
 {
   const std::size_t needed = homogeneous ? 4 : 3;
@@ -174,11 +174,11 @@ inline Check_result read_off_vertices(Cursor& cur, std::uint64_t nv, bool homoge
     soup.points.push_back({ { c[0], c[1], c[2] } });
     soup.point_lines.push_back(line);
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 /// reads the `nf` face records of an ASCII OFF file with `nv` vertices
-inline Check_result read_off_faces(Cursor& cur, std::uint64_t nv, std::uint64_t nf, Polygon_soup& soup,
+inline HOT::Status read_off_faces(Cursor& cur, std::uint64_t nv, std::uint64_t nf, Polygon_soup& soup,
                                    std::vector<std::string_view>& fields)
 {
   for(std::uint64_t f = 0; f < nf; ++f) {
@@ -215,18 +215,18 @@ inline Check_result read_off_faces(Cursor& cur, std::uint64_t nv, std::uint64_t 
     }
     soup.end_face(line);
   }
-  return Check_result(); // whatever follows the last face is ignored, as CGAL does
+  return HOT::Status(); // whatever follows the last face is ignored, as CGAL does
 }
 
 /// ASCII OFF with the variants CGAL reads: [ST][C][N][4][n]OFF keyword, '#' comments,
 /// counts anywhere after the keyword, one vertex / face record per line, trailing
 /// normal / color / texture fields ignored; a zero homogeneous coordinate gives a
 /// non-finite point. "OFF BINARY" goes to `parse_off_binary()`.
-inline Check_result parse_off(const std::string& data, Polygon_soup& soup)
+inline HOT::Status parse_off(const std::string& data, Polygon_soup& soup)
 {
   Cursor cur(data.data(), data.data() + data.size());
   bool prefixed = false, homogeneous = false;
-  Check_result r = read_off_keyword(cur, prefixed, homogeneous);
+  HOT::Status r = read_off_keyword(cur, prefixed, homogeneous);
   if(!r)
     return r;
   {

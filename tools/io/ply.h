@@ -146,7 +146,7 @@ private:
 };
 
 /// reads a "property" line of the PLY header into `prop`
-inline Check_result parse_ply_property(const std::vector<std::string_view>& fields, std::size_t line,
+inline HOT::Status parse_ply_property(const std::vector<std::string_view>& fields, std::size_t line,
                                        Ply_property& prop)
 {
   if(fields.size() >= 5 && fields[1] == "list") {
@@ -164,12 +164,12 @@ inline Check_result parse_ply_property(const std::vector<std::string_view>& fiel
   } else {
     return read_fail(at_line(line) + "bad PLY property line");
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 /// reads the PLY header up to its end_header line: the `format` (0 ascii, 1 little
 /// endian, 2 big endian) and the elements with their properties
-inline Check_result read_ply_header(Cursor& cur, int& format, std::vector<Ply_element>& elements)
+inline HOT::Status read_ply_header(Cursor& cur, int& format, std::vector<Ply_element>& elements)
 {
   std::vector<std::string_view> fields;
   auto trim_cr = [](std::string_view s) {
@@ -205,7 +205,7 @@ inline Check_result read_ply_header(Cursor& cur, int& format, std::vector<Ply_el
       if(elements.empty())
         return read_fail(at_line(line) + "PLY property before any element");
       Ply_property prop;
-      const Check_result r = parse_ply_property(fields, line, prop);
+      const HOT::Status r = parse_ply_property(fields, line, prop);
       if(!r)
         return r;
       elements.back().properties.push_back(prop);
@@ -217,7 +217,7 @@ inline Check_result read_ply_header(Cursor& cur, int& format, std::vector<Ply_el
     return read_fail("the PLY header has no end_header line (truncated file?)");
   if(format < 0)
     return read_fail("the PLY header has no format line");
-  return Check_result();
+  return HOT::Status();
 }
 
 /// What the reader keeps of an element: the points of the (first) "vertex" element, the
@@ -231,7 +231,7 @@ struct Ply_roles
 };
 
 /// finds the properties the reader keeps in `el`
-inline Check_result find_ply_roles(const Ply_element& el, bool vertex_element_seen, Ply_roles& roles)
+inline HOT::Status find_ply_roles(const Ply_element& el, bool vertex_element_seen, Ply_roles& roles)
 {
   roles.is_vertex = (el.name == "vertex") && !vertex_element_seen;
   roles.is_face = (el.name == "face");
@@ -252,11 +252,11 @@ inline Check_result find_ply_roles(const Ply_element& el, bool vertex_element_se
     return read_fail("the PLY face element has no vertex_indices list");
   if(roles.is_face && !ply_is_integer(el.properties[std::size_t(roles.indices)].value_type))
     return read_fail("the PLY vertex_indices list does not hold integers");
-  return Check_result();
+  return HOT::Status();
 }
 
 /// reads item `item` of the element `el`, keeping what `roles` says in `soup`
-inline Check_result read_ply_item(Ply_value_reader& in, int format, const Ply_element& el, const Ply_roles& roles,
+inline HOT::Status read_ply_item(Ply_value_reader& in, int format, const Ply_element& el, const Ply_roles& roles,
                                   std::uint64_t item, Polygon_soup& soup)
 {
   const std::size_t line = in.next_value_line();
@@ -309,18 +309,18 @@ inline Check_result read_ply_item(Ply_value_reader& in, int format, const Ply_el
   }
   if(roles.is_face)
     soup.end_face(format == 0 ? line : 0);
-  return Check_result();
+  return HOT::Status();
 }
 
 /// PLY (ascii, binary_little_endian, binary_big_endian): the "vertex" element's x, y, z
 /// and the "face" element's "vertex_indices" (or "vertex_index") list; other properties
 /// and elements are read and ignored.
-inline Check_result parse_ply(const std::string& data, Polygon_soup& soup)
+inline HOT::Status parse_ply(const std::string& data, Polygon_soup& soup)
 {
   Cursor cur(data.data(), data.data() + data.size());
   int format = -1;
   std::vector<Ply_element> elements;
-  Check_result r = read_ply_header(cur, format, elements);
+  HOT::Status r = read_ply_header(cur, format, elements);
   if(!r)
     return r;
 
@@ -347,7 +347,7 @@ inline Check_result parse_ply(const std::string& data, Polygon_soup& soup)
       if(!(r = read_ply_item(in, format, el, roles, item, soup)))
         return r;
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 } // namespace io_impl

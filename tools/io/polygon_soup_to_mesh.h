@@ -66,7 +66,7 @@ its first vertex. Linear time. `PolygonMesh` is a model of `MutableFaceGraph` wi
 internal vertex point map (Surface_mesh, Polyhedron_3).
 */
 template <class PolygonMesh>
-Check_result polygon_soup_to_mesh(const Polygon_soup& soup, PolygonMesh& mesh)
+HOT::Status polygon_soup_to_mesh(const Polygon_soup& soup, PolygonMesh& mesh)
 {
   typedef boost::graph_traits<PolygonMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -77,7 +77,7 @@ Check_result polygon_soup_to_mesh(const Polygon_soup& soup, PolygonMesh& mesh)
 
   CGAL::clear(mesh);
   Soup_topology topo;
-  Check_result r = validate_polygon_soup(soup, &topo);
+  HOT::Status r = validate_polygon_soup(soup, &topo);
   if(!r)
     return r;
 
@@ -148,7 +148,7 @@ Check_result polygon_soup_to_mesh(const Polygon_soup& soup, PolygonMesh& mesh)
   // point is referenced; the test suite checks it). It is not re-checked here:
   // check_mesh() does it.
 
-  return Check_result();
+  return HOT::Status();
 }
 
 } // namespace hot_tools

@@ -21,7 +21,7 @@
 #include "read_polygon_soup.h"
 #include "validate_polygon_soup.h"
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 
 #include <CGAL/boost/graph/helpers.h>
 
@@ -46,11 +46,11 @@ isolated vertices, several components etc. are read without error; `check_mesh()
 reports them. Every message starts with the file name.
 */
 template <class PolygonMesh>
-Check_result read_mesh(const std::string& path, PolygonMesh& mesh)
+HOT::Status read_mesh(const std::string& path, PolygonMesh& mesh)
 {
   CGAL::clear(mesh);
   Polygon_soup soup;
-  Check_result r = read_polygon_soup_file(path, soup);
+  HOT::Status r = read_polygon_soup_file(path, soup);
   if(!r)
     return r;
   r = polygon_soup_to_mesh(soup, mesh);
@@ -73,13 +73,13 @@ A mesh that is neither closed nor a disk gets the first failing check of `check_
 as its reason (no face, isolated vertex, several components, ..., boundary loops).
 */
 template <class TriangleMesh>
-Check_result read_and_check_mesh(const std::string& path, std::optional<HOT::Orbifold_type> required_type,
-                                 TriangleMesh& mesh, HOT::internal::Mesh_info* info = nullptr)
+HOT::Status read_and_check_mesh(const std::string& path, std::optional<HOT::Orbifold_type> required_type,
+                                 TriangleMesh& mesh, HOT::Mesh_info* info = nullptr)
 {
-  Check_result r = read_mesh(path, mesh); // its messages already start with the file name
+  HOT::Status r = read_mesh(path, mesh); // its messages already start with the file name
   if(!r)
     return r;
-  r = HOT::internal::check_mesh(mesh, required_type, info);
+  r = HOT::check_mesh(mesh, required_type, info);
   if(!r)
     r.message = path + ": " + r.message;
   return r;
@@ -91,15 +91,15 @@ Reads the landmark file `path` (`read_landmarks()`) and checks the indices again
 with the file name. Precondition: `check_mesh()` succeeded on `mesh` for `type`.
 */
 template <class TriangleMesh>
-Check_result read_and_check_landmarks(const std::string& path, const TriangleMesh& mesh, HOT::Orbifold_type type,
+HOT::Status read_and_check_landmarks(const std::string& path, const TriangleMesh& mesh, HOT::Orbifold_type type,
                                       std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks)
 {
   landmarks.clear();
   std::vector<std::size_t> indices;
-  Check_result r = read_landmarks(path, indices); // its messages already start with the file name
+  HOT::Status r = read_landmarks(path, indices); // its messages already start with the file name
   if(!r)
     return r;
-  r = HOT::internal::check_landmarks(mesh, indices, type, landmarks);
+  r = HOT::check_landmarks(mesh, indices, type, landmarks);
   if(!r)
     r.message = path + ": " + r.message;
   return r;

@@ -59,7 +59,7 @@ binary), .stl (ASCII and binary), and .ts (GOCAD TSurf).
 Messages start with the file name. Only parse errors are reported here
 (ERROR_READ_FAILED); see `validate_polygon_soup()` for the rest.
 */
-inline Check_result read_polygon_soup_file(const std::string& path, Polygon_soup& soup)
+inline HOT::Status read_polygon_soup_file(const std::string& path, Polygon_soup& soup)
 {
   using namespace io_impl;
   soup.clear();
@@ -69,7 +69,7 @@ inline Check_result read_polygon_soup_file(const std::string& path, Polygon_soup
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl" && ext != "ts")
     return read_fail("'" + path + "': unsupported file extension '" + ext + "' (supported: off, obj, ply, stl, ts)");
 
-  Check_result r;
+  HOT::Status r;
   std::string data;
   if(!(r = read_file_contents(path, data)))
     return r;

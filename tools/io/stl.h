@@ -65,7 +65,7 @@ private:
   std::unordered_map<std::array<std::uint64_t, 3>, std::size_t, Point_key_hash> map_;
 };
 
-inline Check_result parse_stl_binary(const std::string& data, Polygon_soup& soup)
+inline HOT::Status parse_stl_binary(const std::string& data, Polygon_soup& soup)
 {
   const unsigned char* p = reinterpret_cast<const unsigned char*>(data.data()) + 84;
   const std::size_t n = load_u32_le(reinterpret_cast<const unsigned char*>(data.data()) + 80);
@@ -81,10 +81,10 @@ inline Check_result parse_stl_binary(const std::string& data, Polygon_soup& soup
     }
     soup.end_face();
   }
-  return Check_result();
+  return HOT::Status();
 }
 
-inline Check_result parse_stl_ascii(const std::string& data, Polygon_soup& soup)
+inline HOT::Status parse_stl_ascii(const std::string& data, Polygon_soup& soup)
 {
   Cursor cur(data.data(), data.data() + data.size());
   Point_merger merger(soup);
@@ -145,12 +145,12 @@ inline Check_result parse_stl_ascii(const std::string& data, Polygon_soup& soup)
   }
   if(in_solid)
     return read_fail("the file ends inside a solid (no 'endsolid': truncated file?)");
-  return Check_result();
+  return HOT::Status();
 }
 
 /// Binary STL if the size is exactly 84 + 50 N (N read at offset 80), else ASCII if
 /// the file starts with "solid", else binary with a size mismatch (an error).
-inline Check_result parse_stl(const std::string& data, Polygon_soup& soup)
+inline HOT::Status parse_stl(const std::string& data, Polygon_soup& soup)
 {
   const std::size_t size = data.size();
   std::uint64_t n = 0;

@@ -64,7 +64,7 @@ inline std::size_t next_corner(const Polygon_soup& soup, const std::vector<Soup_
 }
 
 /// step 1, faces: indices in range, at least 3 distinct vertices; fills `corner_face`
-inline Check_result check_soup_faces(const Polygon_soup& soup, std::vector<Soup_id>& corner_face)
+inline HOT::Status check_soup_faces(const Polygon_soup& soup, std::vector<Soup_id>& corner_face)
 {
   const Soup_id none = Soup_topology::none;
   const std::size_t np = soup.number_of_points();
@@ -96,14 +96,14 @@ inline Check_result check_soup_faces(const Polygon_soup& soup, std::vector<Soup_
       seen[fv[c]] = static_cast<Soup_id>(f);
     }
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 /// step 1b, a face repeated (the same vertices in the same cyclic order): hash of each face
 /// read from its smallest vertex, faces with equal hashes compared. A repeated face
 /// makes two faces traverse an edge in the same direction, so this runs only when
 /// step 2 finds such an edge (no cost for valid soups), to give the specific reason.
-inline Check_result find_duplicated_face(const Polygon_soup& soup, const std::vector<Soup_id>& corner_face)
+inline HOT::Status find_duplicated_face(const Polygon_soup& soup, const std::vector<Soup_id>& corner_face)
 {
   const Soup_id none = Soup_topology::none;
   const std::size_t nf = soup.number_of_faces();
@@ -151,7 +151,7 @@ inline Check_result find_duplicated_face(const Polygon_soup& soup, const std::ve
     next_with_hash[f] = next_with_hash[ins.first->second]; // chain f after the first face with this hash
     next_with_hash[ins.first->second] = static_cast<Soup_id>(f);
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 /// a halfedge of the soup, filed under its smaller vertex: the other vertex and its corner
@@ -238,7 +238,7 @@ inline void pair_soup_halfedges(const Polygon_soup& soup, const std::vector<Soup
 
 /// step 3, vertices: the corners around a vertex must form a single fan (union-find of
 /// the corners at a vertex that share an edge)
-inline Check_result check_soup_vertex_fans(const Polygon_soup& soup, const Soup_topology& topology)
+inline HOT::Status check_soup_vertex_fans(const Polygon_soup& soup, const Soup_topology& topology)
 {
   const Soup_id none = Soup_topology::none;
   const std::size_t np = soup.number_of_points();
@@ -282,11 +282,11 @@ inline Check_result check_soup_vertex_fans(const Polygon_soup& soup, const Soup_
       return fail(HOT::ERROR_NON_MANIFOLD, os.str());
     }
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 /// step 4: finite coordinates
-inline Check_result check_soup_coordinates(const Polygon_soup& soup)
+inline HOT::Status check_soup_coordinates(const Polygon_soup& soup)
 {
   for(std::size_t i = 0; i < soup.number_of_points(); ++i) {
     const auto& p = soup.points[i];
@@ -296,7 +296,7 @@ inline Check_result check_soup_coordinates(const Polygon_soup& soup)
       return fail(HOT::ERROR_NON_FINITE_COORDINATES, os.str());
     }
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 } // namespace io_impl
@@ -306,7 +306,7 @@ Validates `soup` (see the list at the top of this file) in linear expected time 
 if `topology` is not null and the soup is valid, fills the edge table used by
 `polygon_soup_to_mesh()`.
 */
-inline Check_result validate_polygon_soup(const Polygon_soup& soup, Soup_topology* topology = nullptr)
+inline HOT::Status validate_polygon_soup(const Polygon_soup& soup, Soup_topology* topology = nullptr)
 {
   typedef Soup_topology::Id Id;
   const Id none = Soup_topology::none;
@@ -319,7 +319,7 @@ inline Check_result validate_polygon_soup(const Polygon_soup& soup, Soup_topolog
 
   Soup_topology t;
   t.corner_face.resize(m);
-  Check_result r = io_impl::check_soup_faces(soup, t.corner_face);
+  HOT::Status r = io_impl::check_soup_faces(soup, t.corner_face);
   if(!r)
     return r;
 
@@ -334,7 +334,7 @@ inline Check_result validate_polygon_soup(const Polygon_soup& soup, Soup_topolog
     io_impl::pair_soup_halfedges(soup, start, entries, t, non_manifold_edge, bad_orientation);
   }
   if(!non_manifold_edge.empty() || !bad_orientation.empty()) {
-    Check_result dup = io_impl::find_duplicated_face(soup, t.corner_face);
+    HOT::Status dup = io_impl::find_duplicated_face(soup, t.corner_face);
     if(!dup)
       return dup;
     return io_impl::fail(HOT::ERROR_NON_MANIFOLD, !non_manifold_edge.empty() ? non_manifold_edge : bad_orientation);
@@ -351,7 +351,7 @@ inline Check_result validate_polygon_soup(const Polygon_soup& soup, Soup_topolog
     topology->corner_side.swap(t.corner_side);
     topology->edge_corners.swap(t.edge_corners);
   }
-  return Check_result();
+  return HOT::Status();
 }
 
 } // namespace hot_tools

@@ -9,8 +9,9 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 
 #include <CGAL/Dynamic_property_map.h>
@@ -333,10 +334,10 @@ private:
     const std::size_t N = items_.size();
     if(N == 0) { message_ = "the collection is empty"; return ERROR_WRONG_PARAMETER; }
     const std::size_t k = items_[0].landmarks.size();
-    if(!internal::detect_orbifold_type(*items_[0].mesh, type)) { message_ = "mesh 0 is neither closed nor a disk"; return ERROR_WRONG_TOPOLOGY; }
+    if(!detect_orbifold_type(*items_[0].mesh, type)) { message_ = "mesh 0 is neither closed nor a disk"; return ERROR_WRONG_TOPOLOGY; }
     for(std::size_t i = 0; i < N; ++i) {
       Orbifold_type t;
-      if(items_[i].landmarks.size() != k || !internal::detect_orbifold_type(*items_[i].mesh, t) || t != type) {
+      if(items_[i].landmarks.size() != k || !detect_orbifold_type(*items_[i].mesh, t) || t != type) {
         message_ = "mesh " + std::to_string(i) + " differs from mesh 0 in topology or number of landmarks";
         return ERROR_WRONG_PARAMETER;
       }
@@ -351,9 +352,9 @@ private:
     order_.resize(k);
     for(std::size_t c = 0; c < k; ++c) order_[c] = c;
     if(type_ == Sphere_type) {
-      const internal::Check_result r = internal::check_landmark_vertices(*items_[0].mesh, items_[0].landmarks, type_);
+      const Status r = check_landmark_vertices(*items_[0].mesh, items_[0].landmarks, type_);
       if(!r) { message_ = "mesh 0: " + r.message; return r.code; }
-      order_ = internal::compute_tsp_landmark_order(*items_[0].mesh, items_[0].landmarks, get(CGAL::vertex_point, *items_[0].mesh));
+      order_ = compute_landmark_tour(*items_[0].mesh, items_[0].landmarks, get(CGAL::vertex_point, *items_[0].mesh));
       if(order_.size() != k) { message_ = "the landmark tour could not be computed on mesh 0"; return ERROR_CUT_FAILED; }
     }
     return OK;

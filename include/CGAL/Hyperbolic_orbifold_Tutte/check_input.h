@@ -281,32 +281,6 @@ Status check_landmark_vertices(const TriangleMesh& tm,
   return check_landmarks(tm, ids, type, out);
 }
 
-// ---------------------------------------------------------------------------
-// transitional: for the tools until they use the public names
-// (io.h, tools/hyperbolic_orbifold_tutte.cpp, fuzz/fuzz_mesh_reader.cpp, surface_maps.h)
-// ---------------------------------------------------------------------------
-namespace internal {
-
-typedef Status Check_result;
-
-inline Check_result make_check_result(Error_code code, const std::string& message)
-{
-  Check_result r;
-  r.code = code;
-  r.message = message;
-  return r;
-}
-
-using CGAL::Hyperbolic_orbifold_Tutte::Mesh_info;
-using CGAL::Hyperbolic_orbifold_Tutte::count_border_loops;
-using CGAL::Hyperbolic_orbifold_Tutte::detect_orbifold_type;
-using CGAL::Hyperbolic_orbifold_Tutte::check_mesh;
-using CGAL::Hyperbolic_orbifold_Tutte::check_landmarks;
-using CGAL::Hyperbolic_orbifold_Tutte::check_landmark_vertices;
-using CGAL::Hyperbolic_orbifold_Tutte::minimum_number_of_landmarks;
-
-} // namespace internal
-
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL
 

@@ -138,23 +138,6 @@ compute_landmark_tour(
   return compute_landmark_tour(tm, landmarks, get(CGAL::vertex_point, tm));
 }
 
-// ---------------------------------------------------------------------------
-// transitional: for the tools until they use the public names
-// ---------------------------------------------------------------------------
-namespace internal {
-
-template <class TriangleMesh, class VertexPointMap>
-std::vector<std::size_t>
-compute_tsp_landmark_order(
-  const TriangleMesh& tm,
-  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
-  VertexPointMap vpm)
-{
-  return compute_landmark_tour(tm, landmarks, vpm);
-}
-
-} // namespace internal
-
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL
 

@@ -1,0 +1,170 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COMMAND_LINE_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COMMAND_LINE_H
+
+// The command-line program's conventions: its options, its two kinds of errors and its
+// output files. main() ends the program with status 2 on a Usage_error, 3 on a Failure (the
+// data: an Error_code and a one-line reason), 1 on any other exception (files), each with
+// one line on stderr; output files are written to a temporary name and renamed only when
+// complete, and a failed command removes those it already wrote (Output_files).
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <ostream>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hot_cli {
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+
+struct Usage_error
+{
+  std::string message;
+};
+
+struct Failure
+{
+  HOT::Error_code code;
+  std::string message;
+};
+
+// throws a failed check's reason
+inline void require(const HOT::Status& r)
+{
+  if(!r)
+    throw Failure{r.code, r.message};
+}
+
+// --name value options, and --flag options without value (listed in `flags`).
+class Options
+{
+public:
+  Options(int argc, char** argv, int first, const std::set<std::string>& known,
+          const std::set<std::string>& flags = std::set<std::string>())
+  {
+    for(int i = first; i < argc; ++i) {
+      const std::string a = argv[i];
+      if(a.size() < 3 || a.compare(0, 2, "--") != 0)
+        throw Usage_error{"unexpected argument '" + a + "'"};
+      const std::string name = a.substr(2);
+      if(flags.count(name)) {
+        if(values_.count(name))
+          throw Usage_error{"option '" + a + "' given twice"};
+        values_[name] = "1";
+        continue;
+      }
+      if(!known.count(name))
+        throw Usage_error{"unknown option '" + a + "'"};
+      if(i + 1 >= argc)
+        throw Usage_error{"option '" + a + "' needs a value"};
+      if(values_.count(name))
+        throw Usage_error{"option '" + a + "' given twice"};
+      values_[name] = argv[++i];
+    }
+  }
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  std::string get(const std::string& name) const
+  {
+    auto it = values_.find(name);
+    if(it == values_.end())
+      throw Usage_error{"missing option --" + name};
+    return it->second;
+  }
+  long get_int(const std::string& name, long lo, long hi) const
+  {
+    const std::string s = get(name);
+    errno = 0;
+    char* end = nullptr;
+    const long v = std::strtol(s.c_str(), &end, 10);
+    if(s.empty() || *end != '\0' || errno != 0)
+      throw Usage_error{"--" + name + " must be an integer, got '" + s + "'"};
+    if(v < lo || v > hi)
+      throw Usage_error{"--" + name + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
+                        ", got " + s};
+    return v;
+  }
+
+private:
+  std::map<std::string, std::string> values_;
+};
+
+// Writes a file atomically: the content goes to FILE.tmp, renamed to FILE on success.
+inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& writer)
+{
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if(!out)
+      throw std::runtime_error("cannot write '" + path + "'");
+    writer(out);
+    out.flush();
+    if(!out) {
+      out.close();
+      std::remove(tmp.c_str());
+      throw std::runtime_error("error while writing '" + path + "'");
+    }
+  }
+  if(std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "'");
+  }
+}
+
+// The output files of a command, each written atomically. Unless commit() is called, the
+// destructor removes those already written: a command that fails leaves no output file.
+class Output_files
+{
+public:
+  Output_files() = default;
+  Output_files(const Output_files&) = delete;
+  Output_files& operator=(const Output_files&) = delete;
+  ~Output_files()
+  {
+    for(const std::string& f : written_)
+      std::remove(f.c_str());
+  }
+  void write(const std::string& path, const std::function<void(std::ostream&)>& writer)
+  {
+    write_file_atomically(path, writer);
+    written_.push_back(path);
+  }
+  void commit() { written_.clear(); }
+
+private:
+  std::vector<std::string> written_;
+};
+
+inline HOT::Orbifold_type parse_orbifold(const std::string& s)
+{
+  if(s == "sphere")
+    return HOT::Sphere_type;
+  if(s == "disk")
+    return HOT::Disk_type;
+  throw Usage_error{"--orbifold must be 'sphere' or 'disk', got '" + s + "'"};
+}
+
+// --order given|tsp; `fallback` when the option is absent (empty: the default of the type)
+inline std::string parse_order(const Options& opt, const std::string& fallback)
+{
+  const std::string s = opt.has("order") ? opt.get("order") : fallback;
+  if(!s.empty() && s != "given" && s != "tsp")
+    throw Usage_error{"--order must be given or tsp, got '" + s + "'"};
+  return s;
+}
+
+} // namespace hot_cli
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COMMAND_LINE_H

@@ -1,0 +1,105 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_MAP_FILES_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_MAP_FILES_H
+
+// The files of a map between two meshes (the `map` and `collection` commands' output): the
+// map itself (one located point of the target per source vertex) and the target coloured
+// by a colouring of the source carried over by the map.
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <ostream>
+#include <vector>
+
+#include <CGAL/disable_warnings.h>
+
+/// \file map_files.h
+
+namespace hot_tools {
+
+// barycentric coordinates of a location on `m` w.r.t. its face's vertices in input order
+// (read_mesh() builds face f with source(halfedge(f)) = its first vertex in the file)
+template <class Point_3, class Locator>
+std::array<double, 3> input_order_barycentric(const CGAL::Surface_mesh<Point_3>& m, const Locator& loc,
+                                              const typename Locator::Location& l)
+{
+  std::array<double, 3> b{{0, 0, 0}};
+  int j = 0;
+  for(typename CGAL::Surface_mesh<Point_3>::Halfedge_index h : halfedges_around_face(prev(halfedge(l.face, m), m), m)) {
+    const std::size_t v = target(h, m).idx();
+    for(int c = 0; c < 3; ++c)
+      if(loc.corner_vertex_index(l.face_index, c) == v) b[j] = l.barycentric[c];
+    ++j;
+  }
+  return b;
+}
+
+// Writes the map f from a source mesh onto `target_mesh` (located by `target_locator`): one line
+// `face b0 b1 b2` per source vertex in input order, face = the 0-based face of the target in
+// input order, b = barycentric coordinates w.r.t. that face's vertices in input order.
+template <class Point_3, class Locator>
+void write_map(std::ostream& os, const CGAL::Surface_mesh<Point_3>& target_mesh, const Locator& target_locator,
+               const std::vector<typename Locator::Location>& f)
+{
+  os.precision(17);
+  for(const typename Locator::Location& l : f) {
+    const std::array<double, 3> b = input_order_barycentric(target_mesh, target_locator, l);
+    os << l.face_index << " " << b[0] << " " << b[1] << " " << b[2] << "\n";
+  }
+}
+
+// Writes `target_mesh` as an ASCII PLY coloured by a smooth colouring of `source_mesh` (its bounding
+// box mapped to RGB) carried over by g, the map from the target onto the source (located by
+// `source_locator`); grey where a vertex was not located.
+template <class Point_3, class Locator>
+void write_coloured_ply(std::ostream& os, const CGAL::Surface_mesh<Point_3>& source_mesh, const Locator& source_locator,
+                        const CGAL::Surface_mesh<Point_3>& target_mesh, const std::vector<typename Locator::Location>& g)
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
+  const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(source_mesh);
+  auto colour = [&](const Point_3& p) {
+    return Vector_3((p.x() - bb.xmin()) / (bb.xmax() - bb.xmin() + 1e-300),
+                    (p.y() - bb.ymin()) / (bb.ymax() - bb.ymin() + 1e-300),
+                    (p.z() - bb.zmin()) / (bb.zmax() - bb.zmin() + 1e-300));
+  };
+  std::vector<Vector_3> source_colours;
+  for(typename Mesh::Vertex_index v : vertices(source_mesh)) source_colours.push_back(colour(source_mesh.point(v)));
+  os << "ply\nformat ascii 1.0\nelement vertex " << num_vertices(target_mesh)
+     << "\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+     << "element face " << num_faces(target_mesh) << "\nproperty list uchar int vertex_indices\nend_header\n";
+  os.precision(17);
+  std::size_t i = 0;
+  for(typename Mesh::Vertex_index v : vertices(target_mesh)) {
+    const typename Locator::Location& l = g[i++];
+    Vector_3 c(0.5, 0.5, 0.5);
+    if(l.success)
+      c = l.barycentric[0] * source_colours[source_locator.corner_vertex_index(l.face_index, 0)] +
+          l.barycentric[1] * source_colours[source_locator.corner_vertex_index(l.face_index, 1)] +
+          l.barycentric[2] * source_colours[source_locator.corner_vertex_index(l.face_index, 2)];
+    auto byte = [](double t) { return static_cast<int>(std::lround(255 * std::min(1.0, std::max(0.0, t)))); };
+    os << target_mesh.point(v) << " " << byte(c.x()) << " " << byte(c.y()) << " " << byte(c.z()) << "\n";
+  }
+  for(typename Mesh::Face_index fc : faces(target_mesh)) {
+    os << "3";
+    for(typename Mesh::Halfedge_index h : halfedges_around_face(prev(halfedge(fc, target_mesh), target_mesh), target_mesh))
+      os << " " << target(h, target_mesh).idx();
+    os << "\n";
+  }
+}
+
+} // namespace hot_tools
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_MAP_FILES_H

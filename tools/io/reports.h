@@ -1,0 +1,135 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_REPORTS_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_REPORTS_H
+
+// The JSON reports of the `embed` and `collection` commands.
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
+
+#include <cstddef>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CGAL/disable_warnings.h>
+
+/// \file reports.h
+
+namespace hot_tools {
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+
+// `s` as the inside of a JSON string
+inline std::string json_escape(const std::string& s)
+{
+  std::string r;
+  for(char c : s) {
+    if(c == '"' || c == '\\') { r += '\\'; r += c; }
+    else if(static_cast<unsigned char>(c) < 0x20) { char b[8]; std::snprintf(b, sizeof(b), "\\u%04x", c); r += b; }
+    else r += c;
+  }
+  return r;
+}
+
+// what `embed` was asked to do, as its report repeats it
+struct Embedding_request
+{
+  std::string mesh_path;
+  std::vector<std::size_t> cones;          // the landmarks as given: 0-based vertex indices
+  HOT::Orbifold_type type = HOT::Sphere_type;
+  std::string weights = "cotan";           // cotan, mvc or uniform
+  std::string order;                       // given or tsp
+};
+
+// Writes the report of `embed`: the request, the mesh's sizes, the landmark order used, and
+// the statistics of the embedding (timings, solver, recentring frame, certificate).
+inline void write_embedding_report(std::ostream& os, const Embedding_request& request, std::size_t vertices,
+                                   std::size_t faces, const HOT::Embedding_statistics& st)
+{
+  const std::vector<std::size_t>& cone_indices = request.cones;
+  const HOT::Embedding_certificate& c = st.certificate;
+  os.precision(17);
+  os << "{\n  \"mesh\": \"" << json_escape(request.mesh_path) << "\",\n"
+     << "  \"vertices\": " << vertices << ",\n  \"faces\": " << faces << ",\n"
+     << "  \"cones\": [";
+  for(std::size_t i = 0; i < cone_indices.size(); ++i) os << (i ? ", " : "") << cone_indices[i];
+  os << "],\n  \"orbifold\": \"" << (request.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n"
+     << "  \"weights\": \"" << request.weights << "\",\n  \"order\": \"" << request.order << "\",\n"
+     << "  \"landmark_order_used\": [";
+  for(std::size_t i = 0; i < st.landmark_order.size(); ++i)
+    os << (i ? ", " : "") << cone_indices[st.landmark_order[i]];
+  os << "],\n  \"landmark_order_reversed\": " << (st.landmark_order_reversed ? "true" : "false") << ",\n"
+     << "  \"cut_mesh_vertices\": " << st.number_of_vertices << ",\n"
+     << "  \"time_seconds\": {\"setup_and_cut\": " << st.time_setup << ", \"initialization\": "
+     << st.time_initialization << ", \"optimization\": " << st.time_optimization << ", \"certificate\": "
+     << st.time_certificate << "},\n"
+     << "  \"iterations\": " << st.iterations << ",\n  \"initial_energy\": " << st.initial_energy << ",\n"
+     << "  \"energy\": " << st.energy << ",\n  \"relative_gradient_norm\": " << st.relative_gradient_norm << ",\n"
+     << "  \"rounding_floor\": " << st.rounding_floor << ",\n  \"converged_at_rounding_floor\": "
+     << (st.converged_at_rounding_floor ? "true" : "false") << ",\n  \"polishing_iterations\": " << st.polishing_iterations
+     << ",\n  \"repaired_vertices\": " << st.repaired_vertices << ",\n"
+     << "  \"recentred\": " << (st.recentred ? "true" : "false") << ",\n  \"frame\": {\"a\": ["
+     << st.frame.a().re << ", " << st.frame.a().im << "], \"b\": [" << st.frame.b().re << ", " << st.frame.b().im
+     << "]},\n"
+     << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
+     << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk
+     << ", \"flipped_faces\": " << c.flipped_faces << ", \"degenerate_faces\": " << c.degenerate_faces
+     << ", \"angle_sum_failures\": " << c.angle_sum_failures << ", \"max_angle_sum_error\": " << c.max_angle_sum_error
+     << ", \"twin_failures\": " << c.twin_failures << ", \"cone_failures\": " << c.cone_failures
+     << ", \"border_failures\": " << c.border_failures << ", \"total_area\": " << c.total_area
+     << ", \"expected_area\": " << c.expected_area << "}\n}\n";
+}
+
+// the maps the `collection` command computed, and the cycle consistency: f_bc(f_ab(x)) against
+// f_ac(x), relative to c's bounding-box diagonal, over every triple (all of them up to 6 meshes,
+// else N consecutive triples); with --all-pairs f_ab for every ordered pair too
+struct Collection_maps
+{
+  std::vector<std::vector<char> > used; // used[a][b]: f_ab computed (and reported)
+  double cycle = 0;
+  std::size_t triples = 0;
+};
+
+// Writes the report of `collection`: per mesh (its file, size, embedding time and verdict),
+// the orbifold, the landmark order used, per computed map its time, and the cycle consistency.
+// `mesh_paths[i]` is the file of the collection's mesh i.
+template <class Collection>
+void write_collection_report(std::ostream& os, const std::vector<std::string>& mesh_paths, Collection& coll,
+                             HOT::Orbifold_type type, const Collection_maps& maps)
+{
+  const std::size_t N = mesh_paths.size();
+  os.precision(17);
+  os << "{\n  \"meshes\": [\n";
+  for(std::size_t i = 0; i < N; ++i) {
+    const HOT::Embedding_statistics& st = coll.statistics(i);
+    os << "    {\"index\": " << i << ", \"mesh\": \"" << json_escape(mesh_paths[i]) << "\", \"vertices\": "
+       << num_vertices(coll.mesh(i)) << ", \"embedding_seconds\": "
+       << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << ", \"iterations\": "
+       << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
+       << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false") << "}" << (i + 1 < N ? "," : "") << "\n";
+  }
+  os << "  ],\n  \"orbifold\": \"" << (type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << coll.order().size()
+     << ",\n  \"landmark_order_used\": [";
+  for(std::size_t i = 0; i < coll.order().size(); ++i) os << (i ? ", " : "") << coll.order()[i];
+  os << "],\n  \"pairs\": [\n";
+  bool first = true;
+  for(std::size_t a = 0; a < N; ++a)
+    for(std::size_t b = 0; b < N; ++b)
+      if(maps.used[a][b]) {
+        os << (first ? "" : ",\n") << "    {\"source\": " << a << ", \"target\": " << b << ", \"map_seconds\": " << coll.map_seconds(a, b) << "}";
+        first = false;
+      }
+  os << "\n  ],\n  \"triples_checked\": " << maps.triples << ",\n  \"cycle_consistency_max_rel_error\": " << maps.cycle << "\n}\n";
+}
+
+} // namespace hot_tools
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_REPORTS_H
