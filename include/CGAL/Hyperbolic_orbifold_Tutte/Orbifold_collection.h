@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 
@@ -348,15 +349,14 @@ private:
   // the cone order: the paper's tour on mesh 0 (sphere type), the given order (disk type)
   Error_code compute_order()
   {
-    const std::size_t k = items_[0].landmarks.size();
-    order_.resize(k);
-    for(std::size_t c = 0; c < k; ++c) order_[c] = c;
-    if(type_ == Sphere_type) {
-      const Status r = check_landmark_vertices(*items_[0].mesh, items_[0].landmarks, type_);
-      if(!r) { message_ = "mesh 0: " + r.message; return r.code; }
-      order_ = compute_landmark_tour(*items_[0].mesh, items_[0].landmarks, get(CGAL::vertex_point, *items_[0].mesh));
-      if(order_.size() != k) { message_ = "the landmark tour could not be computed on mesh 0"; return ERROR_CUT_FAILED; }
-    }
+    // (the pipeline's landmark stage on mesh 0: the tour for sphere type, else as given)
+    const TriangleMesh& m0 = *items_[0].mesh;
+    Status r = type_ == Sphere_type ? check_landmark_vertices(m0, items_[0].landmarks, type_) : Status();
+    std::vector<vertex_descriptor> ordered;
+    if(r)
+      r = internal::order_landmarks(m0, get(CGAL::vertex_point, m0), items_[0].landmarks, type_, Tsp_order, ordered,
+                                    order_);
+    if(!r) { message_ = "mesh 0: " + r.message; return r.code; }
     return OK;
   }
 
