@@ -12,7 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/klein_model.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/lifted_triangulation.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_build.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_search.h>

@@ -8,7 +8,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/filtered_predicates.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/enum.h>
@@ -95,8 +95,7 @@ public:
     /// returns the Klein point of `p`
     Point_2 operator()(const Point_2& p) const
     {
-      const C z = to_c(p);
-      return to_p(z * (2.0 / (1.0 + internal::norm(z))));
+      return to_p(internal::poincare_to_klein(to_c(p)));
     }
   };
 
@@ -106,9 +105,7 @@ public:
     /// returns the Poincar&eacute; point of the Klein point `k`
     Point_2 operator()(const Point_2& k) const
     {
-      const C z = to_c(k);
-      const double s = 1.0 - internal::norm(z);
-      return to_p(z / (1.0 + std::sqrt(s > 0 ? s : 0.0)));
+      return to_p(internal::klein_to_poincare(to_c(k)));
     }
   };
 

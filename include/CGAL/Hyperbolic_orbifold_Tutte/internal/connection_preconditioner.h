@@ -185,11 +185,10 @@ public:
     for(int i = 0; i < n_nodes_; ++i) {
       const int v = owner_[i];
       if(P_.kind[v] == Free) {
-        const double r2 = x[P_.var[v]] * x[P_.var[v]] + x[P_.var[v] + 1] * x[P_.var[v] + 1];
-        scale_[i] = Cd(2.0 / (1.0 - r2), 0.0);
+        scale_[i] = Cd(conformal_factor(Complex<double>(x[P_.var[v]], x[P_.var[v] + 1])), 0.0);
       } else {
         position_jet(P_, x, v, j);
-        const double lambda = 2.0 / (1.0 - norm(j.z));
+        const double lambda = conformal_factor(j.z);
         scale_[i] = Cd(lambda * j.dz[0].re, lambda * j.dz[0].im);
       }
     }

@@ -8,6 +8,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/hyperbolic_energy.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
 
@@ -88,9 +89,7 @@ inline Complex<double> position(const Flat_problem& P, const std::vector<double>
     case Free: return C(x[P.var[v]], x[P.var[v] + 1]);
     case Transformed: return P.transform[v].apply(C(x[P.var[P.twin[v]]], x[P.var[P.twin[v]] + 1]));
     case On_line: {
-      const C k = P.line_k0[v] + x[P.var[v]] * P.line_D[v];
-      const double s = 1.0 - norm(k);
-      return k / (1.0 + std::sqrt(s > 0 ? s : 0.0));
+      return klein_to_poincare(P.line_k0[v] + x[P.var[v]] * P.line_D[v]);
     }
   }
   return C();

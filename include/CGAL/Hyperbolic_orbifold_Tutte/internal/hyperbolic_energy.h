@@ -119,7 +119,7 @@ inline void transformed_jet(const Hyperbolic_isometry_2<double>& m, const Comple
   jet.ddz[1][1] = -d2;
 }
 
-// z(t) = k / (1 + sqrt(1 - |k|^2)), k = k0 + t D.
+// z(t) = k / (1 + sqrt(1 - |k|^2)), k = k0 + t D (klein_to_poincare of disk_models.h) and its derivatives in t.
 inline void on_line_jet(const Complex<double>& k0, const Complex<double>& D, double t, Position_jet& jet)
 {
   const Complex<double> k = k0 + t * D;

@@ -13,7 +13,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_table.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/klein_model.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/start_grid.h>
 
 #include <algorithm>

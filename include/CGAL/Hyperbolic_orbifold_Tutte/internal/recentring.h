@@ -138,7 +138,7 @@ void recentre(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::half
         xq[R.var[v]] = z.re;
         xq[R.var[v] + 1] = z.im;
       } else if(R.kind[v] == On_line) { // its Klein segment's parameter
-        const C k = z * (2.0 / (1.0 + norm(z))), d = k - R.line_k0[v];
+        const C k = poincare_to_klein(z), d = k - R.line_k0[v];
         xq[R.var[v]] = (d.re * R.line_D[v].re + d.im * R.line_D[v].im) / norm(R.line_D[v]);
       }
     }

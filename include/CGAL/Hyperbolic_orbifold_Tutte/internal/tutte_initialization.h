@@ -141,7 +141,6 @@ inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<Com
   auto bx = bxy.col(0);
   auto by = bxy.col(1);
   std::vector<double> diag(own ? ni : 0, 0.0);
-  auto klein = [](const C& p) { return p * (2.0 / (1.0 + norm(p))); };
   for(std::size_t e = 0; e < P.edges.size(); ++e) {
     const int a = P.edges[e][0], b = P.edges[e][1];
     const double w = P.edge_weight[e];
@@ -154,11 +153,11 @@ inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<Com
       trip.emplace_back(ia, ib, -w);
       trip.emplace_back(ib, ia, -w);
     } else if(ia >= 0) {
-      const C kb = klein(z[b]);
+      const C kb = poincare_to_klein(z[b]);
       bx[ia] += w * kb.re;
       by[ia] += w * kb.im;
     } else if(ib >= 0) {
-      const C ka = klein(z[a]);
+      const C ka = poincare_to_klein(z[a]);
       bx[ib] += w * ka.re;
       by[ib] += w * ka.im;
     }
@@ -221,7 +220,7 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
     const double s = 1.0 - norm(k);
     if(!(s > 0) || !std::isfinite(k.re) || !std::isfinite(k.im))
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    const C p = k / (1.0 + std::sqrt(s));
+    const C p = klein_to_poincare(k); // s > 0: the same s, unclamped
     if(P.kind[v] == Free) {
       x[P.var[v]] = p.re;
       x[P.var[v] + 1] = p.im;

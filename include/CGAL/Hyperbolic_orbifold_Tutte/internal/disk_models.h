@@ -2,29 +2,34 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
-#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_KLEIN_MODEL_H
-#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_KLEIN_MODEL_H
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_DISK_MODELS_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_DISK_MODELS_H
 
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/filtered_predicates.h>
 
 #include <array>
 #include <cmath>
 #include <limits>
 
-// The Poincare <-> Klein conversions and the Klein / hyperboloid quantities of the
-// point locator (Embedding_locator.h), in double precision.
+// The geometry core: the Poincare <-> Klein conversions, the hyperboloid and conformal
+// factors and the Klein barycentric coordinates, in double precision, written once here and
+// used by the traits (Poincare_disk_traits_2.h) and by every internal computation; the exact
+// orientation of three Poincare points is in filtered_predicates.h, included here.
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
+// the Klein point 2z / (1 + |z|^2) of a Poincare point
 inline Complex<double> poincare_to_klein(const Complex<double>& z)
 {
   return z * (2.0 / (1.0 + norm(z)));
 }
 
+// the Poincare point k / (1 + sqrt(1 - |k|^2)) of a Klein point (|k| >= 1 clamped to the circle)
 inline Complex<double> klein_to_poincare(const Complex<double>& k)
 {
   const double s = 1.0 - norm(k);
@@ -65,10 +70,16 @@ inline double hyperboloid_weight(const Complex<double>& z)
   return (1.0 - n) / (1.0 + n);
 }
 
+// the conformal factor 2 / (1 - |z|^2) of the Poincare metric at z
+inline double conformal_factor(const Complex<double>& z)
+{
+  return 2.0 / (1.0 - norm(z));
+}
+
 } // namespace internal
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL
 
 #include <CGAL/enable_warnings.h>
 
-#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_KLEIN_MODEL_H
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_DISK_MODELS_H
