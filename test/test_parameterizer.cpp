@@ -510,7 +510,7 @@ TEST_CASE(one_ring_repair)
   for(int v = 0; v < D.P.n; ++v) uv[v] = HOT::internal::position(D.P, D.x, v);
   const HOT::Embedding_certificate before = HOT::internal::certify_flat(D.P, D.tile, uv);
   CHECK_MSG(before.flipped_faces > 0, before); // the certificate sees it
-  const int moves = HOT::internal::repair_one_rings(D.P, D.x);
+  const int moves = HOT::internal::repair_one_rings(D.P, D.x, D.tile.traits());
   for(int v = 0; v < D.P.n; ++v) uv[v] = HOT::internal::position(D.P, D.x, v);
   const HOT::Embedding_certificate after = HOT::internal::certify_flat(D.P, D.tile, uv);
   CHECK(moves >= thrown);

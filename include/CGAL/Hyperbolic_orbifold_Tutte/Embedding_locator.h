@@ -43,7 +43,7 @@
 //     the new triangle's third corner is computed as h(uv); the two corners of the
 //     crossed edge are reused bit for bit, so consecutive triangles share their edge
 //     exactly and no sliver opens between copies. All side tests use the exact
-//     predicate Poincare_disk_traits_2<>::Hyperbolic_orientation_2 on these doubles; a
+//     predicate Traits::Hyperbolic_orientation_2 on these doubles; a
 //     vertex on the line (p, q) counts as left of it (a symbolic perturbation of the
 //     line), so the walk is the straight walk of a segment that meets no vertex.
 //     Termination: every new triangle is checked to be positively oriented, so the exit
@@ -94,10 +94,12 @@ Built once in linear time; `locate()` is then thread-safe (const, no shared stat
 \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and a point type
         with `x()` and `y()` as value type
+\tparam Traits a model of `HyperbolicOrbifoldTraits_2`, the traits of the tile;
+        `Poincare_disk_traits_2<>` by default
 
 \sa `map_vertices()`, `surface_point()`, `Orbifold_collection`
 */
-template <class TriangleMesh, class HalfedgeUVMap>
+template <class TriangleMesh, class HalfedgeUVMap, class Traits_ = Poincare_disk_traits_2<> >
 class Embedding_locator
 {
 public:
@@ -107,8 +109,8 @@ public:
   typedef typename GT::vertex_descriptor vertex_descriptor;         ///< vertex of the mesh
   typedef typename GT::halfedge_descriptor halfedge_descriptor;     ///< halfedge of the mesh
   typedef typename GT::face_descriptor face_descriptor;             ///< face of the mesh
-  typedef Poincare_disk_traits_2<> Traits;                          ///< traits of the tile
-  typedef Traits::Point_2 Point_2;                                  ///< point of the Poincar&eacute; disk
+  typedef Traits_ Traits;                                           ///< traits of the tile
+  typedef typename Traits::Point_2 Point_2;                         ///< point of the Poincar&eacute; disk
   typedef Orbifold_tile<Traits> Tile;                               ///< the orbifold's tile
   typedef Hyperbolic_isometry_2<double> Isometry;                   ///< element of the orbifold group
   /// @}
@@ -275,7 +277,7 @@ private:
     return loc;
   }
 
-  internal::Lifted_triangulation lt_;
+  internal::Lifted_triangulation<Traits> lt_;
   std::vector<face_descriptor> faces_;
   std::vector<vertex_descriptor> vertices_;
 };

@@ -47,10 +47,10 @@ void repair(const Flat_problem& Q, const Tile& T, std::vector<double>& xq, std::
 {
   if(!flipped_only(st))
     return;
-  st.repaired_vertices += repair_one_rings(Q, xq);
+  st.repaired_vertices += repair_one_rings(Q, xq, T.traits());
   certify(Q, T, xq, uvq, st);
   if(flipped_only(st)) {
-    st.repaired_vertices += snap_one_rings(Q, xq);
+    st.repaired_vertices += snap_one_rings(Q, xq, T.traits());
     certify(Q, T, xq, uvq, st);
   }
 }

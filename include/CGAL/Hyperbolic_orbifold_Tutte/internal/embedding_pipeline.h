@@ -160,7 +160,7 @@ private:
       t3 += dt;
       certify(P_, tile_, x_, uv_, st_);
     }
-    tiny_ = unresolved_faces(P_, uv_, false);
+    tiny_ = unresolved_faces(P_, uv_, tile_.traits(), false);
     // (triangles below what double resolves have unreliable angles too: angle-sum failures)
     const Embedding_certificate& c = st_.certificate;
     const bool local_failure = !c.is_bijective() && c.points_outside_disk == 0 && c.twin_failures == 0 &&

@@ -42,10 +42,12 @@ struct Lifted_face
   bool mirror[3];       // border edge glued to itself by a reflection: the neighbour is this face, reflected
 };
 
+// Traits: a model of HyperbolicOrbifoldTraits_2, the traits of the tile
+template <class Traits_>
 struct Lifted_triangulation
 {
-  typedef Poincare_disk_traits_2<> Traits;
-  typedef Traits::Point_2 Point_2;
+  typedef Traits_ Traits;
+  typedef typename Traits::Point_2 Point_2;
   typedef Orbifold_tile<Traits> Tile;
   typedef Hyperbolic_isometry_2<double> Isometry;
   typedef Complex<double> C;
@@ -63,9 +65,10 @@ struct Lifted_triangulation
   Start_grid grid;
   std::size_t n_cut_edges = 0, n_border_edges = 0, n_inverted = 0;
 
-  static int orient(const C& a, const C& b, const C& c)
+  // the orientation of the geodesic triangle (a, b, c), exact (the tile's traits)
+  int orient(const C& a, const C& b, const C& c) const
   {
-    const Traits::Hyperbolic_orientation_2 o;
+    const typename Traits::Hyperbolic_orientation_2 o = tile.traits().hyperbolic_orientation_2_object();
     return static_cast<int>(o(Point_2(a.re, a.im), Point_2(b.re, b.im), Point_2(c.re, c.im)));
   }
 

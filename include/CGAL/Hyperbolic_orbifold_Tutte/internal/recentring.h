@@ -43,9 +43,11 @@ struct Unresolved_faces
 };
 
 // Faces that double cannot resolve (an edge within 256 units in the last place of its
-// ends), and with `not_positive` also the faces that are not positive (exact test).
-inline Unresolved_faces unresolved_faces(const Flat_problem& Q, const std::vector<Complex<double> >& uv,
-                                        bool not_positive)
+// ends), and with `not_positive` also the faces that are not positive (exact test with the
+// traits `tr`, the tile's).
+template <class Traits>
+Unresolved_faces unresolved_faces(const Flat_problem& Q, const std::vector<Complex<double> >& uv, const Traits& tr,
+                                  bool not_positive)
 {
   typedef Complex<double> C;
   Unresolved_faces u;
@@ -59,7 +61,7 @@ inline Unresolved_faces unresolved_faces(const Flat_problem& Q, const std::vecto
       u.flag[fi] = u.flag[fi] || len < 256 * ulp;
     }
     if(not_positive && !u.flag[fi])
-      u.flag[fi] = !positive_triangle(uv[f[0]], uv[f[1]], uv[f[2]]);
+      u.flag[fi] = !positive_triangle(tr, uv[f[0]], uv[f[1]], uv[f[2]]);
     u.count += u.flag[fi] ? 1 : 0;
   }
   if(u.count == 0)
@@ -117,7 +119,7 @@ void recentre(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::half
   Flat_problem Q;
   std::vector<C> uvq = uv;
   std::vector<double> xq;
-  Unresolved_faces left = unresolved_faces(P, uvq, true);
+  Unresolved_faces left = unresolved_faces(P, uvq, tile.traits(), true);
   std::size_t best = left.count;
   for(int round = 0, idle = 0; round < max_recentring_rounds && left.count > 0 && idle < 4; ++round) {
     const Isometry step = Isometry::translation_to_origin(left.where);
@@ -166,7 +168,7 @@ void recentre(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::half
     st.cg_iterations += rs.cg_iterations;
     for(int v = 0; v < Q.n; ++v)
       uvq[v] = position(Q, xq, v);
-    left = unresolved_faces(Q, uvq, true);
+    left = unresolved_faces(Q, uvq, tile.traits(), true);
     if(options.verbose)
       std::cerr << "  recentred " << round + 1 << " times: " << left.count
                 << " faces not positive or below what double resolves (smallest edge " << left.smallest << ")"
