@@ -206,7 +206,7 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
                          const HOT::Orbifold_tile<>& tile, const std::vector<SM_vertex>& landmarks,
                          const std::string& title)
 {
-  typedef HOT::internal::Complex<double> C;
+  typedef std::complex<double> C;
   hot_tools::Poincare_svg svg;
   svg.begin(os, title);
   const int n = tile.number_of_corners();
@@ -378,7 +378,7 @@ int run_embed(int argc, char** argv)
            << (st.converged_at_rounding_floor ? "true" : "false") << ",\n  \"polishing_iterations\": " << st.polishing_iterations
            << ",\n  \"repaired_vertices\": " << st.repaired_vertices << ",\n"
            << "  \"recentred\": " << (st.recentred ? "true" : "false") << ",\n  \"frame\": {\"a\": ["
-           << st.frame.a().re << ", " << st.frame.a().im << "], \"b\": [" << st.frame.b().re << ", " << st.frame.b().im
+           << st.frame.a().real() << ", " << st.frame.a().imag() << "], \"b\": [" << st.frame.b().real() << ", " << st.frame.b().imag()
            << "]},\n"
            << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
            << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk

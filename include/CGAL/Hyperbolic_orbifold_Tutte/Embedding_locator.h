@@ -116,7 +116,7 @@ public:
   /// @}
 
 #ifndef DOXYGEN_RUNNING
-  typedef internal::Complex<double> C;
+  typedef std::complex<double> C;
 #endif
 
   /// the face index of a location that was not found
@@ -182,7 +182,7 @@ public:
   /// index (in `vertices(B)` order) of corner `j` of face `i`
   std::size_t corner_vertex_index(std::size_t i, int j) const { return static_cast<std::size_t>(lt_.faces[i].v[j]); }
   /// the stored Poincar&eacute; point of corner `j` of face `i`
-  Point_2 corner_point(std::size_t i, int j) const { return Point_2(lt_.faces[i].z[j].re, lt_.faces[i].z[j].im); }
+  Point_2 corner_point(std::size_t i, int j) const { return Point_2(lt_.faces[i].z[j].real(), lt_.faces[i].z[j].imag()); }
   /// edges whose two sides carry different corner points (sphere type)
   std::size_t number_of_cut_edges() const { return lt_.n_cut_edges; }
   /// mesh border edges (disk type), glued to themselves by the reflection in a tile side
@@ -197,7 +197,7 @@ public:
     const internal::Lifted_face& F = lt_.faces[i];
     for(int j = 0; j < 3; ++j)
       if(b[(j + 1) % 3] == 0.0 && b[(j + 2) % 3] == 0.0)
-        return Point_2(F.z[j].re, F.z[j].im); // a corner: its own point, bitwise
+        return Point_2(F.z[j].real(), F.z[j].imag()); // a corner: its own point, bitwise
     C k;
     double s = 0;
     for(int j = 0; j < 3; ++j) {
@@ -207,7 +207,7 @@ public:
       s += mu;
     }
     const C z = internal::klein_to_poincare(k / s);
-    return Point_2(z.re, z.im);
+    return Point_2(z.real(), z.imag());
   }
   /// the Poincar&eacute; point of a location
   Point_2 disk_point(const Location& l) const { return disk_point(l.face_index, l.barycentric); }
@@ -219,12 +219,12 @@ public:
     if(!lt_.valid || lt_.faces.empty())
       return loc;
     const C z0(CGAL::to_double(z.x()), CGAL::to_double(z.y()));
-    if(!(norm(z0) < 1.0) || !std::isfinite(z0.re) || !std::isfinite(z0.im))
+    if(!(internal::squared_modulus(z0) < 1.0) || !std::isfinite(z0.real()) || !std::isfinite(z0.imag()))
       return loc;
     // a corner's point, bitwise (before reduction: a vertex of B outside the tile is found too)
     if(lt_.corner_hit(z0, Isometry(), loc))
       return with_face(loc);
-    const typename Tile::Reduction r = lt_.tile.reduce_to_tile(Point_2(z0.re, z0.im));
+    const typename Tile::Reduction r = lt_.tile.reduce_to_tile(Point_2(z0.real(), z0.imag()));
     const C q(CGAL::to_double(r.point.x()), CGAL::to_double(r.point.y()));
     if(lt_.corner_hit(q, r.element, loc))
       return with_face(loc);

@@ -57,7 +57,7 @@ public:
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor TM_vertex_descriptor;
   typedef typename boost::graph_traits<Triangle_mesh>::edge_descriptor TM_edge_descriptor;
   typedef Embedding_settings<TM_edge_descriptor> Settings;
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
 
   Seam_mesh_embedding(const SeamMesh& mesh, halfedge_descriptor bhd, const std::vector<TM_vertex_descriptor>& landmarks,
                       const Tile& tile, const Settings& settings, Embedding_statistics& st)

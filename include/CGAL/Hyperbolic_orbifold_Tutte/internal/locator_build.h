@@ -73,7 +73,7 @@ bool read_lifted_faces(const TriangleMesh& tm, HalfedgeUVMap uv, Lifted_triangul
     Lifted_face F;
     for(int j = 0; j < 3; ++j) {
       F.z[j] = Lifted_triangulation<Traits>::to_c(get(uv, fhs.fh.back()[j]));
-      if(!std::isfinite(F.z[j].re) || !std::isfinite(F.z[j].im) || !(norm(F.z[j]) < 1.0))
+      if(!std::isfinite(F.z[j].real()) || !std::isfinite(F.z[j].imag()) || !(squared_modulus(F.z[j]) < 1.0))
         return lt.fail("a corner point is not inside the unit disk");
       F.v[j] = static_cast<int>(vindex(target(fhs.fh.back()[j], tm)));
       F.nf[j] = -1;
@@ -94,7 +94,7 @@ template <class TriangleMesh, class Traits>
 bool link_lifted_faces(const TriangleMesh& tm, const Face_halfedges<TriangleMesh>& fhs, Lifted_triangulation<Traits>& lt)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   for(std::size_t fi = 0; fi < lt.faces.size(); ++fi) {
     Lifted_face& F = lt.faces[fi];
     for(int j = 0; j < 3; ++j) {

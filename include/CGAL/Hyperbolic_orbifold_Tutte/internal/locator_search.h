@@ -28,10 +28,10 @@ namespace internal {
 // Best-first search over lifted triangles (face, element), by distance from q to the
 // triangle's centroid, with a visited set keyed by the face and the image of a probe point.
 template <class Traits, class Location>
-void search_lifted(const Lifted_triangulation<Traits>& lt, const Complex<double>& q, int start, Location& loc,
+void search_lifted(const Lifted_triangulation<Traits>& lt, const std::complex<double>& q, int start, Location& loc,
                    Hyperbolic_isometry_2<double>& h_out)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
   struct Node
   {
@@ -50,9 +50,9 @@ void search_lifted(const Lifted_triangulation<Traits>& lt, const Complex<double>
   auto node_key = [&](int f, const Isometry& h) {
     const C w = h.apply(probe);
     Point_key k;
-    k.a = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.re * 1e9))) * 1000003u +
+    k.a = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.real() * 1e9))) * 1000003u +
           static_cast<std::uint64_t>(f);
-    k.b = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.im * 1e9)));
+    k.b = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.imag() * 1e9)));
     return k;
   };
   std::vector<Node> nodes;

@@ -26,25 +26,25 @@ namespace internal {
 // projective, not an affine, map of the Klein disk: the coordinates w.r.t. the developed
 // corners would differ.) In the hyperboloid model on request (lt.model).
 template <class Traits, class Location>
-void finish_location(const Lifted_triangulation<Traits>& lt, const Complex<double>& q, int f, const Complex<double>* D,
+void finish_location(const Lifted_triangulation<Traits>& lt, const std::complex<double>& q, int f, const std::complex<double>* D,
                      bool identity, const Hyperbolic_isometry_2<double>& h, Location& loc)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   std::array<double, 3> l;
   if(identity) {
     l = klein_barycentric(D[0], D[1], D[2], q);
   } else {
     const Hyperbolic_isometry_2<long double> hi(h.inverse());
-    const Complex<long double> w = hi.apply(Complex<long double>(q.re, q.im));
+    const std::complex<long double> w = hi.apply(std::complex<long double>(q.real(), q.imag()));
     const Lifted_face& F = lt.faces[f];
-    l = klein_barycentric(F.z[0], F.z[1], F.z[2], C(static_cast<double>(w.re), static_cast<double>(w.im)));
+    l = klein_barycentric(F.z[0], F.z[1], F.z[2], C(static_cast<double>(w.real()), static_cast<double>(w.imag())));
   }
   loc.face_index = static_cast<std::size_t>(f);
   if(!std::isfinite(l[0]) || !std::isfinite(l[1]) || !std::isfinite(l[2])) {
     // a needle too thin for double Klein coordinates: the nearest corner
     int best = 0;
     for(int j = 1; j < 3; ++j)
-      if(norm(D[j] - q) < norm(D[best] - q))
+      if(squared_modulus(D[j] - q) < squared_modulus(D[best] - q))
         best = j;
     l = {{0.0, 0.0, 0.0}};
     l[best] = 1.0;
@@ -72,10 +72,10 @@ void finish_location(const Lifted_triangulation<Traits>& lt, const Complex<doubl
 // The straight walk from the centroid of `start` to q (see Embedding_locator.h).
 // Returns false when a check fails (then the search answers); h: the copy's element.
 template <class Traits, class Location>
-bool walk_to(const Lifted_triangulation<Traits>& lt, const Complex<double>& q, int start, Location& loc,
+bool walk_to(const Lifted_triangulation<Traits>& lt, const std::complex<double>& q, int start, Location& loc,
              Hyperbolic_isometry_2<double>& h)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   h = Hyperbolic_isometry_2<double>();
   bool identity = true;
   int f = start;

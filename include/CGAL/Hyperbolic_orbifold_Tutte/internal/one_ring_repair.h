@@ -12,7 +12,7 @@
 // section 5), and snapped at the resolution of double as a last resort.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 
 #include <algorithm>
@@ -27,10 +27,10 @@ namespace internal {
 // exact test: the hyperbolic triangle (a, b, c) of the Poincare disk is positively oriented
 // (Traits: a model of HyperbolicOrbifoldTraits_2, the tile's traits)
 template <class Traits>
-bool positive_triangle(const Traits& tr, const Complex<double>& a, const Complex<double>& b, const Complex<double>& c)
+bool positive_triangle(const Traits& tr, const std::complex<double>& a, const std::complex<double>& b, const std::complex<double>& c)
 {
   typedef typename Traits::Point_2 Point_2;
-  return tr.hyperbolic_orientation_2_object()(Point_2(a.re, a.im), Point_2(b.re, b.im), Point_2(c.re, c.im)) ==
+  return tr.hyperbolic_orientation_2_object()(Point_2(a.real(), a.imag()), Point_2(b.real(), b.imag()), Point_2(c.real(), c.imag())) ==
          POSITIVE;
 }
 
@@ -76,7 +76,7 @@ private:
 template <class Traits>
 int repair_one_rings(const Flat_problem& P, std::vector<double>& x, const Traits& tr, int max_sweeps = 100)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
   const One_ring_faces<Traits> rings(P, tr);
   // neighbours of each free vertex, with the map bringing them into its frame
@@ -110,8 +110,8 @@ int repair_one_rings(const Flat_problem& P, std::vector<double>& x, const Traits
       if(!(wsum > 0))
         continue;
       const C c = to0.inverse().apply(sum / wsum);
-      x[P.var[v]] = c.re;
-      x[P.var[v] + 1] = c.im;
+      x[P.var[v]] = c.real();
+      x[P.var[v] + 1] = c.imag();
       ++moved;
     }
     moves += moved;
