@@ -37,8 +37,9 @@ NT squared_modulus(const std::complex<NT>& z)
 template <class NT>
 std::complex<NT> divide(const std::complex<NT>& a, const std::complex<NT>& b)
 {
-  const NT d = b.real() * b.real() + b.imag() * b.imag();
-  return std::complex<NT>((a.real() * b.real() + a.imag() * b.imag()) / d, (a.imag() * b.real() - a.real() * b.imag()) / d);
+  const NT d = squared_modulus(b);
+  return std::complex<NT>((a.real() * b.real() + a.imag() * b.imag()) / d,
+                          (a.imag() * b.real() - a.real() * b.imag()) / d);
 }
 
 // the Klein point 2z / (1 + |z|^2) of a Poincare point
