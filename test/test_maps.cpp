@@ -16,7 +16,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/klein_model.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Random.h>
 #ifdef CGAL_LINKED_WITH_TBB
@@ -30,7 +30,7 @@
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 using namespace hot_test;
-typedef HOT::internal::Complex<double> C;
+typedef std::complex<double> C;
 typedef HOT::Hyperbolic_isometry_2<double> Isometry;
 typedef K::Point_2 Point_2;
 typedef K::Point_3 Point_3;
@@ -530,8 +530,8 @@ struct Point_checker
     worst_min_bary = std::min(worst_min_bary, l.min_raw_barycentric);
     // g(z) in long double (the element's coefficients are large near the unit circle)
     const HOT::Hyperbolic_isometry_2<long double> g(l.element);
-    const auto w = g.apply(HOT::internal::Complex<long double>(z.x(), z.y()));
-    const double d = hyperbolic_distance(Point_2(double(w.re), double(w.im)), L.disk_point(l));
+    const auto w = g.apply(std::complex<long double>(z.x(), z.y()));
+    const double d = hyperbolic_distance(Point_2(double(w.real()), double(w.imag())), L.disk_point(l));
     const double r2 = z.x() * z.x() + z.y() * z.y();
     if(r2 < 0.81)
       worst_consistency_inner = std::max(worst_consistency_inner, d);
@@ -603,12 +603,12 @@ static void check_hostile_points(const Embedded& b, HOT::Interpolation_model m)
         ++boundary_edges;
         const Point_2 p = get(b.uv, hs[j]), q = get(b.uv, hs[(j + 1) % 3]);
         const C kp = HOT::internal::poincare_to_klein(C(p.x(), p.y())), kq = HOT::internal::poincare_to_klein(C(q.x(), q.y()));
-        const C n = C(-(kq - kp).im, (kq - kp).re) / HOT::internal::abs(kq - kp);
+        const C n = C(-(kq - kp).imag(), (kq - kp).real()) / std::abs(kq - kp);
         for(double t : {0.5, 0.25, 1e-9}) {
           const C km = kp + t * (kq - kp);
           for(double eps : {0.0, 1e-15, -1e-15, 1e-11, -1e-11, 1e-7, -1e-7}) {
             const C z = HOT::internal::klein_to_poincare(km + eps * n);
-            check(Point_2(z.re, z.im));
+            check(Point_2(z.real(), z.imag()));
           }
         }
       }
@@ -749,7 +749,7 @@ TEST_CASE(folded_embedding_terminates)
   const Point_2 zv = get(uv, halfedge(v, m)), zn = get(uv, prev(halfedge(v, m), m));
   const C far = Isometry::rotation_about(C(zn.x(), zn.y()), CGAL_PI).apply(C(zv.x(), zv.y()));
   for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m))
-    put(uv, h, Point_2(far.re, far.im));
+    put(uv, h, Point_2(far.real(), far.imag()));
   const Locator L(m, uv, HOT::Sphere_type, 7);
   CHECK(L.is_valid());
   CHECK(L.number_of_inverted_faces() > 0);

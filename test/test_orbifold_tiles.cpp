@@ -26,7 +26,7 @@ static CGAL::Random rng(4242);
 static const Traits tr;
 
 static C to_c(const Point& p) { return C(p.x(), p.y()); }
-static Point to_p(const C& c) { return Point(c.re, c.im); }
+static Point to_p(const C& c) { return Point(c.real(), c.imag()); }
 static double dist(const C& a, const C& b) { return tr.compute_hyperbolic_distance_2_object()(to_p(a), to_p(b)); }
 
 static Tile make(HOT::Orbifold_type type, int k)
@@ -223,7 +223,7 @@ TEST_CASE(cone_stabilisers)
           CHECK_MSG(stab.size() == 1, "corner " << i << " of k=" << k << ": " << stab.size() << " elements");
           for(const Isometry& g : stab) {
             CHECK(g.is_orientation_preserving());
-            CHECK(std::abs(g.derivative(v).re + 1) < 1e-9 && std::abs(g.derivative(v).im) < 1e-9);
+            CHECK(std::abs(g.derivative(v).real() + 1) < 1e-9 && std::abs(g.derivative(v).imag()) < 1e-9);
             CHECK((g * g).is_identity(1e-9));
           }
         } else {
@@ -234,7 +234,7 @@ TEST_CASE(cone_stabilisers)
             CHECK((g * g).is_identity(1e-9));
             if(g.is_orientation_preserving()) {
               ++half_turns;
-              CHECK(std::abs(g.derivative(v).re + 1) < 1e-9);
+              CHECK(std::abs(g.derivative(v).real() + 1) < 1e-9);
             } else {
               ++reflections;
             }
@@ -271,7 +271,7 @@ TEST_CASE(tiling_around_every_corner)
             // (for a reflected copy the order flips)
             const Isometry to0 = Isometry::translation_to_origin(v);
             const C dn = to0.apply(next), dp = to0.apply(prev);
-            const double start = g.is_orientation_preserving() ? std::atan2(dn.im, dn.re) : std::atan2(dp.im, dp.re);
+            const double start = g.is_orientation_preserving() ? std::atan2(dn.imag(), dn.real()) : std::atan2(dp.imag(), dp.real());
             sectors.push_back(std::make_pair(start, a));
           }
         }
@@ -313,10 +313,10 @@ static double distance_outside(const Tile& t, const Point& p)
     const C a = to_c(t.corner(t.side_source(i))), b = to_c(t.corner(t.side_target(i)));
     const Isometry to0 = Isometry::translation_to_origin(a);
     const C b0 = to0.apply(b);
-    const Isometry align = Isometry::rotation(-HOT::internal::arg(b0)) * to0; // side on the real axis, tile above
+    const Isometry align = Isometry::rotation(-std::arg(b0)) * to0; // side on the real axis, tile above
     const C w = align.apply(to_c(p));
-    if(w.im < 0)
-      worst = std::max(worst, std::asinh(2 * -w.im / (1 - HOT::internal::norm(w))));
+    if(w.imag() < 0)
+      worst = std::max(worst, std::asinh(2 * -w.imag() / (1 - HOT::internal::squared_modulus(w))));
   }
   return worst;
 }
@@ -363,14 +363,14 @@ TEST_CASE(reduce_to_tile)
           // another word equal to g^-1 in the group (e.g. a half-turn instead of its inverse);
           // with rounded generators such relations hold to about 1e-16 |a|^2 and the defect
           // grows like 1 / (1 - |z|^2) with the distance (measured: 2e-6 at 1e-8 for k = 50).
-          if(1 - HOT::internal::norm(sl.apply(zl)) < 1e-6)
+          if(1 - HOT::internal::squared_modulus(sl.apply(zl)) < 1e-6)
             break;
           g = s * g;
           zl = sl.apply(zl);
         }
-        const C z(static_cast<double>(zl.re), static_cast<double>(zl.im));
+        const C z(static_cast<double>(zl.real()), static_cast<double>(zl.imag()));
         const Tile::Reduction red = t.reduce_to_tile(to_p(z));
-        CHECK_MSG(dist(to_c(red.point), to_c(x)) < 1e-6, "k=" << k << " type " << type << " 1-|z|^2=" << 1 - HOT::internal::norm(z) << " steps " << red.steps << " back off by " << dist(to_c(red.point), to_c(x)) << " x=" << x);
+        CHECK_MSG(dist(to_c(red.point), to_c(x)) < 1e-6, "k=" << k << " type " << type << " 1-|z|^2=" << 1 - HOT::internal::squared_modulus(z) << " steps " << red.steps << " back off by " << dist(to_c(red.point), to_c(x)) << " x=" << x);
         CHECK(red.element.is_close(g.inverse(), 1e-6));
       }
     }

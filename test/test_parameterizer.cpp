@@ -25,7 +25,7 @@
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 using namespace hot_test;
-typedef HOT::internal::Complex<double> C;
+typedef std::complex<double> C;
 typedef HOT::Hyperbolic_isometry_2<double> Isometry;
 typedef K::Point_2 Point_2;
 
@@ -53,11 +53,11 @@ TEST_CASE(squared_distance_derivatives_by_finite_differences)
     HOT::internal::Squared_distance_derivatives sd;
     HOT::internal::squared_hyperbolic_distance(z, w, sd, true);
     // the value is eq. (6) squared
-    const double cosh_d = 1 + 2 * HOT::internal::norm(z - w) / ((1 - HOT::internal::norm(z)) * (1 - HOT::internal::norm(w)));
+    const double cosh_d = 1 + 2 * HOT::internal::squared_modulus(z - w) / ((1 - HOT::internal::squared_modulus(z)) * (1 - HOT::internal::squared_modulus(w)));
     if(cosh_d > 1.001)
       CHECK_NEAR(sd.d, std::acosh(cosh_d), 1e-9 * (1 + sd.d));
-    double x[4] = {z.re, z.im, w.re, w.im};
-    const double scale = std::min(1 - HOT::internal::norm(z), 1 - HOT::internal::norm(w));
+    double x[4] = {z.real(), z.imag(), w.real(), w.imag()};
+    const double scale = std::min(1 - HOT::internal::squared_modulus(z), 1 - HOT::internal::squared_modulus(w));
     const double h = 1e-6 * scale;
     auto f = [&](const double* y) { return sqdist(C(y[0], y[1]), C(y[2], y[3])); };
     for(int i = 0; i < 4; ++i) {
@@ -91,13 +91,13 @@ TEST_CASE(position_jets_by_finite_differences)
     const C e[2] = {C(1, 0), C(0, 1)};
     for(int i = 0; i < 2; ++i) {
       const C fd = (m.apply(x + h * e[i]) - m.apply(x - h * e[i])) / (2 * h);
-      CHECK(HOT::internal::abs(fd - jet.dz[i]) < 1e-6 * (1 + HOT::internal::abs(fd)));
+      CHECK(std::abs(fd - jet.dz[i]) < 1e-6 * (1 + std::abs(fd)));
       HOT::internal::Position_jet jp, jm;
       HOT::internal::transformed_jet(m, x + h * e[i], jp);
       HOT::internal::transformed_jet(m, x - h * e[i], jm);
       for(int j = 0; j < 2; ++j) {
         const C fdd = (jp.dz[j] - jm.dz[j]) / (2 * h);
-        CHECK(HOT::internal::abs(fdd - jet.ddz[i][j]) < 1e-5 * (1 + HOT::internal::abs(fdd)));
+        CHECK(std::abs(fdd - jet.ddz[i][j]) < 1e-5 * (1 + std::abs(fdd)));
       }
     }
     // the Klein model: z(t) = Poincare(k0 + t D), straight in Klein
@@ -106,13 +106,13 @@ TEST_CASE(position_jets_by_finite_differences)
     HOT::internal::on_line_jet(k0, D, t, jet);
     auto zt = [&](double s) {
       const C k = k0 + s * D;
-      return k / (1 + std::sqrt(1 - HOT::internal::norm(k)));
+      return k / (1 + std::sqrt(1 - HOT::internal::squared_modulus(k)));
     };
-    CHECK(HOT::internal::abs(jet.z - zt(t)) < 1e-15);
+    CHECK(std::abs(jet.z - zt(t)) < 1e-15);
     const C fd = (zt(t + h) - zt(t - h)) / (2 * h);
-    CHECK(HOT::internal::abs(fd - jet.dz[0]) < 1e-7);
+    CHECK(std::abs(fd - jet.dz[0]) < 1e-7);
     const C fdd = (zt(t + h) - 2.0 * zt(t) + zt(t - h)) / (h * h);
-    CHECK(HOT::internal::abs(fdd - jet.ddz[0][0]) < 1e-3);
+    CHECK(std::abs(fdd - jet.ddz[0][0]) < 1e-3);
   }
 }
 
@@ -170,7 +170,7 @@ static double worst_centre_of_mass_defect(const Mesh& m, const UV_map& uv, HOT::
       if(is_border(h, m)) { single = false; break; }
       const C z(get(uv, h).x(), get(uv, h).y());
       if(first) { z0 = z; first = false; }
-      else if(HOT::internal::abs(z - z0) > 1e-14) { single = false; break; }
+      else if(std::abs(z - z0) > 1e-14) { single = false; break; }
     }
     if(!single) continue;
     const Isometry to0 = Isometry::translation_to_origin(z0);
@@ -184,9 +184,9 @@ static double worst_centre_of_mass_defect(const Mesh& m, const UV_map& uv, HOT::
       const halfedge_descriptor hp = prev(h, m);
       const C zj(get(uv, hp).x(), get(uv, hp).y());
       const C u = to0.apply(zj);
-      const double r = HOT::internal::abs(u);
+      const double r = std::abs(u);
       const double d = 2 * std::atanh(r);
-      const double A = std::min(1 - HOT::internal::norm(z0), 1 - HOT::internal::norm(zj));
+      const double A = std::min(1 - HOT::internal::squared_modulus(z0), 1 - HOT::internal::squared_modulus(zj));
       resolution = std::max(resolution, 4e-16 / (A * d));
       double wij = 1;
       if(w == HOT::Cotangent) {
@@ -203,7 +203,7 @@ static double worst_centre_of_mass_defect(const Mesh& m, const UV_map& uv, HOT::
       sum += (wij * d / r) * u; // log at the origin: direction u, length d
       scale += wij * d;
     }
-    worst = std::max(worst, HOT::internal::abs(sum) / scale / (1e-8 + 1e3 * resolution));
+    worst = std::max(worst, std::abs(sum) / scale / (1e-8 + 1e3 * resolution));
   }
   return worst;
 }
@@ -458,12 +458,12 @@ TEST_CASE(disk_orbifold_energy_below_fixed_boundary_figure_8)
     HOT::internal::Flat_problem F = D.P; // fixed boundary: the On_line vertices frozen at the initial positions
     std::vector<double> xf;
     {
-      std::vector<HOT::internal::Complex<double> > z0(F.n);
+      std::vector<std::complex<double> > z0(F.n);
       for(int v = 0; v < F.n; ++v) z0[v] = HOT::internal::position(D.P, D.x, v);
       int nv = 0;
       for(int v = 0; v < F.n; ++v) {
         if(F.kind[v] == HOT::internal::On_line) { F.kind[v] = HOT::internal::Fixed; F.fixed[v] = z0[v]; }
-        if(F.kind[v] == HOT::internal::Free) { F.var[v] = nv; nv += 2; xf.push_back(z0[v].re); xf.push_back(z0[v].im); }
+        if(F.kind[v] == HOT::internal::Free) { F.var[v] = nv; nv += 2; xf.push_back(z0[v].real()); xf.push_back(z0[v].imag()); }
       }
       F.n_vars = nv;
     }
@@ -477,7 +477,7 @@ TEST_CASE(disk_orbifold_energy_below_fixed_boundary_figure_8)
     std::cout << "  " << name << ": disk orbifold energy " << s1.energy << " < fixed boundary " << s2.energy << std::endl;
     CHECK(s1.energy < s2.energy);
     // both are bijective (Theorems 1 and 2)
-    std::vector<HOT::internal::Complex<double> > u1(D.P.n), u2(F.n);
+    std::vector<std::complex<double> > u1(D.P.n), u2(F.n);
     for(int v = 0; v < D.P.n; ++v) { u1[v] = HOT::internal::position(D.P, x, v); u2[v] = HOT::internal::position(F, xf, v); }
     const HOT::Embedding_certificate c1 = HOT::internal::certify_flat(D.P, D.tile, u1);
     CHECK_MSG(c1.is_bijective(), c1);
@@ -502,15 +502,15 @@ TEST_CASE(one_ring_repair)
     if(D.P.kind[a] != HOT::internal::Free) continue;
     const C za = HOT::internal::position(D.P, D.x, a), zb = HOT::internal::position(D.P, D.x, b);
     const C far = Isometry::rotation_about(zb, CGAL_PI).apply(za); // beyond the neighbour
-    D.x[D.P.var[a]] = far.re;
-    D.x[D.P.var[a] + 1] = far.im;
+    D.x[D.P.var[a]] = far.real();
+    D.x[D.P.var[a] + 1] = far.imag();
     ++thrown;
   }
   std::vector<C> uv(D.P.n);
   for(int v = 0; v < D.P.n; ++v) uv[v] = HOT::internal::position(D.P, D.x, v);
   const HOT::Embedding_certificate before = HOT::internal::certify_flat(D.P, D.tile, uv);
   CHECK_MSG(before.flipped_faces > 0, before); // the certificate sees it
-  const int moves = HOT::internal::repair_one_rings(D.P, D.x);
+  const int moves = HOT::internal::repair_one_rings(D.P, D.x, D.tile.traits());
   for(int v = 0; v < D.P.n; ++v) uv[v] = HOT::internal::position(D.P, D.x, v);
   const HOT::Embedding_certificate after = HOT::internal::certify_flat(D.P, D.tile, uv);
   CHECK(moves >= thrown);
@@ -675,7 +675,7 @@ TEST_CASE(public_certificate_on_corner_maps)
     const Point_2 zn = get(uv, prev(halfedge(v, m), m));
     const C far = Isometry::rotation_about(C(zn.x(), zn.y()), CGAL_PI).apply(C(zv.x(), zv.y()));
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m))
-      put(uv, h, Point_2(far.re, far.im));
+      put(uv, h, Point_2(far.real(), far.imag()));
     CHECK(HOT::certify_hyperbolic_orbifold_embedding(m, used, uv, c, &msg) == HOT::OK);
     CHECK_MSG(!c.is_bijective() && c.flipped_faces > 0, c);
     // a point outside the disk
@@ -821,7 +821,7 @@ static double largest_hyperbolic_distance(const HOT::internal::Flat_problem& P, 
   double worst = 0;
   for(int v = 0; v < P.n; ++v) {
     const C a = HOT::internal::position(P, xa, v), b = HOT::internal::position(P, xb, v);
-    worst = std::max(worst, 2 * std::asinh(std::sqrt(norm(a - b) / ((1 - norm(a)) * (1 - norm(b))))));
+    worst = std::max(worst, 2 * std::asinh(std::sqrt(HOT::internal::squared_modulus(a - b) / ((1 - HOT::internal::squared_modulus(a)) * (1 - HOT::internal::squared_modulus(b))))));
   }
   return worst;
 }
@@ -1127,11 +1127,11 @@ TEST_CASE(riemannian_hessian_is_the_second_derivative_along_geodesics)
       const C z(x[i], x[i + 1]), w(t * v[i], t * v[i + 1]);
       const double len = abs(w);
       if(!(len > 0)) continue;
-      const double L = 2 * len / (1 - norm(z)); // hyperbolic length of the step
+      const double L = 2 * len / (1 - HOT::internal::squared_modulus(z)); // hyperbolic length of the step
       const C e = w * (std::tanh(L / 2) / len);
       const C q = (e + z) / (C(1.0) + conj(z) * e); // exp_z(w): the Mobius map taking 0 to z
-      y[i] = q.re;
-      y[i + 1] = q.im;
+      y[i] = q.real();
+      y[i + 1] = q.imag();
     }
     return y;
   };
@@ -1328,7 +1328,7 @@ TEST_CASE(recentring_goes_past_the_limit_of_double)
     for(halfedge_descriptor h : halfedges(m))
       if(!is_border(h, m)) {
         const C a(get(uv, h).x(), get(uv, h).y()), b(get(uv, next(h, m)).x(), get(uv, next(h, m)).y());
-        const double N = HOT::internal::norm(a - b), A = 1 - HOT::internal::norm(a), B = 1 - HOT::internal::norm(b);
+        const double N = HOT::internal::squared_modulus(a - b), A = 1 - HOT::internal::squared_modulus(a), B = 1 - HOT::internal::squared_modulus(b);
         s = std::min(s, 2 * std::asinh(std::sqrt(N / (A * B))));
       }
     return s;
@@ -1355,7 +1355,7 @@ TEST_CASE(recentring_goes_past_the_limit_of_double)
         double d = std::numeric_limits<double>::infinity();
         for(int c = 0; c < tile.number_of_corners(); ++c)
           if(tile.corner_cone(c) == static_cast<int>(i))
-            d = std::min(d, HOT::internal::abs(C(get(uv, h).x(), get(uv, h).y()) -
+            d = std::min(d, std::abs(C(get(uv, h).x(), get(uv, h).y()) -
                                                st.frame.apply(C(tile.corner(c).x(), tile.corner(c).y()))));
         CHECK_MSG(d < 1e-12, "cone " << i << " at (" << get(uv, h) << "), " << d << " from the frame's images of its tile corners");
       }

@@ -3,7 +3,7 @@
 //
 // Concept archetype: a traits class with only the documented requirements of
 // HyperbolicOrbifoldTraits_2 (doc/.../Concepts) must be enough for the tile code and the
-// parameterizer: if the code starts using anything else, this stops compiling.
+// parameterizer and the point locator: if the code starts using anything else, this stops compiling.
 #include "test_harness.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -46,6 +46,21 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor vd;
 typedef boost::graph_traits<Mesh>::edge_descriptor ed;
 typedef boost::graph_traits<Mesh>::halfedge_descriptor hd;
+typedef std::unordered_map<ed, bool, boost::hash<ed>> EF;
+typedef std::unordered_map<vd, bool, boost::hash<vd>> VF;
+typedef CGAL::Seam_mesh<Mesh, boost::associative_property_map<EF>, boost::associative_property_map<VF>> SM;
+typedef boost::graph_traits<SM>::halfedge_descriptor SM_hd;
+
+// the point of a halfedge of the seam mesh: uv at its target's halfedge in the mesh
+struct SM_uv {
+  typedef SM_hd key_type;
+  typedef K::Point_2 value_type;
+  typedef K::Point_2 reference;
+  typedef boost::readable_property_map_tag category;
+  const Mesh::Property_map<hd, K::Point_2>* uv;
+  const SM* sm;
+  friend K::Point_2 get(const SM_uv& m, SM_hd h) { return get(*m.uv, hd(target(h, *m.sm))); }
+};
 
 TEST_CASE(archetype_is_enough)
 {
@@ -69,9 +84,7 @@ TEST_CASE(archetype_is_enough)
     m.add_face(inner[i], outer[j], inner[j]);
     m.add_face(c, inner[i], inner[j]);
   }
-  typedef std::unordered_map<ed, bool, boost::hash<ed>> EF; typedef std::unordered_map<vd, bool, boost::hash<vd>> VF;
   EF ef; VF vf; for(auto e : edges(m)) ef[e] = false; for(auto v : vertices(m)) vf[v] = false;
-  typedef CGAL::Seam_mesh<Mesh, boost::associative_property_map<EF>, boost::associative_property_map<VF>> SM;
   SM sm(m, boost::associative_property_map<EF>(ef), boost::associative_property_map<VF>(vf));
   boost::graph_traits<SM>::halfedge_descriptor bhd;
   for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
@@ -82,6 +95,16 @@ TEST_CASE(archetype_is_enough)
   HOT::Error_code ec = p.parameterize(sm, bhd, lm, uv, &st);
   CHECK_MSG(ec == HOT::OK, HOT::error_message(ec) << " " << st.message);
   CHECK_MSG(st.certificate.is_bijective(), st.certificate);
+  // the point locator with the archetype traits: the centroid of every face is found
+  HOT::Orbifold_tile<Arch> tile;
+  CHECK(HOT::make_orbifold_tile(HOT::Disk_type, int(lm.size()), tile) == HOT::OK);
+  const HOT::Embedding_locator<SM, SM_uv, Arch> locator(sm, SM_uv{&uv, &sm}, tile);
+  CHECK_MSG(locator.is_valid(), locator.message());
+  CHECK(locator.number_of_inverted_faces() == 0);
+  for(std::size_t i = 0; i < locator.number_of_faces(); ++i) {
+    const auto loc = locator.locate(locator.disk_point(i, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}));
+    CHECK(loc.success && loc.face_index == i);
+  }
 }
 
 HOT_TEST_MAIN

@@ -144,7 +144,7 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
                          const HOT::Orbifold_tile<>& tile, const std::vector<SM_vertex>& landmarks,
                          const std::string& title)
 {
-  typedef HOT::internal::Complex<double> C;
+  typedef std::complex<double> C;
   hot_tools::Poincare_svg svg;
   svg.begin(os, title);
   const int n = tile.number_of_corners();

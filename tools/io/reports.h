@@ -75,7 +75,7 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
      << (st.converged_at_rounding_floor ? "true" : "false") << ",\n  \"polishing_iterations\": " << st.polishing_iterations
      << ",\n  \"repaired_vertices\": " << st.repaired_vertices << ",\n"
      << "  \"recentred\": " << (st.recentred ? "true" : "false") << ",\n  \"frame\": {\"a\": ["
-     << st.frame.a().re << ", " << st.frame.a().im << "], \"b\": [" << st.frame.b().re << ", " << st.frame.b().im
+     << st.frame.a().real() << ", " << st.frame.a().imag() << "], \"b\": [" << st.frame.b().real() << ", " << st.frame.b().imag()
      << "]},\n"
      << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
      << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk

@@ -8,7 +8,7 @@
 // The command-line tool's SVG pictures of the Poincare disk: tiles and their images.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 
 #include <cmath>
 #include <cstdio>
@@ -24,7 +24,6 @@
 namespace hot_tools {
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
-using HOT::internal::Complex;
 
 // Writes pictures of the Poincare disk as SVG: geodesic segments are circular arcs
 // (SVG "A" commands), so the files stay small and exact at any zoom.
@@ -60,7 +59,7 @@ public:
   }
 
   // path data of the geodesic polygon through the points (closed when `closed`)
-  std::string geodesic_path(const std::vector<Complex<double> >& pts, bool closed) const
+  std::string geodesic_path(const std::vector<std::complex<double> >& pts, bool closed) const
   {
     std::ostringstream os;
     os.precision(7);
@@ -96,39 +95,39 @@ public:
       os << " opacity=\"" << opacity << "\"";
     os << "/>\n";
   }
-  void dot(std::ostream& os, const Complex<double>& z, double r, const std::string& fill) const
+  void dot(std::ostream& os, const std::complex<double>& z, double r, const std::string& fill) const
   {
     os << "<circle cx=\"" << X(z) << "\" cy=\"" << Y(z) << "\" r=\"" << r << "\" fill=\"" << fill
        << "\" stroke=\"black\" stroke-width=\"1\"/>\n";
   }
-  void label(std::ostream& os, const Complex<double>& z, const std::string& text, double font = 13) const
+  void label(std::ostream& os, const std::complex<double>& z, const std::string& text, double font = 13) const
   {
     os << "<text x=\"" << X(z) << "\" y=\"" << Y(z) << "\" font-family=\"sans-serif\" font-size=\"" << font
        << "\" text-anchor=\"middle\" dominant-baseline=\"central\">" << text << "</text>\n";
   }
 
-  double X(const Complex<double>& z) const { return size_ / 2 + scale_ * z.re; }
-  double Y(const Complex<double>& z) const { return size_ / 2 - scale_ * z.im; }
+  double X(const std::complex<double>& z) const { return size_ / 2 + scale_ * z.real(); }
+  double Y(const std::complex<double>& z) const { return size_ / 2 - scale_ * z.imag(); }
 
 private:
   // SVG arc from a to b along their geodesic (a circle orthogonal to the unit circle,
   // or a diameter). The part of such a circle inside the disk is less than a half circle,
   // so the small-arc flag is always right; the sweep follows the turn a -> midpoint -> b.
-  std::string arc_to(const Complex<double>& a, const Complex<double>& b) const
+  std::string arc_to(const std::complex<double>& a, const std::complex<double>& b) const
   {
     std::ostringstream os;
     os.precision(7);
-    const double cross0 = a.re * b.im - a.im * b.re;
-    const double len = std::hypot(b.re - a.re, b.im - a.im);
+    const double cross0 = a.real() * b.imag() - a.imag() * b.real();
+    const double len = std::hypot(b.real() - a.real(), b.imag() - a.imag());
     if(len < 1e-12 || std::abs(cross0) < 1e-12 * (len + 1e-300)) {
       os << "L" << X(b) << "," << Y(b);
       return os.str();
     }
     // circle orthogonal to the unit circle through a and b: center c with
     // 2 <a, c> = 1 + |a|^2 and 2 <b, c> = 1 + |b|^2
-    const double ra = (1 + norm(a)) / 2, rb = (1 + norm(b)) / 2;
-    const double cx = (ra * b.im - rb * a.im) / cross0, cy = (a.re * rb - b.re * ra) / cross0;
-    const double r = std::hypot(a.re - cx, a.im - cy);
+    const double ra = (1 + HOT::internal::squared_modulus(a)) / 2, rb = (1 + HOT::internal::squared_modulus(b)) / 2;
+    const double cx = (ra * b.imag() - rb * a.imag()) / cross0, cy = (a.real() * rb - b.real() * ra) / cross0;
+    const double r = std::hypot(a.real() - cx, a.imag() - cy);
     if(r * scale_ > 1e6) { // practically straight
       os << "L" << X(b) << "," << Y(b);
       return os.str();
@@ -138,7 +137,7 @@ private:
     // sweep flag 1 means increasing angle in screen coordinates: counterclockwise in the
     // model is then sweep 0 (checked by looking at the right-angled pentagon, whose sides
     // bow towards the origin).
-    const double turn = (a.re - cx) * (b.im - cy) - (a.im - cy) * (b.re - cx);
+    const double turn = (a.real() - cx) * (b.imag() - cy) - (a.imag() - cy) * (b.real() - cx);
     const int sweep = turn > 0 ? 0 : 1;
     os << "A" << r * scale_ << "," << r * scale_ << " 0 0 " << sweep << " " << X(b) << "," << Y(b);
     return os.str();
@@ -151,7 +150,7 @@ private:
 template <class Tile>
 void write_tile_svg(std::ostream& os, const Tile& tile, int depth, const std::string& title)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   Poincare_svg svg;
   svg.begin(os, title);
   const int n = tile.number_of_corners();
@@ -188,7 +187,7 @@ void write_tile_svg(std::ostream& os, const Tile& tile, int depth, const std::st
   for(int i = 0; i < n; ++i) {
     const int c = tile.corner_cone(i);
     svg.dot(os, corners[i], 7, Poincare_svg::palette(c, tile.number_of_cones(), 0.75, 1.0));
-    const double r = std::sqrt(norm(corners[i]));
+    const double r = std::sqrt(HOT::internal::squared_modulus(corners[i]));
     const C out = (r > 1e-9) ? corners[i] * ((r + 0.045) / r) : C(0.0, 0.045);
     svg.label(os, out, std::to_string(c + 1));
   }

@@ -12,7 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/klein_model.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/lifted_triangulation.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_build.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_search.h>
@@ -43,7 +43,7 @@
 //     the new triangle's third corner is computed as h(uv); the two corners of the
 //     crossed edge are reused bit for bit, so consecutive triangles share their edge
 //     exactly and no sliver opens between copies. All side tests use the exact
-//     predicate Poincare_disk_traits_2<>::Hyperbolic_orientation_2 on these doubles; a
+//     predicate Traits::Hyperbolic_orientation_2 on these doubles; a
 //     vertex on the line (p, q) counts as left of it (a symbolic perturbation of the
 //     line), so the walk is the straight walk of a segment that meets no vertex.
 //     Termination: every new triangle is checked to be positively oriented, so the exit
@@ -94,10 +94,12 @@ Built once in linear time; `locate()` is then thread-safe (const, no shared stat
 \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and a point type
         with `x()` and `y()` as value type
+\tparam Traits a model of `HyperbolicOrbifoldTraits_2`, the traits of the tile;
+        `Poincare_disk_traits_2<>` by default
 
 \sa `map_vertices()`, `surface_point()`, `Orbifold_collection`
 */
-template <class TriangleMesh, class HalfedgeUVMap>
+template <class TriangleMesh, class HalfedgeUVMap, class Traits_ = Poincare_disk_traits_2<> >
 class Embedding_locator
 {
 public:
@@ -107,14 +109,14 @@ public:
   typedef typename GT::vertex_descriptor vertex_descriptor;         ///< vertex of the mesh
   typedef typename GT::halfedge_descriptor halfedge_descriptor;     ///< halfedge of the mesh
   typedef typename GT::face_descriptor face_descriptor;             ///< face of the mesh
-  typedef Poincare_disk_traits_2<> Traits;                          ///< traits of the tile
-  typedef Traits::Point_2 Point_2;                                  ///< point of the Poincar&eacute; disk
+  typedef Traits_ Traits;                                           ///< traits of the tile
+  typedef typename Traits::Point_2 Point_2;                         ///< point of the Poincar&eacute; disk
   typedef Orbifold_tile<Traits> Tile;                               ///< the orbifold's tile
   typedef Hyperbolic_isometry_2<double> Isometry;                   ///< element of the orbifold group
   /// @}
 
 #ifndef DOXYGEN_RUNNING
-  typedef internal::Complex<double> C;
+  typedef std::complex<double> C;
 #endif
 
   /// the face index of a location that was not found
@@ -181,7 +183,7 @@ public:
   /// index (in `vertices(B)` order) of corner `j` of face `i`
   std::size_t corner_vertex_index(std::size_t i, int j) const { return static_cast<std::size_t>(lt_.faces[i].v[j]); }
   /// the stored Poincar&eacute; point of corner `j` of face `i`
-  Point_2 corner_point(std::size_t i, int j) const { return Point_2(lt_.faces[i].z[j].re, lt_.faces[i].z[j].im); }
+  Point_2 corner_point(std::size_t i, int j) const { return Point_2(lt_.faces[i].z[j].real(), lt_.faces[i].z[j].imag()); }
   /// edges whose two sides carry different corner points (sphere type)
   std::size_t number_of_cut_edges() const { return lt_.n_cut_edges; }
   /// mesh border edges (disk type), glued to themselves by the reflection in a tile side
@@ -196,7 +198,7 @@ public:
     const internal::Lifted_face& F = lt_.faces[i];
     for(int j = 0; j < 3; ++j)
       if(b[(j + 1) % 3] == 0.0 && b[(j + 2) % 3] == 0.0)
-        return Point_2(F.z[j].re, F.z[j].im); // a corner: its own point, bitwise
+        return Point_2(F.z[j].real(), F.z[j].imag()); // a corner: its own point, bitwise
     C k;
     double s = 0;
     for(int j = 0; j < 3; ++j) {
@@ -206,7 +208,7 @@ public:
       s += mu;
     }
     const C z = internal::klein_to_poincare(k / s);
-    return Point_2(z.re, z.im);
+    return Point_2(z.real(), z.imag());
   }
   /// the Poincar&eacute; point of a location
   Point_2 disk_point(const Location& l) const { return disk_point(l.face_index, l.barycentric); }
@@ -218,12 +220,12 @@ public:
     if(!lt_.valid || lt_.faces.empty())
       return loc;
     const C z0(CGAL::to_double(z.x()), CGAL::to_double(z.y()));
-    if(!(norm(z0) < 1.0) || !std::isfinite(z0.re) || !std::isfinite(z0.im))
+    if(!(internal::squared_modulus(z0) < 1.0) || !std::isfinite(z0.real()) || !std::isfinite(z0.imag()))
       return loc;
     // a corner's point, bitwise (before reduction: a vertex of B outside the tile is found too)
     if(lt_.corner_hit(z0, Isometry(), loc))
       return with_face(loc);
-    const typename Tile::Reduction r = lt_.tile.reduce_to_tile(Point_2(z0.re, z0.im));
+    const typename Tile::Reduction r = lt_.tile.reduce_to_tile(Point_2(z0.real(), z0.imag()));
     const C q(CGAL::to_double(r.point.x()), CGAL::to_double(r.point.y()));
     if(lt_.corner_hit(q, r.element, loc))
       return with_face(loc);
@@ -276,7 +278,7 @@ private:
     return loc;
   }
 
-  internal::Lifted_triangulation lt_;
+  internal::Lifted_triangulation<Traits> lt_;
   std::vector<face_descriptor> faces_;
   std::vector<vertex_descriptor> vertices_;
 };

@@ -7,7 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
@@ -27,8 +27,7 @@ anti-M&ouml;bius map \f$ z \mapsto \frac{a \bar z + b}{\bar b \bar z + \bar a} \
 (orientation reversing), with \f$ |a|^2 - |b|^2 = 1 \f$.
 The pair \f$(a,b)\f$ is defined up to a common sign.
 
-\tparam FT a floating-point field type with `sqrt`, `cos`, `sin`, `atan2` and
-`hypot` found by argument-dependent lookup or in `std` (`double` by default).
+\tparam FT `float`, `double` (the default) or `long double`: the number types of `std::complex`.
 Images of points are constructions: they are rounded.
 */
 template <class FT_ = double>
@@ -37,8 +36,8 @@ class Hyperbolic_isometry_2
 public:
   /// the number type
   typedef FT_ FT;
-  /// complex numbers over `FT`, with public members `re` and `im`
-  typedef internal::Complex<FT> Complex;
+  /// complex numbers over `FT`: `std::complex<FT>` (`FT` is `float`, `double` or `long double`)
+  typedef std::complex<FT> Complex;
 
 private:
   Complex a_, b_;
@@ -54,7 +53,7 @@ private:
   void normalize()
   {
     using std::sqrt;
-    const FT d = internal::norm(a_) - internal::norm(b_);
+    const FT d = internal::squared_modulus(a_) - internal::squared_modulus(b_);
     if(d > FT(0) && d != FT(1)) {
       const FT s = sqrt(d);
       a_ = a_ / s;
@@ -80,7 +79,7 @@ public:
   /// the same map over another number type (coefficients converted, not renormalized)
   template <class FT2>
   explicit Hyperbolic_isometry_2(const Hyperbolic_isometry_2<FT2>& other)
-    : a_(FT(other.a().re), FT(other.a().im)), b_(FT(other.b().re), FT(other.b().im)),
+    : a_(FT(other.a().real()), FT(other.a().imag())), b_(FT(other.b().real()), FT(other.b().imag())),
       reversing_(!other.is_orientation_preserving())
   {}
 
@@ -90,7 +89,7 @@ public:
   /// the rotation about the origin by `angle` (counterclockwise, radians)
   static Hyperbolic_isometry_2 rotation(const FT& angle)
   {
-    return Hyperbolic_isometry_2(internal::polar(FT(1), angle / FT(2)), Complex(), false);
+    return Hyperbolic_isometry_2(std::polar(FT(1), angle / FT(2)), Complex(), false);
   }
 
   /// the map \f$ m_p(z) = (z - p)/(1 - \bar p z) \f$, which moves `p` to the origin
@@ -99,7 +98,7 @@ public:
   static Hyperbolic_isometry_2 translation_to_origin(const Complex& p)
   {
     using std::sqrt;
-    const FT s = sqrt(FT(1) - internal::norm(p));
+    const FT s = sqrt(FT(1) - internal::squared_modulus(p));
     return Hyperbolic_isometry_2(Complex(FT(1) / s), -p / s, false);
   }
 
@@ -107,7 +106,7 @@ public:
   static Hyperbolic_isometry_2 translation_from_origin(const Complex& p)
   {
     using std::sqrt;
-    const FT s = sqrt(FT(1) - internal::norm(p));
+    const FT s = sqrt(FT(1) - internal::squared_modulus(p));
     return Hyperbolic_isometry_2(Complex(FT(1) / s), p / s, false);
   }
 
@@ -126,7 +125,7 @@ public:
   /// the reflection in the diameter through the origin with direction angle `angle`
   static Hyperbolic_isometry_2 reflection_in_diameter(const FT& angle)
   {
-    return Hyperbolic_isometry_2(internal::polar(FT(1), angle), Complex(), true);
+    return Hyperbolic_isometry_2(std::polar(FT(1), angle), Complex(), true);
   }
 
   /// the reflection in the geodesic through `p` and `q`
@@ -135,7 +134,7 @@ public:
   {
     const Hyperbolic_isometry_2 to0 = translation_to_origin(p);
     const Complex q0 = to0.apply(q);
-    return translation_from_origin(p) * reflection_in_diameter(internal::arg(q0)) * to0;
+    return translation_from_origin(p) * reflection_in_diameter(std::arg(q0)) * to0;
   }
   /// @}
 
@@ -156,8 +155,8 @@ public:
   /// the image of `z`
   Complex apply(const Complex& z) const
   {
-    const Complex w = reversing_ ? internal::conj(z) : z;
-    return (a_ * w + b_) / (internal::conj(b_) * w + internal::conj(a_));
+    const Complex w = reversing_ ? std::conj(z) : z;
+    return internal::divide(a_ * w + b_, std::conj(b_) * w + std::conj(a_));
   }
 
   /// the image of a point given by Cartesian coordinates `(x, y)`
@@ -166,18 +165,18 @@ public:
   {
     const Complex z(FT(CGAL::to_double(p.x())), FT(CGAL::to_double(p.y())));
     const Complex w = apply(z);
-    return Point_2(w.re, w.im);
+    return Point_2(w.real(), w.imag());
   }
 
   /// the composition `f * g` \f$ = f \circ g \f$ (apply `g` first)
   friend Hyperbolic_isometry_2 operator*(const Hyperbolic_isometry_2& f, const Hyperbolic_isometry_2& g)
   {
     // f(g(z)): if f reverses orientation, conj(M_g(u)) = M_{conj g}(conj u).
-    const Complex ga = f.reversing_ ? internal::conj(g.a_) : g.a_;
-    const Complex gb = f.reversing_ ? internal::conj(g.b_) : g.b_;
+    const Complex ga = f.reversing_ ? std::conj(g.a_) : g.a_;
+    const Complex gb = f.reversing_ ? std::conj(g.b_) : g.b_;
     // [a b; conj(b) conj(a)] matrices multiply within the same form.
-    const Complex a = f.a_ * ga + f.b_ * internal::conj(gb);
-    const Complex b = f.a_ * gb + f.b_ * internal::conj(ga);
+    const Complex a = f.a_ * ga + f.b_ * std::conj(gb);
+    const Complex b = f.a_ * gb + f.b_ * std::conj(ga);
     return Hyperbolic_isometry_2(a, b, f.reversing_ != g.reversing_, Raw());
   }
 
@@ -185,17 +184,17 @@ public:
   Hyperbolic_isometry_2 inverse() const
   {
     if(!reversing_)
-      return Hyperbolic_isometry_2(internal::conj(a_), -b_, false, Raw());
-    return Hyperbolic_isometry_2(a_, -internal::conj(b_), true, Raw());
+      return Hyperbolic_isometry_2(std::conj(a_), -b_, false, Raw());
+    return Hyperbolic_isometry_2(a_, -std::conj(b_), true, Raw());
   }
 
   /// the complex derivative at `z` of an orientation-preserving map
   /// (for an anti-M&ouml;bius map: the derivative with respect to \f$ \bar z \f$).
   Complex derivative(const Complex& z) const
   {
-    const Complex w = reversing_ ? internal::conj(z) : z;
-    const Complex d = internal::conj(b_) * w + internal::conj(a_);
-    return Complex(FT(1)) / (d * d);
+    const Complex w = reversing_ ? std::conj(z) : z;
+    const Complex d = std::conj(b_) * w + std::conj(a_);
+    return internal::divide(Complex(FT(1)), d * d);
   }
 
   /// `true` when `*this` and `other` are the same map up to `tolerance` on the normalized coefficients
@@ -204,9 +203,9 @@ public:
     if(reversing_ != other.reversing_)
       return false;
     using std::sqrt;
-    const FT scale = sqrt(internal::norm(a_) + internal::norm(b_));
-    const FT dplus = sqrt(internal::norm(a_ - other.a_) + internal::norm(b_ - other.b_));
-    const FT dminus = sqrt(internal::norm(a_ + other.a_) + internal::norm(b_ + other.b_));
+    const FT scale = sqrt(internal::squared_modulus(a_) + internal::squared_modulus(b_));
+    const FT dplus = sqrt(internal::squared_modulus(a_ - other.a_) + internal::squared_modulus(b_ - other.b_));
+    const FT dminus = sqrt(internal::squared_modulus(a_ + other.a_) + internal::squared_modulus(b_ + other.b_));
     return (dplus < dminus ? dplus : dminus) <= tolerance * scale;
   }
 
@@ -217,8 +216,8 @@ public:
   /// writes the kind of map and its coefficients
   friend std::ostream& operator<<(std::ostream& os, const Hyperbolic_isometry_2& f)
   {
-    return os << (f.reversing_ ? "anti-Mobius" : "Mobius") << " a=(" << f.a_.re << "," << f.a_.im
-              << ") b=(" << f.b_.re << "," << f.b_.im << ")";
+    return os << (f.reversing_ ? "anti-Mobius" : "Mobius") << " a=(" << f.a_.real() << "," << f.a_.imag()
+              << ") b=(" << f.b_.real() << "," << f.b_.imag() << ")";
   }
 };
 

@@ -195,7 +195,7 @@ public:
     if(ec != OK)
       return ec;
     for(std::size_t v = 0; v < job.cut_vertices().size(); ++v)
-      put(uvmap, job.cut_vertices()[v], Point_2(job.uv()[v].re, job.uv()[v].im));
+      put(uvmap, job.cut_vertices()[v], Point_2(job.uv()[v].real(), job.uv()[v].imag()));
     return OK;
   }
 

@@ -245,11 +245,11 @@ public:
     Complex_ld z(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
     Isometry_ld element;
     std::size_t steps = 0;
-    long double radius2 = internal::norm(z);
+    long double radius2 = internal::squared_modulus(z);
     const std::size_t max_steps = 100000; // far more than any point representable in double needs
     for(; steps < max_steps; ++steps) {
       int violated = -1;
-      const Point_2 zp(static_cast<double>(z.re), static_cast<double>(z.im));
+      const Point_2 zp(static_cast<double>(z.real()), static_cast<double>(z.imag()));
       for(int i = 0; i < number_of_sides(); ++i) {
         if(orient(corners_[side_source(i)], corners_[side_target(i)], zp) == NEGATIVE) {
           violated = i;
@@ -259,7 +259,7 @@ public:
       if(violated < 0)
         break;
       const Complex_ld w = side_pairings_ld_[violated].apply(z);
-      const long double w2 = internal::norm(w);
+      const long double w2 = internal::squared_modulus(w);
       if(!(w2 < radius2))
         break; // rounding-level boundary point: keep the closest image
       z = w;
@@ -267,7 +267,7 @@ public:
       element = side_pairings_ld_[violated] * element;
     }
     const Isometry e(element);
-    return Reduction{Point_2(static_cast<double>(z.re), static_cast<double>(z.im)), e, steps};
+    return Reduction{Point_2(static_cast<double>(z.real()), static_cast<double>(z.imag())), e, steps};
   }
 
   /// the group elements that are products of at most `depth` side pairings, without
@@ -289,7 +289,7 @@ public:
           const C img = g.apply(probe);
           bool seen = false;
           for(const C& q : images)
-            if(internal::norm(q - img) < 1e-20) { seen = true; break; }
+            if(internal::squared_modulus(q - img) < 1e-20) { seen = true; break; }
           if(!seen) {
             result.push_back(g);
             images.push_back(img);
@@ -360,9 +360,9 @@ Error_code make_orbifold_tile(Orbifold_type type, int k, Orbifold_tile<Traits>& 
   const double radius = std::sqrt((cosh_l - 1.0) / (cosh_l + 1.0));
   std::vector<C> p(k);
   for(int j = 1; j <= k; ++j)
-    p[j - 1] = internal::polar(radius, 2.0 * CGAL_PI * j / k);
+    p[j - 1] = std::polar(radius, 2.0 * CGAL_PI * j / k);
 
-  auto to_point = [](const C& z) { return Point_2(FT(z.re), FT(z.im)); };
+  auto to_point = [](const C& z) { return Point_2(FT(z.real()), FT(z.imag())); };
 
   if(type == Disk_type) {
     std::vector<Point_2> corners;
@@ -383,13 +383,13 @@ Error_code make_orbifold_tile(Orbifold_type type, int k, Orbifold_tile<Traits>& 
   // Sphere type: move the geodesic midpoint of p_k and p_1 to the origin, p_1 to the positive real axis.
   const Point_2 mid = traits.construct_hyperbolic_midpoint_2_object()(to_point(p[k - 1]), to_point(p[0]));
   const Isometry to0 = Isometry::translation_to_origin(C(CGAL::to_double(mid.x()), CGAL::to_double(mid.y())));
-  const Isometry place = Isometry::rotation(-internal::arg(to0.apply(p[0]))) * to0;
+  const Isometry place = Isometry::rotation(-std::arg(to0.apply(p[0]))) * to0;
   std::vector<C> P(k);
   for(int j = 0; j < k; ++j)
     P[j] = place.apply(p[j]);
   // p_1 and p_k are on the real axis by construction; remove the rounding noise so that
   // the shared side is exactly the real diameter and q_1 = p_1, q_k = p_k exactly.
-  const double x = 0.5 * (P[0].re - P[k - 1].re);
+  const double x = 0.5 * (P[0].real() - P[k - 1].real());
   P[0] = C(x, 0.0);
   P[k - 1] = C(-x, 0.0);
 
@@ -402,7 +402,7 @@ Error_code make_orbifold_tile(Orbifold_type type, int k, Orbifold_tile<Traits>& 
     angles.push_back((j == 0 || j == k - 1) ? CGAL_PI : CGAL_PI / 2);
   }
   for(int j = k - 2; j >= 1; --j) { // q_{k-1} .. q_2
-    corners.push_back(to_point(internal::conj(P[j])));
+    corners.push_back(to_point(std::conj(P[j])));
     cones.push_back(j);
     angles.push_back(CGAL_PI / 2);
   }

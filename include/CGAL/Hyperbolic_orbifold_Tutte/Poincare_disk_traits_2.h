@@ -8,7 +8,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/filtered_predicates.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/enum.h>
@@ -78,9 +78,9 @@ public:
   typedef Hyperbolic_geodesic_2<Kernel> Geodesic_2;
 
 private:
-  typedef internal::Complex<double> C;
+  typedef std::complex<double> C;
   static C to_c(const Point_2& p) { return C(CGAL::to_double(p.x()), CGAL::to_double(p.y())); }
-  static Point_2 to_p(const C& z) { return Point_2(FT(z.re), FT(z.im)); }
+  static Point_2 to_p(const C& z) { return Point_2(FT(z.real()), FT(z.imag())); }
 
 public:
   /// the traits over the kernel `k`
@@ -95,8 +95,7 @@ public:
     /// returns the Klein point of `p`
     Point_2 operator()(const Point_2& p) const
     {
-      const C z = to_c(p);
-      return to_p(z * (2.0 / (1.0 + internal::norm(z))));
+      return to_p(internal::poincare_to_klein(to_c(p)));
     }
   };
 
@@ -106,9 +105,7 @@ public:
     /// returns the Poincar&eacute; point of the Klein point `k`
     Point_2 operator()(const Point_2& k) const
     {
-      const C z = to_c(k);
-      const double s = 1.0 - internal::norm(z);
-      return to_p(z / (1.0 + std::sqrt(s > 0 ? s : 0.0)));
+      return to_p(internal::klein_to_poincare(to_c(k)));
     }
   };
 
@@ -121,8 +118,8 @@ public:
     FT operator()(const Point_2& p, const Point_2& q) const
     {
       const C z = to_c(p), w = to_c(q);
-      const double den = std::sqrt((1.0 - internal::norm(z)) * (1.0 - internal::norm(w)));
-      return FT(2.0 * std::asinh(internal::abs(z - w) / den));
+      const double den = std::sqrt((1.0 - internal::squared_modulus(z)) * (1.0 - internal::squared_modulus(w)));
+      return FT(2.0 * std::asinh(std::abs(z - w) / den));
     }
   };
 
@@ -133,8 +130,8 @@ public:
     FT operator()(const Point_2& u, const Point_2& v) const
     {
       const C a = to_c(u), b = to_c(v);
-      const double c = (1.0 - (a.re * b.re + a.im * b.im)) /
-                       std::sqrt((1.0 - internal::norm(a)) * (1.0 - internal::norm(b)));
+      const double c = (1.0 - (a.real() * b.real() + a.imag() * b.imag())) /
+                       std::sqrt((1.0 - internal::squared_modulus(a)) * (1.0 - internal::squared_modulus(b)));
       return FT(std::acosh(c < 1.0 ? 1.0 : c));
     }
   };
@@ -162,7 +159,7 @@ public:
       // Move p to the origin: the geodesic becomes the diameter towards m_p(q).
       const Isometry to0 = Isometry::translation_to_origin(to_c(p));
       const C d0 = to0.apply(to_c(q));
-      const C u = d0 / internal::abs(d0);
+      const C u = d0 / std::abs(d0);
       const Isometry back = to0.inverse();
       const C e1 = back.apply(-u), e2 = back.apply(u);
       Geodesic_2 g;
@@ -170,7 +167,7 @@ public:
       g.target = to_p(e2);
       // The circle through e1, e2 orthogonal to the unit circle has its center at
       // (e1 + e2) / (1 + Re(e1 conj(e2))) and radius |e1 - center|.
-      const double c = 1.0 + (e1.re * e2.re + e1.im * e2.im);
+      const double c = 1.0 + (e1.real() * e2.real() + e1.imag() * e2.imag());
       // The geodesic is a diameter iff the origin lies on it: exact test on the inputs.
       g.is_diameter = internal::poincare_orientation_sign_exact<FT>(FT(0), FT(0), p.x(), p.y(), q.x(), q.y()) == ZERO ||
                       c < 1e-15;
@@ -180,7 +177,7 @@ public:
       } else {
         const C center = (e1 + e2) / c;
         g.center = to_p(center);
-        g.radius = FT(internal::abs(e1 - center));
+        g.radius = FT(std::abs(e1 - center));
       }
       return g;
     }
@@ -195,7 +192,7 @@ public:
       const Isometry to0 = Isometry::translation_to_origin(to_c(p));
       const C d0 = to0.apply(to_c(q));
       // |d0| = tanh(d/2); the midpoint is at Euclidean radius tanh(d/4) = |d0| / (1 + sqrt(1 - |d0|^2)).
-      const C m0 = d0 / (1.0 + std::sqrt(1.0 - internal::norm(d0)));
+      const C m0 = d0 / (1.0 + std::sqrt(1.0 - internal::squared_modulus(d0)));
       return to_p(to0.inverse().apply(m0));
     }
   };
@@ -210,8 +207,8 @@ public:
       // straight rays, so the angle is the angle between m_p(q) and m_p(r).
       const Isometry to0 = Isometry::translation_to_origin(to_c(p));
       const C a = to0.apply(to_c(q)), b = to0.apply(to_c(r));
-      const double cross = a.re * b.im - a.im * b.re;
-      const double dot = a.re * b.re + a.im * b.im;
+      const double cross = a.real() * b.imag() - a.imag() * b.real();
+      const double dot = a.real() * b.real() + a.imag() * b.imag();
       return FT(std::atan2(std::abs(cross), dot));
     }
   };

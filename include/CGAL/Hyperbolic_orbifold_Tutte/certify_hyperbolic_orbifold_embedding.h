@@ -133,7 +133,7 @@ Error_code certify_hyperbolic_orbifold_embedding(
     if(k != hindex.npos && index_of[k] < 0)
       index_of[k] = i;
   }
-  std::vector<internal::Complex<double> > uv(P.n, internal::Complex<double>(2.0, 0.0));
+  std::vector<std::complex<double> > uv(P.n, std::complex<double>(2.0, 0.0));
   for(face_descriptor f : faces(tm))
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
       const auto vd = target(typename boost::graph_traits<Mesh>::halfedge_descriptor(h, false), mesh);
@@ -141,7 +141,7 @@ Error_code certify_hyperbolic_orbifold_embedding(
       if(k == hindex.npos || index_of[k] < 0)
         return fail(ERROR_CUT_FAILED, "a corner could not be matched to a vertex of the cut mesh");
       const Point_2 p = get(uvmap, h);
-      uv[index_of[k]] = internal::Complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      uv[index_of[k]] = std::complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
     }
   certificate = internal::certify_flat(P, tile, uv);
   return OK;

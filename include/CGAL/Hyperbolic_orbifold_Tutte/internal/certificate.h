@@ -26,10 +26,10 @@ namespace internal {
 // double precision (which reaches 1e-4 on nearly flat triangles) and far below the
 // smallest wrong value. Twins, cones and border points are measured with `tolerance`.
 template <class Tile>
-Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, const std::vector<Complex<double> >& uv,
+Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
                                    double tolerance = 1e-6)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef typename Tile::Traits Traits;
   typedef typename Traits::Point_2 Point_2;
   Embedding_certificate cert;
@@ -40,11 +40,11 @@ Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, cons
   cert.expected_area = tile.area();
 
   for(int v = 0; v < P.n; ++v)
-    if(!(norm(uv[v]) < 1.0) || !std::isfinite(uv[v].re) || !std::isfinite(uv[v].im))
+    if(!(squared_modulus(uv[v]) < 1.0) || !std::isfinite(uv[v].real()) || !std::isfinite(uv[v].imag()))
       ++cert.points_outside_disk;
 
   std::vector<double> angle_sum(P.n_base, 0.0);
-  auto pt = [&](int v) { return Point_2(uv[v].re, uv[v].im); };
+  auto pt = [&](int v) { return Point_2(uv[v].real(), uv[v].imag()); };
   if(cert.points_outside_disk == 0) {
     for(const auto& t : P.faces) {
       const Point_2 a = pt(t[0]), b = pt(t[1]), c = pt(t[2]);
@@ -85,7 +85,7 @@ Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, cons
     cert.area_error = std::abs(cert.total_area - cert.expected_area);
     // seam twins and cones
     auto hdist = [&](const C& p, const C& q) {
-      return CGAL::to_double(tr.compute_hyperbolic_distance_2_object()(Point_2(p.re, p.im), Point_2(q.re, q.im)));
+      return CGAL::to_double(tr.compute_hyperbolic_distance_2_object()(Point_2(p.real(), p.imag()), Point_2(q.real(), q.imag())));
     };
     for(int v = 0; v < P.n; ++v) {
       if(P.kind[v] == Transformed) {

@@ -24,7 +24,7 @@ namespace internal {
 
 // the certificate of the coordinates xq (written to uvq)
 template <class Tile>
-void certify(const Flat_problem& Q, const Tile& T, const std::vector<double>& xq, std::vector<Complex<double> >& uvq,
+void certify(const Flat_problem& Q, const Tile& T, const std::vector<double>& xq, std::vector<std::complex<double> >& uvq,
              Embedding_statistics& st)
 {
   for(int v = 0; v < Q.n; ++v)
@@ -42,15 +42,15 @@ inline bool flipped_only(const Embedding_statistics& st)
 // the paper's one-ring repair for vertices left outside the hull of their neighbours,
 // then (at the resolution of double) a valid position a few ulps away
 template <class Tile>
-void repair(const Flat_problem& Q, const Tile& T, std::vector<double>& xq, std::vector<Complex<double> >& uvq,
+void repair(const Flat_problem& Q, const Tile& T, std::vector<double>& xq, std::vector<std::complex<double> >& uvq,
             Embedding_statistics& st)
 {
   if(!flipped_only(st))
     return;
-  st.repaired_vertices += repair_one_rings(Q, xq);
+  st.repaired_vertices += repair_one_rings(Q, xq, T.traits());
   certify(Q, T, xq, uvq, st);
   if(flipped_only(st)) {
-    st.repaired_vertices += snap_one_rings(Q, xq);
+    st.repaired_vertices += snap_one_rings(Q, xq, T.traits());
     certify(Q, T, xq, uvq, st);
   }
 }

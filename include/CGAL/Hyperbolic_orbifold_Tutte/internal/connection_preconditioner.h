@@ -185,12 +185,11 @@ public:
     for(int i = 0; i < n_nodes_; ++i) {
       const int v = owner_[i];
       if(P_.kind[v] == Free) {
-        const double r2 = x[P_.var[v]] * x[P_.var[v]] + x[P_.var[v] + 1] * x[P_.var[v] + 1];
-        scale_[i] = Cd(2.0 / (1.0 - r2), 0.0);
+        scale_[i] = Cd(conformal_factor(std::complex<double>(x[P_.var[v]], x[P_.var[v] + 1])), 0.0);
       } else {
         position_jet(P_, x, v, j);
-        const double lambda = 2.0 / (1.0 - norm(j.z));
-        scale_[i] = Cd(lambda * j.dz[0].re, lambda * j.dz[0].im);
+        const double lambda = conformal_factor(j.z);
+        scale_[i] = Cd(lambda * j.dz[0].real(), lambda * j.dz[0].imag());
       }
     }
     set_gauge(x);
@@ -321,8 +320,8 @@ private:
       return Cd(1.0, 0.0);
     Position_jet j;
     position_jet(P_, x, v, j);
-    const double m = abs(j.dz[0]);
-    return Cd(j.dz[0].re / m, j.dz[0].im / m);
+    const double m = std::abs(j.dz[0]);
+    return Cd(j.dz[0].real() / m, j.dz[0].imag() / m);
   }
 
   const Flat_problem& P_;

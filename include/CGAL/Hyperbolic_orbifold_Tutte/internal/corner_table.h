@@ -7,7 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 
 #include <boost/functional/hash.hpp>
 
@@ -43,10 +43,10 @@ struct Point_key_hash
 };
 
 // the bits of z (-0.0 taken as +0.0)
-inline Point_key point_key(const Complex<double>& z)
+inline Point_key point_key(const std::complex<double>& z)
 {
   Point_key k;
-  const double x = z.re + 0.0, y = z.im + 0.0; // -0.0 -> +0.0
+  const double x = z.real() + 0.0, y = z.imag() + 0.0; // -0.0 -> +0.0
   std::memcpy(&k.a, &x, sizeof(double));
   std::memcpy(&k.b, &y, sizeof(double));
   return k;

@@ -38,7 +38,7 @@ namespace internal {
 class Energy_evaluator
 {
 public:
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   explicit Energy_evaluator(const Flat_problem& P) : P_(P) { build_pattern(); }
 
   // The Hessian's sparsity pattern (every entry any edge can touch, symmetric, compressed
@@ -54,12 +54,12 @@ public:
     edge_energy_.resize(m);
     for_each_edge([&](std::size_t e) {
       const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
-      const double A = 1 - norm(a), B = 1 - norm(b);
+      const double A = 1 - squared_modulus(a), B = 1 - squared_modulus(b);
       if(!(A > 0 && B > 0)) {
         edge_energy_[e] = std::numeric_limits<double>::infinity();
         return;
       }
-      const double dx = a.re - b.re, dy = a.im - b.im;
+      const double dx = a.real() - b.real(), dy = a.imag() - b.imag();
       const double d = 2.0 * std::asinh(std::sqrt((dx * dx + dy * dy) / (A * B)));
       edge_energy_[e] = 0.5 * P_.edge_weight[e] * d * d;
     });
@@ -77,7 +77,7 @@ public:
           return false;
       } else if(P_.kind[v] == On_line) {
         const C k = P_.line_k0[v] + x[P_.var[v]] * P_.line_D[v];
-        if(!(norm(k) < 1.0))
+        if(!(squared_modulus(k) < 1.0))
           return false;
       }
     }
@@ -120,7 +120,7 @@ public:
         sa += (g_abs_[i] * g_abs_[i] + g_abs_[i + 1] * g_abs_[i + 1]) * r * r;
       } else if(P_.kind[v] == On_line) {
         position_jet(P_, x, v, j);
-        const double speed = abs(j.dz[0]) * 2 / (1 - norm(j.z));
+        const double speed = std::abs(j.dz[0]) * 2 / (1 - squared_modulus(j.z));
         const double gt = g[P_.var[v]] / speed, ga = g_abs_[P_.var[v]] / speed;
         s += gt * gt;
         sa += ga * ga;
@@ -188,9 +188,9 @@ private:
     int gi[4];
     for(std::size_t e = 0; e < P_.edges.size(); ++e) {
       const C a = position(P_, x, P_.edges[e][0]), b = position(P_, x, P_.edges[e][1]);
-      const double ra = (1 - norm(a)) / 2, rb = (1 - norm(b)) / 2;
+      const double ra = (1 - squared_modulus(a)) / 2, rb = (1 - squared_modulus(b)) / 2;
       const double d = std::sqrt(2 * edge_energy_[e] / P_.edge_weight[e]);
-      const double err = 8 * u * (abs(a) / ra + abs(b) / rb);
+      const double err = 8 * u * (std::abs(a) / ra + std::abs(b) / rb);
       const double rel = d > err ? err / d : 1.0;
       const int n = local_variables(e, gi);
       for(int i = 0; i < n; ++i)
@@ -290,10 +290,10 @@ private:
     double J[4][2];
     int off[4];
     for(int i = 0; i < ja.dim; ++i) {
-      J[i][0] = ja.dz[i].re; J[i][1] = ja.dz[i].im; off[i] = 0;
+      J[i][0] = ja.dz[i].real(); J[i][1] = ja.dz[i].imag(); off[i] = 0;
     }
     for(int i = 0; i < jb.dim; ++i) {
-      J[ja.dim + i][0] = jb.dz[i].re; J[ja.dim + i][1] = jb.dz[i].im; off[ja.dim + i] = 2;
+      J[ja.dim + i][0] = jb.dz[i].real(); J[ja.dim + i][1] = jb.dz[i].imag(); off[ja.dim + i] = 2;
     }
     for(int i = 0; i < n; ++i)
       edge_gradient_[4 * e + i] = hw * (sd.g[off[i]] * J[i][0] + sd.g[off[i] + 1] * J[i][1]);
@@ -310,7 +310,7 @@ private:
         if(off[i] == off[j]) {
           const Position_jet& jj = (off[i] == 0) ? ja : jb;
           const int ii = (off[i] == 0) ? i : i - ja.dim, kk = (off[j] == 0) ? j : j - ja.dim;
-          h += sd.g[off[i]] * jj.ddz[ii][kk].re + sd.g[off[i] + 1] * jj.ddz[ii][kk].im;
+          h += sd.g[off[i]] * jj.ddz[ii][kk].real() + sd.g[off[i] + 1] * jj.ddz[ii][kk].imag();
         }
         M(i, j) = M(j, i) = hw * h;
       }

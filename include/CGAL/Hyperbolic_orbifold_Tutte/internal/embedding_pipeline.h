@@ -57,7 +57,7 @@ public:
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor TM_vertex_descriptor;
   typedef typename boost::graph_traits<Triangle_mesh>::edge_descriptor TM_edge_descriptor;
   typedef Embedding_settings<TM_edge_descriptor> Settings;
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
 
   Seam_mesh_embedding(const SeamMesh& mesh, halfedge_descriptor bhd, const std::vector<TM_vertex_descriptor>& landmarks,
                       const Tile& tile, const Settings& settings, Embedding_statistics& st)
@@ -160,7 +160,7 @@ private:
       t3 += dt;
       certify(P_, tile_, x_, uv_, st_);
     }
-    tiny_ = unresolved_faces(P_, uv_, false);
+    tiny_ = unresolved_faces(P_, uv_, tile_.traits(), false);
     // (triangles below what double resolves have unreliable angles too: angle-sum failures)
     const Embedding_certificate& c = st_.certificate;
     const bool local_failure = !c.is_bijective() && c.points_outside_disk == 0 && c.twin_failures == 0 &&

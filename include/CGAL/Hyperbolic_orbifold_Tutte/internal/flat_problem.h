@@ -8,6 +8,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/hyperbolic_energy.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
 
@@ -27,7 +28,7 @@ namespace internal {
 // tied to its twin by a side pairing, or a disk-boundary vertex sliding on a side.
 struct Flat_problem
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
 
   Orbifold_type type = Sphere_type;
@@ -56,7 +57,7 @@ struct Flat_problem
 // Position of vertex v (and derivatives) for the variable vector x.
 inline void position_jet(const Flat_problem& P, const std::vector<double>& x, int v, Position_jet& jet)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   switch(P.kind[v]) {
     case Fixed:
       jet.z = P.fixed[v];
@@ -80,17 +81,15 @@ inline void position_jet(const Flat_problem& P, const std::vector<double>& x, in
   }
 }
 
-inline Complex<double> position(const Flat_problem& P, const std::vector<double>& x, int v)
+inline std::complex<double> position(const Flat_problem& P, const std::vector<double>& x, int v)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   switch(P.kind[v]) {
     case Fixed: return P.fixed[v];
     case Free: return C(x[P.var[v]], x[P.var[v] + 1]);
     case Transformed: return P.transform[v].apply(C(x[P.var[P.twin[v]]], x[P.var[P.twin[v]] + 1]));
     case On_line: {
-      const C k = P.line_k0[v] + x[P.var[v]] * P.line_D[v];
-      const double s = 1.0 - norm(k);
-      return k / (1.0 + std::sqrt(s > 0 ? s : 0.0));
+      return klein_to_poincare(P.line_k0[v] + x[P.var[v]] * P.line_D[v]);
     }
   }
   return C();
@@ -313,7 +312,7 @@ template <class Tile>
 void place_corners_and_sides(const Tile& tile, const std::vector<int>& loop,
                              const std::vector<int>& loop_cone_pos, Flat_problem& P)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   P.side.assign(P.n, -1);
   P.corner.assign(P.n, -1);
   P.border_param.assign(P.n, 0.0);
@@ -343,7 +342,7 @@ template <class Tile>
 Error_code constrain_border_vertices(const Tile& tile, const std::vector<int>& loop, Flat_problem& P,
                                      std::string& message)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   const int k = P.k;
   if(tile.type() == Sphere_type) {
     std::vector<int> p_copy(P.n_base, -1);

@@ -6,7 +6,7 @@
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_HYPERBOLIC_ENERGY_H
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 
 #include <cmath>
 
@@ -15,7 +15,7 @@ namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
 // Squared hyperbolic distance f = d(z, w)^2 of two points of the Poincare disk, with
-// its gradient and Hessian with respect to (z.re, z.im, w.re, w.im).
+// its gradient and Hessian with respect to (z.real(), z.imag(), w.real(), w.imag()).
 //
 // With A = 1 - |z|^2, B = 1 - |w|^2, N = |z - w|^2 and delta = N / (A B):
 //   cosh d = 1 + 2 delta (paper eq. (6)),  d = 2 asinh(sqrt(delta)) (no cancellation),
@@ -33,11 +33,11 @@ struct Squared_distance_derivatives
   double H[4][4];    // Hessian
 };
 
-inline void squared_hyperbolic_distance(const Complex<double>& z, const Complex<double>& w,
+inline void squared_hyperbolic_distance(const std::complex<double>& z, const std::complex<double>& w,
                                         Squared_distance_derivatives& out, bool want_hessian = true)
 {
-  const double A = 1.0 - norm(z), B = 1.0 - norm(w);
-  const double dx = z.re - w.re, dy = z.im - w.im;
+  const double A = 1.0 - squared_modulus(z), B = 1.0 - squared_modulus(w);
+  const double dx = z.real() - w.real(), dy = z.imag() - w.imag();
   const double N = dx * dx + dy * dy;
   const double delta = N / (A * B);
   const double d = 2.0 * std::asinh(std::sqrt(delta));
@@ -57,7 +57,7 @@ inline void squared_hyperbolic_distance(const Complex<double>& z, const Complex<
   }
   const double s = 2.0 / (A * B);
   const double gN[4] = {2 * dx, 2 * dy, -2 * dx, -2 * dy};
-  const double c[4] = {2 * z.re / A, 2 * z.im / A, 2 * w.re / B, 2 * w.im / B};
+  const double c[4] = {2 * z.real() / A, 2 * z.imag() / A, 2 * w.real() / B, 2 * w.imag() / B};
   double gu[4];
   for(int i = 0; i < 4; ++i) {
     gu[i] = s * (gN[i] + N * c[i]);
@@ -68,12 +68,12 @@ inline void squared_hyperbolic_distance(const Complex<double>& z, const Complex<
   // hess N
   static const double HN[4][4] = {{2, 0, -2, 0}, {0, 2, 0, -2}, {-2, 0, 2, 0}, {0, -2, 0, 2}};
   double Gc[4][4] = {{0}};
-  Gc[0][0] = 2 / A + 4 / (A * A) * z.re * z.re;
-  Gc[0][1] = Gc[1][0] = 4 / (A * A) * z.re * z.im;
-  Gc[1][1] = 2 / A + 4 / (A * A) * z.im * z.im;
-  Gc[2][2] = 2 / B + 4 / (B * B) * w.re * w.re;
-  Gc[2][3] = Gc[3][2] = 4 / (B * B) * w.re * w.im;
-  Gc[3][3] = 2 / B + 4 / (B * B) * w.im * w.im;
+  Gc[0][0] = 2 / A + 4 / (A * A) * z.real() * z.real();
+  Gc[0][1] = Gc[1][0] = 4 / (A * A) * z.real() * z.imag();
+  Gc[1][1] = 2 / A + 4 / (A * A) * z.imag() * z.imag();
+  Gc[2][2] = 2 / B + 4 / (B * B) * w.real() * w.real();
+  Gc[2][3] = Gc[3][2] = 4 / (B * B) * w.real() * w.imag();
+  Gc[3][3] = 2 / B + 4 / (B * B) * w.imag() * w.imag();
   for(int i = 0; i < 4; ++i)
     for(int j = i; j < 4; ++j) {
       const double hu = s * (HN[i][j] + c[i] * gN[j] + gN[i] * c[j] + N * c[i] * c[j] + N * Gc[i][j]);
@@ -92,25 +92,25 @@ enum Position_kind { Fixed, Free, Transformed, On_line };
 // first and second derivatives of a position with respect to its variables
 struct Position_jet
 {
-  Complex<double> z;
+  std::complex<double> z;
   int dim;                 // 0, 1 or 2
-  Complex<double> dz[2];   // dz / dx_k
-  Complex<double> ddz[2][2];
+  std::complex<double> dz[2];   // dz / dx_k
+  std::complex<double> ddz[2][2];
 };
 
 // z = m(x), m a Mobius map (orientation preserving): dz/dx = m'(x), dz/dy = i m'(x),
 // second derivatives m'', i m'', -m''.
-inline void transformed_jet(const Hyperbolic_isometry_2<double>& m, const Complex<double>& x, Position_jet& jet)
+inline void transformed_jet(const Hyperbolic_isometry_2<double>& m, const std::complex<double>& x, Position_jet& jet)
 {
-  const Complex<double> den = conj(m.b()) * x + conj(m.a());
-  const Complex<double> num = m.a() * x + m.b();
-  jet.z = num / den;
+  const std::complex<double> den = std::conj(m.b()) * x + std::conj(m.a());
+  const std::complex<double> num = m.a() * x + m.b();
+  jet.z = divide(num, den);
   // (a x + b)/(conj(b) x + conj(a)) has derivative det / den^2 and second derivative
   // -2 conj(b) det / den^3, det = |a|^2 - |b|^2 (1 for a normalized map)
-  const double det = norm(m.a()) - norm(m.b());
-  const Complex<double> d1 = Complex<double>(det) / (den * den);
-  const Complex<double> d2 = Complex<double>(-2.0 * det) * conj(m.b()) / (den * den * den);
-  const Complex<double> I(0.0, 1.0);
+  const double det = squared_modulus(m.a()) - squared_modulus(m.b());
+  const std::complex<double> d1 = divide(std::complex<double>(det), den * den);
+  const std::complex<double> d2 = divide(std::complex<double>(-2.0 * det) * std::conj(m.b()), den * den * den);
+  const std::complex<double> I(0.0, 1.0);
   jet.dim = 2;
   jet.dz[0] = d1;
   jet.dz[1] = I * d1;
@@ -119,14 +119,14 @@ inline void transformed_jet(const Hyperbolic_isometry_2<double>& m, const Comple
   jet.ddz[1][1] = -d2;
 }
 
-// z(t) = k / (1 + sqrt(1 - |k|^2)), k = k0 + t D.
-inline void on_line_jet(const Complex<double>& k0, const Complex<double>& D, double t, Position_jet& jet)
+// z(t) = k / (1 + sqrt(1 - |k|^2)), k = k0 + t D (klein_to_poincare of disk_models.h) and its derivatives in t.
+inline void on_line_jet(const std::complex<double>& k0, const std::complex<double>& D, double t, Position_jet& jet)
 {
-  const Complex<double> k = k0 + t * D;
-  const double r2 = norm(k);
+  const std::complex<double> k = k0 + t * D;
+  const double r2 = squared_modulus(k);
   const double s = std::sqrt(1.0 - r2);
-  const double kD = k.re * D.re + k.im * D.im;
-  const double D2 = norm(D);
+  const double kD = k.real() * D.real() + k.imag() * D.imag();
+  const double D2 = squared_modulus(D);
   const double q = 1.0 + s;
   const double s1 = -kD / s;
   const double s2 = -D2 / s - kD * kD / (s * s * s);

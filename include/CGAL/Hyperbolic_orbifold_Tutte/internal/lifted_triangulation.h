@@ -11,9 +11,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_table.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/klein_model.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/start_grid.h>
 
 #include <algorithm>
@@ -34,7 +34,7 @@ namespace internal {
 
 struct Lifted_face
 {
-  Complex<double> z[3]; // corner points (Poincare)
+  std::complex<double> z[3]; // corner points (Poincare)
   int v[3];             // corner vertex indices
   int nf[3];            // neighbour face across edge j (corner j -> corner j+1)
   int ne[3];            // the edge's index in the neighbour face
@@ -42,13 +42,15 @@ struct Lifted_face
   bool mirror[3];       // border edge glued to itself by a reflection: the neighbour is this face, reflected
 };
 
+// Traits: a model of HyperbolicOrbifoldTraits_2, the traits of the tile
+template <class Traits_>
 struct Lifted_triangulation
 {
-  typedef Poincare_disk_traits_2<> Traits;
-  typedef Traits::Point_2 Point_2;
+  typedef Traits_ Traits;
+  typedef typename Traits::Point_2 Point_2;
   typedef Orbifold_tile<Traits> Tile;
   typedef Hyperbolic_isometry_2<double> Isometry;
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
 
   static constexpr std::size_t no_face = static_cast<std::size_t>(-1);
 
@@ -63,10 +65,11 @@ struct Lifted_triangulation
   Start_grid grid;
   std::size_t n_cut_edges = 0, n_border_edges = 0, n_inverted = 0;
 
-  static int orient(const C& a, const C& b, const C& c)
+  // the orientation of the geodesic triangle (a, b, c), exact (the tile's traits)
+  int orient(const C& a, const C& b, const C& c) const
   {
-    const Traits::Hyperbolic_orientation_2 o;
-    return static_cast<int>(o(Point_2(a.re, a.im), Point_2(b.re, b.im), Point_2(c.re, c.im)));
+    const typename Traits::Hyperbolic_orientation_2 o = tile.traits().hyperbolic_orientation_2_object();
+    return static_cast<int>(o(Point_2(a.real(), a.imag()), Point_2(b.real(), b.imag()), Point_2(c.real(), c.imag())));
   }
 
   // the face edge joining corners a and b (edge j joins corners j and j+1)
@@ -141,8 +144,8 @@ struct Lifted_triangulation
       const C k0 = poincare_to_klein(to_c(tile.corner(tile.side_source(s))));
       const C k1 = poincare_to_klein(to_c(tile.corner(tile.side_target(s))));
       const C d = k1 - k0;
-      const double len = abs(d);
-      auto dist = [&](const C& p) { return std::abs(d.re * (p.im - k0.im) - d.im * (p.re - k0.re)) / len; };
+      const double len = std::abs(d);
+      auto dist = [&](const C& p) { return std::abs(d.real() * (p.imag() - k0.imag()) - d.imag() * (p.real() - k0.real())) / len; };
       const double e = (std::max)(dist(ka), dist(kb));
       if(e < best_err) {
         best_err = e;
@@ -171,10 +174,10 @@ struct Lifted_triangulation
       if(orient(F.z[0], F.z[1], c) > 0 && orient(F.z[1], F.z[2], c) > 0 && orient(F.z[2], F.z[0], c) > 0) {
         good[fi] = 1;
         ++n_good;
-        xmin = (std::min)(xmin, c.re);
-        xmax = (std::max)(xmax, c.re);
-        ymin = (std::min)(ymin, c.im);
-        ymax = (std::max)(ymax, c.im);
+        xmin = (std::min)(xmin, c.real());
+        xmax = (std::max)(xmax, c.real());
+        ymin = (std::min)(ymin, c.imag());
+        ymax = (std::max)(ymax, c.imag());
       }
       for(int j = 0; j < 3; ++j)
         corner_table.insert(point_key(F.z[j]), static_cast<int>(fi), j);

@@ -50,8 +50,8 @@ struct Face_halfedges
 // reads the faces of `tm` (listed in `face_list`, its vertices in `vertex_list`) and their
 // corner points from `uv` into `lt.faces`; false (lt.fail) for a face that is not a triangle
 // or a corner point outside the unit disk
-template <class TriangleMesh, class HalfedgeUVMap>
-bool read_lifted_faces(const TriangleMesh& tm, HalfedgeUVMap uv, Lifted_triangulation& lt, Face_halfedges<TriangleMesh>& fhs,
+template <class TriangleMesh, class HalfedgeUVMap, class Traits>
+bool read_lifted_faces(const TriangleMesh& tm, HalfedgeUVMap uv, Lifted_triangulation<Traits>& lt, Face_halfedges<TriangleMesh>& fhs,
                        std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_list,
                        std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list)
 {
@@ -72,8 +72,8 @@ bool read_lifted_faces(const TriangleMesh& tm, HalfedgeUVMap uv, Lifted_triangul
     fhs.fh.push_back({{h0, h1, h2}});
     Lifted_face F;
     for(int j = 0; j < 3; ++j) {
-      F.z[j] = Lifted_triangulation::to_c(get(uv, fhs.fh.back()[j]));
-      if(!std::isfinite(F.z[j].re) || !std::isfinite(F.z[j].im) || !(norm(F.z[j]) < 1.0))
+      F.z[j] = Lifted_triangulation<Traits>::to_c(get(uv, fhs.fh.back()[j]));
+      if(!std::isfinite(F.z[j].real()) || !std::isfinite(F.z[j].imag()) || !(squared_modulus(F.z[j]) < 1.0))
         return lt.fail("a corner point is not inside the unit disk");
       F.v[j] = static_cast<int>(vindex(target(fhs.fh.back()[j], tm)));
       F.nf[j] = -1;
@@ -90,11 +90,11 @@ bool read_lifted_faces(const TriangleMesh& tm, HalfedgeUVMap uv, Lifted_triangul
 // the neighbour across every edge of the faces read by read_lifted_faces() and the group
 // element that maps the neighbour's copy next to the face; false (lt.fail) if an edge's two
 // sides are not related by the orbifold group
-template <class TriangleMesh>
-bool link_lifted_faces(const TriangleMesh& tm, const Face_halfedges<TriangleMesh>& fhs, Lifted_triangulation& lt)
+template <class TriangleMesh, class Traits>
+bool link_lifted_faces(const TriangleMesh& tm, const Face_halfedges<TriangleMesh>& fhs, Lifted_triangulation<Traits>& lt)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   for(std::size_t fi = 0; fi < lt.faces.size(); ++fi) {
     Lifted_face& F = lt.faces[fi];
     for(int j = 0; j < 3; ++j) {

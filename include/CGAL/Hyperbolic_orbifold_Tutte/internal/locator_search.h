@@ -27,11 +27,11 @@ namespace internal {
 
 // Best-first search over lifted triangles (face, element), by distance from q to the
 // triangle's centroid, with a visited set keyed by the face and the image of a probe point.
-template <class Location>
-void search_lifted(const Lifted_triangulation& lt, const Complex<double>& q, int start, Location& loc,
+template <class Traits, class Location>
+void search_lifted(const Lifted_triangulation<Traits>& lt, const std::complex<double>& q, int start, Location& loc,
                    Hyperbolic_isometry_2<double>& h_out)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
   struct Node
   {
@@ -50,9 +50,9 @@ void search_lifted(const Lifted_triangulation& lt, const Complex<double>& q, int
   auto node_key = [&](int f, const Isometry& h) {
     const C w = h.apply(probe);
     Point_key k;
-    k.a = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.re * 1e9))) * 1000003u +
+    k.a = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.real() * 1e9))) * 1000003u +
           static_cast<std::uint64_t>(f);
-    k.b = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.im * 1e9)));
+    k.b = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(w.imag() * 1e9)));
     return k;
   };
   std::vector<Node> nodes;
@@ -80,11 +80,11 @@ void search_lifted(const Lifted_triangulation& lt, const Complex<double>& q, int
     const bool id = nd.h.is_identity(0.0);
     for(int j = 0; j < 3; ++j)
       D[j] = id ? F.z[j] : nd.h.apply(F.z[j]);
-    const int o = Lifted_triangulation::orient(D[0], D[1], D[2]);
+    const int o = lt.orient(D[0], D[1], D[2]);
     if(o != 0) {
       bool inside = true;
       for(int j = 0; j < 3 && inside; ++j)
-        inside = o * Lifted_triangulation::orient(D[j], D[(j + 1) % 3], q) >= 0;
+        inside = o * lt.orient(D[j], D[(j + 1) % 3], q) >= 0;
       Location l;
       finish_location(lt, q, nd.f, D, id, nd.h, l);
       if(inside) {
@@ -111,7 +111,7 @@ void search_lifted(const Lifted_triangulation& lt, const Complex<double>& q, int
   // copies): the best candidate, accepted if within rounding
   loc = best;
   loc.steps = expanded;
-  loc.success = best.face_index != Lifted_triangulation::no_face && best_min > -1e-9;
+  loc.success = best.face_index != Lifted_triangulation<Traits>::no_face && best_min > -1e-9;
   h_out = best_h;
 }
 

@@ -25,26 +25,26 @@ namespace internal {
 // model of B's own frame: those of h^{-1}(q) w.r.t. the stored corners. (An isometry is a
 // projective, not an affine, map of the Klein disk: the coordinates w.r.t. the developed
 // corners would differ.) In the hyperboloid model on request (lt.model).
-template <class Location>
-void finish_location(const Lifted_triangulation& lt, const Complex<double>& q, int f, const Complex<double>* D,
+template <class Traits, class Location>
+void finish_location(const Lifted_triangulation<Traits>& lt, const std::complex<double>& q, int f, const std::complex<double>* D,
                      bool identity, const Hyperbolic_isometry_2<double>& h, Location& loc)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   std::array<double, 3> l;
   if(identity) {
     l = klein_barycentric(D[0], D[1], D[2], q);
   } else {
     const Hyperbolic_isometry_2<long double> hi(h.inverse());
-    const Complex<long double> w = hi.apply(Complex<long double>(q.re, q.im));
+    const std::complex<long double> w = hi.apply(std::complex<long double>(q.real(), q.imag()));
     const Lifted_face& F = lt.faces[f];
-    l = klein_barycentric(F.z[0], F.z[1], F.z[2], C(static_cast<double>(w.re), static_cast<double>(w.im)));
+    l = klein_barycentric(F.z[0], F.z[1], F.z[2], C(static_cast<double>(w.real()), static_cast<double>(w.imag())));
   }
   loc.face_index = static_cast<std::size_t>(f);
   if(!std::isfinite(l[0]) || !std::isfinite(l[1]) || !std::isfinite(l[2])) {
     // a needle too thin for double Klein coordinates: the nearest corner
     int best = 0;
     for(int j = 1; j < 3; ++j)
-      if(norm(D[j] - q) < norm(D[best] - q))
+      if(squared_modulus(D[j] - q) < squared_modulus(D[best] - q))
         best = j;
     l = {{0.0, 0.0, 0.0}};
     l[best] = 1.0;
@@ -71,12 +71,11 @@ void finish_location(const Lifted_triangulation& lt, const Complex<double>& q, i
 
 // The straight walk from the centroid of `start` to q (see Embedding_locator.h).
 // Returns false when a check fails (then the search answers); h: the copy's element.
-template <class Location>
-bool walk_to(const Lifted_triangulation& lt, const Complex<double>& q, int start, Location& loc,
+template <class Traits, class Location>
+bool walk_to(const Lifted_triangulation<Traits>& lt, const std::complex<double>& q, int start, Location& loc,
              Hyperbolic_isometry_2<double>& h)
 {
-  typedef Complex<double> C;
-  typedef Lifted_triangulation LT;
+  typedef std::complex<double> C;
   h = Hyperbolic_isometry_2<double>();
   bool identity = true;
   int f = start;
@@ -87,7 +86,7 @@ bool walk_to(const Lifted_triangulation& lt, const Complex<double>& q, int start
   // the start triangle is positively oriented in face corner order, p strictly inside
   int o[3];
   for(int j = 0; j < 3; ++j)
-    o[j] = LT::orient(D[j], D[(j + 1) % 3], q);
+    o[j] = lt.orient(D[j], D[(j + 1) % 3], q);
   if(o[0] >= 0 && o[1] >= 0 && o[2] >= 0) {
     finish_location(lt, q, f, D, true, h, loc);
     loc.success = true;
@@ -95,7 +94,7 @@ bool walk_to(const Lifted_triangulation& lt, const Complex<double>& q, int start
   }
   bool left[3];
   for(int j = 0; j < 3; ++j)
-    left[j] = LT::orient(p, q, D[j]) >= 0;
+    left[j] = lt.orient(p, q, D[j]) >= 0;
   // exit edge (u, v), counterclockwise, u right of the line p->q and v left of it
   int u = -1, v = -1;
   for(int j = 0; j < 3; ++j)
@@ -112,7 +111,7 @@ bool walk_to(const Lifted_triangulation& lt, const Complex<double>& q, int start
     loc.steps = steps;
     // cross the edge (u, v) of face f
     const Lifted_face& F = lt.faces[f];
-    const int j = LT::edge_index(u, v);
+    const int j = Lifted_triangulation<Traits>::edge_index(u, v);
     const int t = F.tr[j];
     if(t < 0)
       return false;
@@ -129,7 +128,7 @@ bool walk_to(const Lifted_triangulation& lt, const Complex<double>& q, int start
     }
     E[s2] = identity ? lt.faces[nf].z[s2] : h.apply(lt.faces[nf].z[s2]);
     // the new triangle (v, u, s) must be positively oriented
-    if(LT::orient(E[v2], E[u2], E[s2]) <= 0)
+    if(lt.orient(E[v2], E[u2], E[s2]) <= 0)
       return false;
     f = nf;
     D[0] = E[0];
@@ -139,13 +138,13 @@ bool walk_to(const Lifted_triangulation& lt, const Complex<double>& q, int start
     v = v2;
     const int s = s2;
     // q is strictly beyond the entry edge (u, v): orient(v, u, q) > 0 by construction
-    const int ous = LT::orient(D[u], D[s], q), osv = LT::orient(D[s], D[v], q);
+    const int ous = lt.orient(D[u], D[s], q), osv = lt.orient(D[s], D[v], q);
     if(ous >= 0 && osv >= 0) {
       finish_location(lt, q, f, D, identity, h, loc);
       loc.success = true;
       return true;
     }
-    if(LT::orient(p, q, D[s]) >= 0) { // s left: exit through (u, s)
+    if(lt.orient(p, q, D[s]) >= 0) { // s left: exit through (u, s)
       if(ous >= 0)
         return false;
       v = s;

@@ -143,7 +143,7 @@ public:
   }
 
 private:
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Eigen::SparseMatrix<double> SpMat;
   typedef Eigen::Map<const Eigen::VectorXd> Gradient;
   typedef std::chrono::steady_clock Clock;
@@ -212,7 +212,7 @@ private:
         hw_[i] = hw_[i + 1] = (1 - (x_[i] * x_[i] + x_[i + 1] * x_[i + 1])) / 2;
       } else if(P_.kind[v] == On_line) {
         position_jet(P_, x_, v, j);
-        hw_[P_.var[v]] = (1 - norm(j.z)) / (2 * abs(j.dz[0]));
+        hw_[P_.var[v]] = (1 - squared_modulus(j.z)) / (2 * std::abs(j.dz[0]));
       }
     }
   }
@@ -428,14 +428,14 @@ private:
         continue;
       const int i = P_.var[v];
       const C z(x_[i], x_[i + 1]), d(alpha * p_[i], alpha * p_[i + 1]);
-      const double len = abs(d);
+      const double len = std::abs(d);
       if(!(len > 0))
         continue;
-      const double L = 2 * len / (1 - norm(z));
+      const double L = 2 * len / (1 - squared_modulus(z));
       const C w = d * (std::tanh(L / 2) / len);
-      const C y = (w + z) / (C(1.0) + conj(z) * w);
-      xn_[i] = y.re;
-      xn_[i + 1] = y.im;
+      const C y = divide(w + z, C(1.0) + std::conj(z) * w);
+      xn_[i] = y.real();
+      xn_[i + 1] = y.imag();
     }
   }
 

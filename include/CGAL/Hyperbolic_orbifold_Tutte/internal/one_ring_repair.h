@@ -12,8 +12,7 @@
 // section 5), and snapped at the resolution of double as a last resort.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 
 #include <algorithm>
@@ -26,19 +25,22 @@ namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
 // exact test: the hyperbolic triangle (a, b, c) of the Poincare disk is positively oriented
-inline bool positive_triangle(const Complex<double>& a, const Complex<double>& b, const Complex<double>& c)
+// (Traits: a model of HyperbolicOrbifoldTraits_2, the tile's traits)
+template <class Traits>
+bool positive_triangle(const Traits& tr, const std::complex<double>& a, const std::complex<double>& b, const std::complex<double>& c)
 {
-  typedef Poincare_disk_traits_2<> Traits;
-  return Traits().hyperbolic_orientation_2_object()(Traits::Point_2(a.re, a.im), Traits::Point_2(b.re, b.im),
-                                                    Traits::Point_2(c.re, c.im)) == POSITIVE;
+  typedef typename Traits::Point_2 Point_2;
+  return tr.hyperbolic_orientation_2_object()(Point_2(a.real(), a.imag()), Point_2(b.real(), b.imag()), Point_2(c.real(), c.imag())) ==
+         POSITIVE;
 }
 
 // The faces around each vertex (a seam copy's faces listed at its twin, whose variables it
 // uses) and the exact test of a face's orientation at x: what the one-ring repairs check.
+template <class Traits>
 class One_ring_faces
 {
 public:
-  explicit One_ring_faces(const Flat_problem& P) : P_(P), faces_(P.n)
+  One_ring_faces(const Flat_problem& P, const Traits& tr) : P_(P), tr_(tr), faces_(P.n)
   {
     for(std::size_t f = 0; f < P.faces.size(); ++f)
       for(int i = 0; i < 3; ++i)
@@ -47,7 +49,7 @@ public:
   int owner(int v) const { return owner_vertex(P_, v); }
   bool positive(int f, const std::vector<double>& x) const
   {
-    return positive_triangle(position(P_, x, P_.faces[f][0]), position(P_, x, P_.faces[f][1]),
+    return positive_triangle(tr_, position(P_, x, P_.faces[f][0]), position(P_, x, P_.faces[f][1]),
                              position(P_, x, P_.faces[f][2]));
   }
   bool all_positive(int v, const std::vector<double>& x) const
@@ -60,6 +62,7 @@ public:
 
 private:
   const Flat_problem& P_;
+  Traits tr_;
   std::vector<std::vector<int> > faces_;
 };
 
@@ -69,12 +72,13 @@ private:
 // weighted centroid of its neighbours there, and moved back; repeated until no face is
 // flipped, or `max_sweeps` sweeps, or ten sweeps without fewer vertices to move (a region
 // below what double resolves). Seam vertices see their neighbours across the seam
-// through the side pairing. Returns the number of vertex moves.
-inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int max_sweeps = 100)
+// through the side pairing. Returns the number of vertex moves. Traits: the tile's traits.
+template <class Traits>
+int repair_one_rings(const Flat_problem& P, std::vector<double>& x, const Traits& tr, int max_sweeps = 100)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
-  const One_ring_faces rings(P);
+  const One_ring_faces<Traits> rings(P, tr);
   // neighbours of each free vertex, with the map bringing them into its frame
   struct Nb { int u; int via; double w; };  // via: the vertex of the edge standing for v (v or a twin copy)
   std::vector<std::vector<Nb> > nb(P.n);
@@ -106,8 +110,8 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
       if(!(wsum > 0))
         continue;
       const C c = to0.inverse().apply(sum / wsum);
-      x[P.var[v]] = c.re;
-      x[P.var[v] + 1] = c.im;
+      x[P.var[v]] = c.real();
+      x[P.var[v] + 1] = c.imag();
       ++moved;
     }
     moves += moved;
@@ -132,9 +136,10 @@ inline int repair_one_rings(const Flat_problem& P, std::vector<double>& x, int m
 // valid position exists close by. The certificate judges the result. Returns the moves.
 // More than `max_vertices` such vertices: a whole region below what double resolves, which
 // moving vertices one at a time cannot mend (and the exact tests would take seconds): none moved.
-inline int snap_one_rings(const Flat_problem& P, std::vector<double>& x, int max_vertices = 100)
+template <class Traits>
+int snap_one_rings(const Flat_problem& P, std::vector<double>& x, const Traits& tr, int max_vertices = 100)
 {
-  const One_ring_faces rings(P);
+  const One_ring_faces<Traits> rings(P, tr);
   auto all_ok = [&](int v) { return rings.all_positive(v, x); };
   int to_move = 0;
   for(int v = 0; v < P.n && to_move <= max_vertices; ++v)

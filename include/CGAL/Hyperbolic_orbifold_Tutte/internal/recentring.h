@@ -35,7 +35,7 @@ constexpr int max_recentring_rounds = 24;
 
 struct Unresolved_faces
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   std::size_t count = 0;                                      // the faces flagged
   double smallest = std::numeric_limits<double>::infinity(); // the shortest edge of all
   C where;                    // the deepest vertex of the flagged faces (most face steps from the others)
@@ -43,23 +43,25 @@ struct Unresolved_faces
 };
 
 // Faces that double cannot resolve (an edge within 256 units in the last place of its
-// ends), and with `not_positive` also the faces that are not positive (exact test).
-inline Unresolved_faces unresolved_faces(const Flat_problem& Q, const std::vector<Complex<double> >& uv,
-                                        bool not_positive)
+// ends), and with `not_positive` also the faces that are not positive (exact test with the
+// traits `tr`, the tile's).
+template <class Traits>
+Unresolved_faces unresolved_faces(const Flat_problem& Q, const std::vector<std::complex<double> >& uv, const Traits& tr,
+                                  bool not_positive)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   Unresolved_faces u;
   u.flag.assign(Q.faces.size(), 0);
   for(std::size_t fi = 0; fi < Q.faces.size(); ++fi) {
     const auto& f = Q.faces[fi];
     for(int i = 0; i < 3; ++i) {
       const C a = uv[f[i]], b = uv[f[(i + 1) % 3]];
-      const double len = abs(a - b), ulp = std::numeric_limits<double>::epsilon() * (std::max)(abs(a), abs(b));
+      const double len = std::abs(a - b), ulp = std::numeric_limits<double>::epsilon() * (std::max)(std::abs(a), std::abs(b));
       u.smallest = (std::min)(u.smallest, len);
       u.flag[fi] = u.flag[fi] || len < 256 * ulp;
     }
     if(not_positive && !u.flag[fi])
-      u.flag[fi] = !positive_triangle(uv[f[0]], uv[f[1]], uv[f[2]]);
+      u.flag[fi] = !positive_triangle(tr, uv[f[0]], uv[f[1]], uv[f[2]]);
     u.count += u.flag[fi] ? 1 : 0;
   }
   if(u.count == 0)
@@ -106,9 +108,9 @@ inline Unresolved_faces unresolved_faces(const Flat_problem& Q, const std::vecto
 template <class SeamMesh, class Landmarks, class Cut_vertices, class Tile>
 void recentre(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
               const Landmarks& landmarks, const Cut_vertices& cut_vertices, const Tile& tile, const Flat_problem& P,
-              const Solver_options& options, std::vector<Complex<double> >& uv, Embedding_statistics& st)
+              const Solver_options& options, std::vector<std::complex<double> >& uv, Embedding_statistics& st)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
   typedef typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor TM_vertex_descriptor;
   const Embedding_certificate canonical = st.certificate;
@@ -117,7 +119,7 @@ void recentre(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::half
   Flat_problem Q;
   std::vector<C> uvq = uv;
   std::vector<double> xq;
-  Unresolved_faces left = unresolved_faces(P, uvq, true);
+  Unresolved_faces left = unresolved_faces(P, uvq, tile.traits(), true);
   std::size_t best = left.count;
   for(int round = 0, idle = 0; round < max_recentring_rounds && left.count > 0 && idle < 4; ++round) {
     const Isometry step = Isometry::translation_to_origin(left.where);
@@ -135,11 +137,11 @@ void recentre(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::half
     for(int v = 0; v < R.n; ++v) {
       const C z = step.apply(uvq[v]);
       if(R.kind[v] == Free) {
-        xq[R.var[v]] = z.re;
-        xq[R.var[v] + 1] = z.im;
+        xq[R.var[v]] = z.real();
+        xq[R.var[v] + 1] = z.imag();
       } else if(R.kind[v] == On_line) { // its Klein segment's parameter
-        const C k = z * (2.0 / (1.0 + norm(z))), d = k - R.line_k0[v];
-        xq[R.var[v]] = (d.re * R.line_D[v].re + d.im * R.line_D[v].im) / norm(R.line_D[v]);
+        const C k = poincare_to_klein(z), d = k - R.line_k0[v];
+        xq[R.var[v]] = (d.real() * R.line_D[v].real() + d.imag() * R.line_D[v].imag()) / squared_modulus(R.line_D[v]);
       }
     }
     Q = std::move(R);
@@ -166,7 +168,7 @@ void recentre(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::half
     st.cg_iterations += rs.cg_iterations;
     for(int v = 0; v < Q.n; ++v)
       uvq[v] = position(Q, xq, v);
-    left = unresolved_faces(Q, uvq, true);
+    left = unresolved_faces(Q, uvq, tile.traits(), true);
     if(options.verbose)
       std::cerr << "  recentred " << round + 1 << " times: " << left.count
                 << " faces not positive or below what double resolves (smallest edge " << left.smallest << ")"

@@ -7,7 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/Complex.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,7 +26,7 @@ namespace internal {
 class Start_grid
 {
 public:
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
 
   // the grid over the centroids of the faces marked good (n_good of them, in the box
   // [xmin, xmax] x [ymin, ymax])
@@ -45,9 +45,9 @@ public:
       if(!good[fi])
         continue;
       const C& c = centroids[fi];
-      const int cx = cell_x(c.re), cy = cell_y(c.im);
+      const int cx = cell_x(c.real()), cy = cell_y(c.imag());
       const std::size_t id = static_cast<std::size_t>(cy) * n_ + cx;
-      const double dx = c.re - (x0_ + (cx + 0.5) * cw_), dy = c.im - (y0_ + (cy + 0.5) * ch_);
+      const double dx = c.real() - (x0_ + (cx + 0.5) * cw_), dy = c.imag() - (y0_ + (cy + 0.5) * ch_);
       const double d = dx * dx + dy * dy;
       if(d < best[id]) {
         best[id] = d;
@@ -58,7 +58,7 @@ public:
   }
 
   // the start face for a query point q
-  int start_face(const C& q) const { return cells_[static_cast<std::size_t>(cell_y(q.im)) * n_ + cell_x(q.re)]; }
+  int start_face(const C& q) const { return cells_[static_cast<std::size_t>(cell_y(q.imag())) * n_ + cell_x(q.real())]; }
 
 private:
   void fill_empty_cells()

@@ -67,9 +67,9 @@ std::vector<double> side_arc_fractions(const Flat_problem& P, const std::vector<
 // vertices at the parameter t of their Klein segment, all at their arc-length fraction
 template <class Tile>
 void place_border(const Flat_problem& P, const Tile& tile, const std::vector<double>& frac, std::vector<double>& x,
-                  std::vector<Complex<double> >& z)
+                  std::vector<std::complex<double> >& z)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Hyperbolic_isometry_2<double> Isometry;
   const std::vector<int>& loop = P.border_loop;
   for(int v : loop) {
@@ -82,11 +82,11 @@ void place_border(const Flat_problem& P, const Tile& tile, const std::vector<dou
       const C ca(CGAL::to_double(a.x()), CGAL::to_double(a.y())), cb(CGAL::to_double(b.x()), CGAL::to_double(b.y()));
       const Isometry to0 = Isometry::translation_to_origin(ca);
       const C b0 = to0.apply(cb);
-      const double r = abs(b0);
+      const double r = std::abs(b0);
       const double rr = std::tanh(frac[v] * std::atanh(r));
       z[v] = to0.inverse().apply(b0 * (rr / r));
-      x[P.var[v]] = z[v].re;
-      x[P.var[v] + 1] = z[v].im;
+      x[P.var[v]] = z[v].real();
+      x[P.var[v] + 1] = z[v].imag();
     } else if(P.kind[v] == On_line) {
       x[P.var[v]] = frac[v];
     }
@@ -126,10 +126,10 @@ inline void number_interior(const Flat_problem& P, const std::vector<double>& x,
 
 // The Tutte embedding of the interior in Klein coordinates (kxy: one column per coordinate),
 // the border at z: with the connection's leading block, or with a factorisation of its own
-inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<Complex<double> >& z, Interior_laplacian& lap,
+inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<std::complex<double> >& z, Interior_laplacian& lap,
                                     Eigen::MatrixXd& kxy)
 {
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   typedef Eigen::SparseMatrix<double> SpMat;
   const std::vector<int>& interior_index = lap.index;
   const int ni = lap.size;
@@ -141,7 +141,6 @@ inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<Com
   auto bx = bxy.col(0);
   auto by = bxy.col(1);
   std::vector<double> diag(own ? ni : 0, 0.0);
-  auto klein = [](const C& p) { return p * (2.0 / (1.0 + norm(p))); };
   for(std::size_t e = 0; e < P.edges.size(); ++e) {
     const int a = P.edges[e][0], b = P.edges[e][1];
     const double w = P.edge_weight[e];
@@ -154,13 +153,13 @@ inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<Com
       trip.emplace_back(ia, ib, -w);
       trip.emplace_back(ib, ia, -w);
     } else if(ia >= 0) {
-      const C kb = klein(z[b]);
-      bx[ia] += w * kb.re;
-      by[ia] += w * kb.im;
+      const C kb = poincare_to_klein(z[b]);
+      bx[ia] += w * kb.real();
+      by[ia] += w * kb.imag();
     } else if(ib >= 0) {
-      const C ka = klein(z[a]);
-      bx[ib] += w * ka.re;
-      by[ib] += w * ka.im;
+      const C ka = poincare_to_klein(z[a]);
+      bx[ib] += w * ka.real();
+      by[ib] += w * ka.imag();
     }
   }
   if(!own) { // both coordinates as one complex right-hand side
@@ -200,7 +199,7 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
 {
   Interior_laplacian local;
   Interior_laplacian& lap = keep ? *keep : local;
-  typedef Complex<double> C;
+  typedef std::complex<double> C;
   x.assign(P.n_vars, 0.0);
   std::vector<C> z(P.n);
   place_border(P, tile, side_arc_fractions(P, base_points), x, z);
@@ -218,13 +217,13 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
     if(i < 0)
       continue;
     const C k(kx[i], ky[i]);
-    const double s = 1.0 - norm(k);
-    if(!(s > 0) || !std::isfinite(k.re) || !std::isfinite(k.im))
+    const double s = 1.0 - squared_modulus(k);
+    if(!(s > 0) || !std::isfinite(k.real()) || !std::isfinite(k.imag()))
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    const C p = k / (1.0 + std::sqrt(s));
+    const C p = klein_to_poincare(k); // s > 0: the same s, unclamped
     if(P.kind[v] == Free) {
-      x[P.var[v]] = p.re;
-      x[P.var[v] + 1] = p.im;
+      x[P.var[v]] = p.real();
+      x[P.var[v] + 1] = p.imag();
     }
   }
   return OK;
