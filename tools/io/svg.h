@@ -8,9 +8,9 @@
 // The command-line tool's SVG pictures of the Poincare disk: tiles and their images.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -24,6 +24,9 @@
 namespace hot_tools {
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+
+// |z|^2 as x^2 + y^2 (std::norm of libstdc++ squares a hypot)
+inline double squared_modulus(const std::complex<double>& z) { return z.real() * z.real() + z.imag() * z.imag(); }
 
 // Writes pictures of the Poincare disk as SVG: geodesic segments are circular arcs
 // (SVG "A" commands), so the files stay small and exact at any zoom.
@@ -125,7 +128,7 @@ private:
     }
     // circle orthogonal to the unit circle through a and b: center c with
     // 2 <a, c> = 1 + |a|^2 and 2 <b, c> = 1 + |b|^2
-    const double ra = (1 + HOT::internal::squared_modulus(a)) / 2, rb = (1 + HOT::internal::squared_modulus(b)) / 2;
+    const double ra = (1 + squared_modulus(a)) / 2, rb = (1 + squared_modulus(b)) / 2;
     const double cx = (ra * b.imag() - rb * a.imag()) / cross0, cy = (a.real() * rb - b.real() * ra) / cross0;
     const double r = std::hypot(a.real() - cx, a.imag() - cy);
     if(r * scale_ > 1e6) { // practically straight
@@ -187,7 +190,7 @@ void write_tile_svg(std::ostream& os, const Tile& tile, int depth, const std::st
   for(int i = 0; i < n; ++i) {
     const int c = tile.corner_cone(i);
     svg.dot(os, corners[i], 7, Poincare_svg::palette(c, tile.number_of_cones(), 0.75, 1.0));
-    const double r = std::sqrt(HOT::internal::squared_modulus(corners[i]));
+    const double r = std::sqrt(squared_modulus(corners[i]));
     const C out = (r > 1e-9) ? corners[i] * ((r + 0.045) / r) : C(0.0, 0.045);
     svg.label(os, out, std::to_string(c + 1));
   }
