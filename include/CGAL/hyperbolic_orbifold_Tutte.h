@@ -19,6 +19,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Mesh_preparation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/prepare_mesh_for_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>

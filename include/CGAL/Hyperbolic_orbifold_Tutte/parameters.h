@@ -37,6 +37,9 @@ enum embedding_statistics_t { embedding_statistics };
 enum edge_weight_map_t { edge_weight_map };
 enum recentring_t { recentring };
 enum frame_t { frame };
+enum maximum_hole_length_t { maximum_hole_length };
+enum keep_largest_component_t { keep_largest_component };
+enum split_boundary_chords_t { split_boundary_chords };
 } // namespace internal_np
 
 namespace parameters {
@@ -79,6 +82,16 @@ CGAL_HOT_NAMED_PARAMETER(recentring)
 /// `Hyperbolic_isometry_2<double>`: for `certify_hyperbolic_orbifold_embedding()`, the frame
 /// of a recentred embedding (`Embedding_statistics::frame`; default the identity)
 CGAL_HOT_NAMED_PARAMETER(frame)
+
+/// `double`: for `prepare_polygon_soup_for_embedding()`, the longest boundary loop that is
+/// filled as a hole, as a fraction of the diagonal of the mesh's bounding box (default 0.5)
+CGAL_HOT_NAMED_PARAMETER(maximum_hole_length)
+/// `bool`: for `prepare_polygon_soup_for_embedding()`, keeps the largest connected component
+/// (in faces) of a mesh with several, instead of failing (default `false`)
+CGAL_HOT_NAMED_PARAMETER(keep_largest_component)
+/// `bool`: for `prepare_polygon_soup_for_embedding()`, splits every inner edge of a disk-type
+/// mesh that joins two boundary vertices (default `true`)
+CGAL_HOT_NAMED_PARAMETER(split_boundary_chords)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 

@@ -1,0 +1,358 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/soup_preparation.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+// The mesh half of prepare_polygon_soup_for_embedding(), on a CGAL::Surface_mesh built from
+// the prepared soup: triangulate polygons, keep one component, remove degenerate faces, fill
+// holes, split the boundary chords of a disk, then write the result in the addressing order
+// (input vertices first, in input order, then the added ones). Each step is CGAL PMP or an
+// Euler operation; a vertex property keeps the input index of every vertex (npos: added).
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+namespace preparation {
+
+typedef CGAL::Surface_mesh<Point> Work_mesh;
+typedef Work_mesh::Vertex_index Work_vertex;
+typedef Work_mesh::Halfedge_index Work_halfedge;
+typedef Work_mesh::Face_index Work_face;
+
+struct Work
+{
+  Work_mesh mesh;
+  Work_mesh::Property_map<Work_vertex, std::size_t> input; // input index, npos for added vertices
+  std::vector<char> dropped;                               // per input vertex: on a removed component
+  std::vector<std::pair<Work_vertex, Work_vertex> > chords; // split chords' endpoints
+  std::vector<Work_vertex> hole_vertex;                     // a boundary vertex per filled hole
+};
+
+inline Status build_work_mesh(const Soup& soup, Work& w, std::size_t number_of_input_vertices)
+{
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, w.mesh);
+  if(num_vertices(w.mesh) != soup.points.size() || num_faces(w.mesh) != soup.polygons.size())
+    return Status::failure(ERROR_NON_MANIFOLD, "the repaired polygon soup could not be built into a mesh");
+  w.input = w.mesh.add_property_map<Work_vertex, std::size_t>("v:hot_input", Mesh_preparation::npos).first;
+  std::size_t i = 0;
+  for(Work_vertex v : vertices(w.mesh)) // polygon_soup_to_polygon_mesh adds the points in order
+    w.input[v] = soup.input[i++];
+  w.dropped.assign(number_of_input_vertices, 0);
+  return Status();
+}
+
+inline Status triangulate_polygons(Work& w, Mesh_preparation& prep)
+{
+  for(Work_face f : faces(w.mesh)) {
+    const std::size_t d = degree(f, w.mesh);
+    if(d > 3) {
+      ++prep.polygons_triangulated;
+      prep.triangles_from_polygons += d - 2;
+    }
+  }
+  if(prep.polygons_triangulated == 0)
+    return Status();
+  if(!CGAL::Polygon_mesh_processing::triangulate_faces(w.mesh))
+    return Status::failure(ERROR_NON_TRIANGULAR_MESH, "a polygon of the mesh could not be triangulated");
+  return Status();
+}
+
+// Keeps the largest connected component (in faces; the first of equal ones) if asked,
+// otherwise fails with the number of components and their sizes.
+inline Status keep_one_component(Work& w, bool keep_largest, Mesh_preparation& prep)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  auto fcc = w.mesh.add_property_map<Work_face, std::size_t>("f:hot_component", 0).first;
+  const std::size_t n = PMP::connected_components(w.mesh, fcc);
+  if(n <= 1) {
+    w.mesh.remove_property_map(fcc);
+    return Status();
+  }
+  std::vector<std::size_t> size(n, 0);
+  for(Work_face f : faces(w.mesh)) ++size[fcc[f]];
+  const std::size_t largest = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
+  if(!keep_largest) {
+    std::vector<std::size_t> sorted = size;
+    std::sort(sorted.rbegin(), sorted.rend());
+    std::ostringstream os;
+    os << "the mesh has " << n << " connected components (sizes in faces:";
+    for(std::size_t i = 0; i < sorted.size() && i < 5; ++i) os << " " << sorted[i];
+    os << (sorted.size() > 5 ? " ..." : "") << "); keeping the largest one only must be asked for"
+       << " (keep_largest_component, --largest-component)";
+    w.mesh.remove_property_map(fcc);
+    return Status::failure(ERROR_SEVERAL_COMPONENTS, os.str());
+  }
+  for(Work_vertex v : vertices(w.mesh)) {
+    const Work_halfedge h = halfedge(v, w.mesh);
+    const Work_face f = is_border(h, w.mesh) ? face(opposite(h, w.mesh), w.mesh) : face(h, w.mesh);
+    if(fcc[f] != largest && w.input[v] != Mesh_preparation::npos)
+      w.dropped[w.input[v]] = 1;
+  }
+  prep.components_removed = n - 1;
+  prep.component_faces_removed = num_faces(w.mesh) - size[largest];
+  PMP::keep_connected_components(w.mesh, std::vector<std::size_t>(1, largest), fcc);
+  w.mesh.remove_property_map(fcc);
+  w.mesh.collect_garbage();
+  return Status();
+}
+
+// Removes the faces that are degenerate (exactly collinear or coincident corners) with
+// PMP's remove_degenerate_faces() (edge collapses and flips).
+inline Status remove_degenerate_faces(Work& w, Mesh_preparation& prep)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  bool any = false;
+  for(Work_face f : faces(w.mesh))
+    if(PMP::is_degenerate_triangle_face(f, w.mesh)) { any = true; break; }
+  if(!any)
+    return Status();
+  const std::size_t before = num_faces(w.mesh);
+  const bool ok = PMP::remove_degenerate_faces(w.mesh);
+  w.mesh.collect_garbage();
+  prep.degenerate_faces_removed = before - num_faces(w.mesh);
+  if(!ok)
+    return Status::failure(ERROR_DEGENERATE_FACE, "some degenerate faces (zero area) could not be removed");
+  return Status();
+}
+
+struct Boundary_loop
+{
+  Work_halfedge h;
+  std::size_t vertices = 0;
+  double length = 0;
+};
+
+inline std::vector<Boundary_loop> boundary_loops(const Work_mesh& m)
+{
+  std::vector<Work_halfedge> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(m, std::back_inserter(cycles));
+  std::vector<Boundary_loop> loops;
+  for(Work_halfedge h : cycles) {
+    Boundary_loop l;
+    l.h = h;
+    for(Work_halfedge c : halfedges_around_face(h, m)) {
+      ++l.vertices;
+      l.length += std::sqrt(CGAL::squared_distance(m.point(source(c, m)), m.point(target(c, m))));
+    }
+    loops.push_back(l);
+  }
+  std::stable_sort(loops.begin(), loops.end(), [](const Boundary_loop& a, const Boundary_loop& b) { return a.length > b.length; });
+  return loops;
+}
+
+// "2 loops of 120 and 96 vertices, lengths 3.1 and 0.84 (1.2 and 0.33 diagonals)"
+inline std::string describe_loops(const std::vector<Boundary_loop>& loops, double diagonal)
+{
+  std::ostringstream os;
+  os.precision(3);
+  os << loops.size() << (loops.size() == 1 ? " loop of " : " loops of ");
+  for(std::size_t i = 0; i < loops.size() && i < 6; ++i) os << (i ? ", " : "") << loops[i].vertices;
+  os << (loops.size() > 6 ? ", ..." : "") << " vertices, lengths";
+  for(std::size_t i = 0; i < loops.size() && i < 6; ++i) os << (i ? ", " : " ") << loops[i].length / diagonal;
+  os << (loops.size() > 6 ? ", ..." : "") << " times the bounding box diagonal";
+  return os.str();
+}
+
+// Fills one hole with PMP's triangulate_refine_and_fair_hole().
+inline Status fill_hole(Work& w, const Boundary_loop& loop, Mesh_preparation& prep)
+{
+  std::vector<Work_face> new_faces;
+  std::vector<Work_vertex> new_vertices;
+  const Work_vertex where = target(loop.h, w.mesh);
+  const auto r = CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
+    w.mesh, loop.h, std::back_inserter(new_faces), std::back_inserter(new_vertices));
+  if(new_faces.empty()) {
+    std::ostringstream os;
+    os << "a hole with " << loop.vertices << " boundary vertices could not be filled";
+    return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
+  }
+  for(Work_vertex v : new_vertices)
+    w.input[v] = Mesh_preparation::npos; // a recycled slot keeps its old value otherwise
+  Filled_hole hole;
+  hole.boundary_vertices = loop.vertices;
+  hole.boundary_length = loop.length;
+  hole.faces_added = new_faces.size();
+  hole.vertices_added = new_vertices.size();
+  hole.faired = std::get<0>(r);
+  prep.filled_holes.push_back(hole);
+  w.hole_vertex.push_back(where);
+  return Status();
+}
+
+// Fills the holes (boundary loops no longer than `max_length`; with a disk required, all
+// loops but the longest) and decides the type from the loops that remain.
+inline Status fill_holes(Work& w, double max_hole_length, std::optional<Orbifold_type> required, Mesh_preparation& prep)
+{
+  const std::vector<Boundary_loop> loops = boundary_loops(w.mesh);
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(w.mesh);
+  const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                                    CGAL::square(b.zmax() - b.zmin()));
+  const double limit = max_hole_length * diagonal;
+  std::vector<Boundary_loop> kept;
+  std::vector<Boundary_loop> holes;
+  for(std::size_t i = 0; i < loops.size(); ++i) {
+    const bool keep_as_disk_border = required && *required == Disk_type && i == 0;
+    if(!keep_as_disk_border && loops[i].length <= limit) holes.push_back(loops[i]);
+    else kept.push_back(loops[i]);
+  }
+  if(kept.size() > 1 || (required && *required == Sphere_type && !kept.empty())) {
+    std::ostringstream os;
+    os.precision(3);
+    os << "after filling the holes no longer than " << max_hole_length << " times the bounding box diagonal, the mesh would keep "
+       << describe_loops(kept, diagonal) << "; " << (required && *required == Sphere_type ? "a sphere-type orbifold needs none"
+                                                                                           : "an orbifold needs at most one")
+       << " (raise maximum_hole_length, --max-hole, to fill longer ones)";
+    return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
+  }
+  if(required && *required == Disk_type && kept.empty())
+    return Status::failure(ERROR_WRONG_TOPOLOGY, "the disk-type orbifold needs a boundary loop, but the mesh is closed");
+  for(const Boundary_loop& h : holes) {
+    const Status r = fill_hole(w, h, prep);
+    if(!r) return r;
+  }
+  prep.type = kept.empty() ? Sphere_type : Disk_type;
+  return Status();
+}
+
+// Splits every inner edge joining two boundary vertices at its midpoint, connecting the
+// midpoint to the two opposite corners (Euler operations), so that no triangle of a disk
+// has its three corners on the boundary through such an edge.
+inline void split_boundary_chords(Work& w, Mesh_preparation&)
+{
+  std::vector<Work_halfedge> chords;
+  for(auto e : edges(w.mesh)) {
+    const Work_halfedge h = halfedge(e, w.mesh);
+    if(is_border_edge(h, w.mesh)) continue;
+    if(CGAL::is_border(source(h, w.mesh), w.mesh) && CGAL::is_border(target(h, w.mesh), w.mesh))
+      chords.push_back(h);
+  }
+  for(Work_halfedge h : chords) {
+    const Work_vertex a = source(h, w.mesh), b = target(h, w.mesh);
+    const Point m = CGAL::midpoint(w.mesh.point(a), w.mesh.point(b));
+    const Work_halfedge hn = CGAL::Euler::split_edge(h, w.mesh); // a -> m, then h: m -> b
+    const Work_vertex mv = target(hn, w.mesh);
+    w.mesh.point(mv) = m;
+    w.input[mv] = Mesh_preparation::npos;
+    CGAL::Euler::split_face(hn, next(h, w.mesh), w.mesh);
+    const Work_halfedge oh = opposite(h, w.mesh);   // b -> m
+    CGAL::Euler::split_face(oh, next(opposite(hn, w.mesh), w.mesh), w.mesh);
+    w.chords.emplace_back(a, b);
+  }
+}
+
+
+// the index of the point of `points` nearest to each of `queries` (a k-d tree)
+inline std::vector<std::size_t> nearest_points(const std::vector<Point>& points, const std::vector<Point>& queries)
+{
+  typedef CGAL::Search_traits_3<Kernel> Base_traits;
+  typedef CGAL::Pointer_property_map<Point>::const_type Point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+  typedef typename Search::Tree Tree;
+  typedef typename Search::Distance Distance;
+  const Point_map pmap = CGAL::make_property_map(points);
+  std::vector<std::size_t> ids(points.size());
+  for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
+  Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(pmap));
+  std::vector<std::size_t> result;
+  for(const Point& q : queries) {
+    Search search(tree, q, 1, 0, true, Distance(pmap));
+    result.push_back(search.begin()->first);
+  }
+  return result;
+}
+
+// Writes the prepared mesh into `out` in the addressing order (input vertices in input
+// order, then the added ones) and fills the addressing of `prep`, whose `prepared_vertex`
+// holds on entry the soup point of each input vertex (npos: on no face).
+template <class TriangleMesh>
+void write_prepared_mesh(const Work& w, const Soup& soup, TriangleMesh& out, Mesh_preparation& prep)
+{
+  const std::size_t n = prep.number_of_input_vertices;
+  std::vector<std::pair<std::size_t, Work_vertex> > order;
+  for(Work_vertex v : vertices(w.mesh))
+    order.emplace_back(w.input[v] != Mesh_preparation::npos ? w.input[v] : n + std::size_t(v.idx()), v);
+  std::sort(order.begin(), order.end());
+  std::vector<std::size_t> prepared(num_vertices(w.mesh) + w.mesh.number_of_removed_vertices(), Mesh_preparation::npos);
+  std::vector<std::size_t> prepared_of_input(n, Mesh_preparation::npos);
+  std::vector<Point> points;
+  prep.output_index.clear();
+  std::size_t added = 0;
+  for(const auto& o : order) {
+    prepared[o.second.idx()] = points.size();
+    if(w.input[o.second] != Mesh_preparation::npos) {
+      prepared_of_input[w.input[o.second]] = points.size();
+      prep.output_index.push_back(w.input[o.second]);
+    } else {
+      prep.output_index.push_back(n + added++);
+    }
+    points.push_back(w.mesh.point(o.second));
+  }
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(Work_face f : faces(w.mesh)) {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(Work_vertex v : vertices_around_face(halfedge(f, w.mesh), w.mesh)) t[k++] = prepared[v.idx()];
+    triangles.push_back(t);
+  }
+  CGAL::clear(out);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, out);
+  // the input's vertices: themselves, merged into the first at their position, or (collapsed
+  // by the removal of degenerate faces) the nearest remaining vertex
+  std::vector<std::size_t> collapsed;
+  std::vector<Point> queries;
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::size_t s = prep.prepared_vertex[i];
+    prep.prepared_vertex[i] = Mesh_preparation::npos;
+    const std::size_t r = s == Mesh_preparation::npos ? s : soup.input[s]; // the first input vertex there
+    if(r == Mesh_preparation::npos || w.dropped[r]) continue;
+    if(prepared_of_input[r] != Mesh_preparation::npos) {
+      prep.prepared_vertex[i] = prepared_of_input[r];
+    } else {
+      collapsed.push_back(i);
+      queries.push_back(soup.points[s]);
+    }
+  }
+  if(!collapsed.empty()) {
+    const std::vector<std::size_t> near = nearest_points(points, queries);
+    for(std::size_t j = 0; j < collapsed.size(); ++j) prep.prepared_vertex[collapsed[j]] = near[j];
+  }
+  for(std::size_t i = 0; i < prep.filled_holes.size(); ++i)
+    prep.filled_holes[i].vertex = prep.output_index[prepared[w.hole_vertex[i].idx()]];
+  for(const auto& c : w.chords)
+    prep.split_chords.emplace_back(prep.output_index[prepared[c.first.idx()]], prep.output_index[prepared[c.second.idx()]]);
+}
+
+} // namespace preparation
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H

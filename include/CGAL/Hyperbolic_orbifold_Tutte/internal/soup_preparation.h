@@ -1,0 +1,203 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SOUP_PREPARATION_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SOUP_PREPARATION_H
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Mesh_preparation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <sstream>
+#include <unordered_map>
+#include <vector>
+
+// The polygon-soup half of prepare_polygon_soup_for_embedding(): the soup is read into
+// double points, duplicated points are merged (exact equality), invalid polygons dropped,
+// and, when the soup is not already an oriented manifold polygon mesh, CGAL PMP removes
+// duplicated polygons and orients the soup (duplicating non-manifold vertices). Every point
+// keeps the input index it comes from, so that the prepared mesh stays addressed by the input.
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+namespace preparation {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  std::vector<std::size_t> input; // per point: the input vertex it is (first of equal ones), or npos (added)
+};
+
+// the coordinates of a point of any kernel, or of a std::array<double, 3>
+template <class P>
+std::array<double, 3> coordinates(const P& p)
+{
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+template <class T>
+std::array<double, 3> coordinates(const std::array<T, 3>& p)
+{
+  return {{static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])}};
+}
+
+struct Coordinates_hash
+{
+  std::size_t operator()(const std::array<double, 3>& c) const
+  {
+    std::size_t h = 0;
+    for(double x : c) {
+      if(x == 0) x = 0; // -0.0 and 0.0 are one position
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h = (h ^ (b + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2)));
+    }
+    return h;
+  }
+};
+
+// Reads the points (merging equal positions into the first one) and checks they are finite.
+// `prep.prepared_vertex[i]` temporarily holds the soup point of input vertex i.
+template <class PointRange>
+Status load_points(const PointRange& points, Soup& soup, Mesh_preparation& prep)
+{
+  std::unordered_map<std::array<double, 3>, std::size_t, Coordinates_hash> first;
+  first.reserve(points.size());
+  std::size_t i = 0;
+  for(const auto& p : points) {
+    const std::array<double, 3> c = coordinates(p);
+    if(!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
+      std::ostringstream os;
+      os << "vertex " << i << " has a coordinate that is not a finite number; no repair can place it";
+      return Status::failure(ERROR_NON_FINITE_COORDINATES, os.str());
+    }
+    const auto ins = first.emplace(c, soup.points.size());
+    if(ins.second) {
+      soup.points.push_back(Point(c[0], c[1], c[2]));
+      soup.input.push_back(i);
+    } else {
+      ++prep.merged_duplicate_vertices;
+    }
+    prep.prepared_vertex.push_back(ins.first->second);
+    ++i;
+  }
+  prep.number_of_input_vertices = i;
+  return Status();
+}
+
+// Reads the polygons in soup indices: consecutive repeats are dropped; polygons left with
+// fewer than 3 vertices or with a repeated vertex are removed (counted).
+template <class PolygonRange>
+Status load_polygons(const PolygonRange& polygons, Soup& soup, Mesh_preparation& prep)
+{
+  const std::size_t n = prep.number_of_input_vertices;
+  std::size_t j = 0;
+  std::vector<std::size_t> poly, sorted;
+  for(const auto& polygon : polygons) {
+    poly.clear();
+    for(const auto id : polygon) {
+      const std::size_t v = static_cast<std::size_t>(id);
+      if(v >= n) {
+        std::ostringstream os;
+        os << "face " << j << " uses vertex " << v << ", but there are only " << n << " vertices";
+        return Status::failure(ERROR_WRONG_PARAMETER, os.str());
+      }
+      const std::size_t s = prep.prepared_vertex[v];
+      if(poly.empty() || poly.back() != s)
+        poly.push_back(s);
+    }
+    while(poly.size() > 1 && poly.front() == poly.back())
+      poly.pop_back();
+    sorted = poly;
+    std::sort(sorted.begin(), sorted.end());
+    if(poly.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      ++prep.invalid_faces_removed;
+    else
+      soup.polygons.push_back(poly);
+    ++j;
+  }
+  prep.number_of_input_faces = j;
+  if(soup.polygons.empty())
+    return Status::failure(ERROR_EMPTY_MESH, j == 0 ? "the mesh has no face" : "the mesh has no valid face");
+  return Status();
+}
+
+// Makes the soup an oriented manifold polygon mesh when it is not one: PMP removes
+// duplicated polygons (either orientation) and orients the soup, duplicating the points
+// where the surface is not a manifold (the copies are added vertices).
+inline Status make_oriented_manifold(Soup& soup, Mesh_preparation& prep)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    return Status();
+  prep.duplicate_faces_removed = PMP::merge_duplicate_polygons_in_polygon_soup(soup.points, soup.polygons);
+  const std::vector<std::vector<std::size_t> > before = soup.polygons;
+  const std::size_t points_before = soup.points.size();
+  PMP::orient_polygon_soup(soup.points, soup.polygons);
+  prep.non_manifold_vertices_split = soup.points.size() - points_before;
+  soup.input.resize(soup.points.size(), Mesh_preparation::npos);
+  for(std::size_t f = 0; f < before.size() && f < soup.polygons.size(); ++f) {
+    // a reversed polygon has the same vertices (up to the copies) in the other order
+    const std::vector<std::size_t>& a = before[f];
+    const std::vector<std::size_t>& b = soup.polygons[f];
+    bool same = a.size() == b.size();
+    for(std::size_t i = 0; same && i < a.size(); ++i)
+      same = a[i] == b[i] || (b[i] >= points_before && soup.points[b[i]] == soup.points[a[i]]);
+    if(!same)
+      ++prep.reoriented_faces;
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    return Status::failure(ERROR_NON_MANIFOLD, "the polygon soup could not be made an oriented manifold surface");
+  return Status();
+}
+
+// Drops the points on no polygon; counts the input vertices among them.
+inline void drop_unused_points(Soup& soup, Mesh_preparation& prep)
+{
+  std::vector<std::size_t> new_index(soup.points.size(), Mesh_preparation::npos);
+  for(const auto& poly : soup.polygons)
+    for(std::size_t v : poly)
+      new_index[v] = 0;
+  std::size_t k = 0;
+  for(std::size_t v = 0; v < soup.points.size(); ++v) {
+    if(new_index[v] == Mesh_preparation::npos)
+      continue;
+    new_index[v] = k;
+    soup.points[k] = soup.points[v];
+    soup.input[k] = soup.input[v];
+    ++k;
+  }
+  soup.points.resize(k);
+  soup.input.resize(k);
+  for(auto& poly : soup.polygons)
+    for(std::size_t& v : poly)
+      v = new_index[v];
+  for(std::size_t& p : prep.prepared_vertex) {
+    p = new_index[p];
+    if(p == Mesh_preparation::npos)
+      ++prep.isolated_vertices;
+  }
+}
+
+} // namespace preparation
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_SOUP_PREPARATION_H

@@ -1,0 +1,172 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_PREPARE_MESH_FOR_EMBEDDING_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_PREPARE_MESH_FOR_EMBEDDING_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Mesh_preparation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_preparation_steps.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <exception>
+#include <optional>
+#include <string>
+#include <vector>
+
+/// \file prepare_mesh_for_embedding.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+namespace internal {
+
+template <class PointRange, class PolygonRange, class TriangleMesh, class NamedParameters>
+Status run_preparation(const PointRange& points, const PolygonRange& polygons, TriangleMesh& out,
+                       Mesh_preparation& prep, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace P = preparation;
+  const double max_hole = choose_parameter(get_parameter(np, internal_np::maximum_hole_length), 0.5);
+  const bool keep_largest = choose_parameter(get_parameter(np, internal_np::keep_largest_component), false);
+  const bool split_chords = choose_parameter(get_parameter(np, internal_np::split_boundary_chords), true);
+  std::optional<Orbifold_type> required;
+  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value)
+    required = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
+  if(!(max_hole >= 0) || !std::isfinite(max_hole))
+    return Status::failure(ERROR_WRONG_PARAMETER, "maximum_hole_length must be a finite number >= 0");
+
+  P::Soup soup;
+  Status r = P::load_points(points, soup, prep);
+  if(r) r = P::load_polygons(polygons, soup, prep);
+  if(r) r = P::make_oriented_manifold(soup, prep);
+  if(!r) return r;
+  P::drop_unused_points(soup, prep);
+  P::Work w;
+  r = P::build_work_mesh(soup, w, prep.number_of_input_vertices);
+  if(r) r = P::triangulate_polygons(w, prep);
+  if(r) r = P::keep_one_component(w, keep_largest, prep);
+  if(r) r = P::remove_degenerate_faces(w, prep);
+  if(r) r = P::fill_holes(w, max_hole, required, prep);
+  if(!r) return r;
+  if(prep.type == Disk_type && split_chords)
+    P::split_boundary_chords(w, prep);
+  P::write_prepared_mesh(w, soup, out, prep);
+  return check_mesh(out, prep.type);
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+prepares a polygon soup, as read from a file, so that it can be embedded into a hyperbolic
+orbifold: on success `out` is a triangle mesh that passes `check_mesh()` for the orbifold type
+`prep.type`, and `prep` counts every change and gives the addressing of `out`'s vertices by the
+input's (see `Mesh_preparation`: landmark files keep referring to the input's vertex numbers).
+
+In this order, each step doing nothing on a mesh that does not need it:
+ 1. points at equal positions are merged into the first one (exact comparison of
+    coordinates); a coordinate that is not finite is an error (`ERROR_NON_FINITE_COORDINATES`);
+ 2. repeated consecutive corners are dropped; polygons left with fewer than three corners or
+    with a repeated corner are removed;
+ 3. if the polygons do not form an oriented manifold surface
+    (`CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`), duplicated polygons
+    are removed (`merge_duplicate_polygons_in_polygon_soup()`) and the soup is oriented
+    (`orient_polygon_soup()`), which duplicates the vertices where the surface is not a
+    manifold;
+ 4. points on no polygon (isolated vertices) are dropped;
+ 5. polygons with more than three corners are triangulated (`triangulate_faces()`);
+ 6. a mesh with several connected components fails (`ERROR_SEVERAL_COMPONENTS`, with their
+    sizes) unless `keep_largest_component` is `true`: the largest one (in faces) is kept;
+ 7. degenerate faces (collinear or coincident corners) are removed (`remove_degenerate_faces()`);
+ 8. holes are filled (`triangulate_refine_and_fair_hole()`): every boundary loop no longer than
+    `maximum_hole_length` times the diagonal of the bounding box, except, when the disk type is
+    required, the longest loop. The loops that remain decide the type: none, sphere type; one,
+    disk type; more, an error (`ERROR_WRONG_TOPOLOGY`) that gives their sizes and lengths;
+ 9. disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
+    a boundary ear) is split at its midpoint and the midpoint joined to the two opposite
+    corners (Euler operations), so no triangle gets flat on a side of the disk orbifold's tile;
+10. `check_mesh()` on the result, whose failure (e.g. a closed mesh of genus 1, which no repair
+    makes genus 0) is returned with its own code.
+
+The input's geometry is kept: no input vertex is moved. Faces are added only by the
+triangulation of polygons, the filling of holes and the splitting of chords.
+
+\tparam PointRange a range of points of a CGAL kernel, or of `std::array<double, 3>`
+\tparam PolygonRange a range of ranges of vertex indices (integers)
+\tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point map
+        (`Surface_mesh`, `Polyhedron_3`)
+\param points the input vertices
+\param polygons the input faces, as indices into `points`
+\param out receives the prepared mesh (cleared first; left empty on failure); its `i`-th
+       vertex is the one of output index `prep.output_index[i]`
+\param prep receives the record of what was done (also on failure, as far as it got)
+\param np optional named parameters (namespace `CGAL::Hyperbolic_orbifold_Tutte::parameters`):
+  - `orbifold_type`: the type the result must have (default: the one the remaining loops give);
+  - `maximum_hole_length` (`double`, default 0.5): the longest boundary loop filled, in bounding
+    box diagonals;
+  - `keep_largest_component` (`bool`, default `false`);
+  - `split_boundary_chords` (`bool`, default `true`).
+\return `OK`, or the reason why the mesh cannot be prepared
+*/
+template <class PointRange, class PolygonRange, class TriangleMesh,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Status prepare_polygon_soup_for_embedding(const PointRange& points, const PolygonRange& polygons, TriangleMesh& out,
+                                          Mesh_preparation& prep,
+                                          const NamedParameters& np = CGAL::parameters::default_values())
+{
+  prep = Mesh_preparation();
+  CGAL::clear(out);
+  Status r;
+  try {
+    r = internal::run_preparation(points, polygons, out, prep, np);
+  } catch(const std::exception& e) { // CGAL's failure exceptions, bad_alloc
+    r = Status::failure(ERROR_NON_MANIFOLD, std::string("CGAL could not repair the mesh: ") + e.what());
+  }
+  if(!r)
+    CGAL::clear(out);
+  return r;
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+same as `prepare_polygon_soup_for_embedding()` for a polygon mesh: input vertex `i` is the
+`i`-th vertex of `vertices(in)`, input face `j` the `j`-th face of `faces(in)`.
+\tparam PolygonMesh a model of `FaceListGraph` with an internal vertex point map
+*/
+template <class PolygonMesh, class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Status prepare_mesh_for_embedding(const PolygonMesh& in, TriangleMesh& out, Mesh_preparation& prep,
+                                  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::property_traits<typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
+  const internal::Dense_index<vertex_descriptor> index(vertices(in));
+  std::vector<Point> points;
+  for(vertex_descriptor v : vertices(in))
+    points.push_back(get(CGAL::vertex_point, in, v));
+  std::vector<std::vector<std::size_t> > polygons;
+  for(auto f : faces(in)) {
+    polygons.emplace_back();
+    for(vertex_descriptor v : vertices_around_face(halfedge(f, in), in))
+      polygons.back().push_back(index(v));
+  }
+  return prepare_polygon_soup_for_embedding(points, polygons, out, prep, np);
+}
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_PREPARE_MESH_FOR_EMBEDDING_H
