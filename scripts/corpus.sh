@@ -2,14 +2,20 @@
 # Tries every mesh of a corpus as a new user would: 7 automatic landmarks, then embed
 # (certified with exact predicates by the embed job itself). Prints one line per mesh
 # (mesh, vertices, verdict, reason) and the totals.
-#   scripts/corpus.sh [--repair] DIR_OR_FILE ...
+#   scripts/corpus.sh [--repair [--largest-component] [--max-hole F]] DIR_OR_FILE ...
 # The meshes are read where they are (e.g. ../shared/data, libcgal-demo's data/meshes);
 # nothing is copied. Meshes with fewer than 30 vertices are skipped.
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bin="${HOT_BIN:-$root/build/bin/hyperbolic_orbifold_tutte}"
-repair=()
-if [ "${1:-}" = "--repair" ]; then repair=(--repair); shift; fi
+repair=()  # the repair options, given to both landmarks and embed
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --repair|--largest-component) repair+=("$1"); shift ;;
+    --max-hole) repair+=("$1" "$2"); shift 2 ;;
+    *) break ;;
+  esac
+done
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 files=()
 for a in "$@"; do

@@ -14,6 +14,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
 
+#include "io/prepared_input.h" // Repair_options
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -157,6 +159,32 @@ inline HOT::Orbifold_type parse_orbifold(const std::string& s)
 }
 
 // --order given|tsp; `fallback` when the option is absent (empty: the default of the type)
+// the repair options of embed, landmarks, map and collection: --repair, --largest-component,
+// --max-hole F and --snap-landmarks (the last one also works without --repair)
+inline const std::set<std::string>& repair_flags()
+{
+  static const std::set<std::string> f{"repair", "largest-component", "snap-landmarks"};
+  return f;
+}
+
+inline hot_tools::Repair_options parse_repair_options(const Options& opt)
+{
+  hot_tools::Repair_options r;
+  r.repair = opt.has("repair");
+  r.largest_component = opt.has("largest-component");
+  r.snap_landmarks = opt.has("snap-landmarks");
+  if(opt.has("max-hole")) {
+    const std::string s = opt.get("max-hole");
+    char* end = nullptr;
+    r.max_hole = std::strtod(s.c_str(), &end);
+    if(s.empty() || end == nullptr || *end != '\0' || !(r.max_hole >= 0) || !(r.max_hole <= 1e6))
+      throw Usage_error{"--max-hole must be a number >= 0 (a length in bounding box diagonals), got '" + s + "'"};
+  }
+  if((r.largest_component || opt.has("max-hole")) && !r.repair)
+    throw Usage_error{std::string(r.largest_component ? "--largest-component" : "--max-hole") + " needs --repair"};
+  return r;
+}
+
 inline std::string parse_order(const Options& opt, const std::string& fallback)
 {
   const std::string s = opt.has("order") ? opt.get("order") : fallback;

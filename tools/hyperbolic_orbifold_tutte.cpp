@@ -56,7 +56,7 @@ const char* const usage_text =
   "      (products of at most D side pairings, default 3) in the Poincare disk\n"
   "  hyperbolic_orbifold_tutte embed --mesh IN --cones CONES [--orbifold sphere|disk]\n"
   "      [--weights cotan|mvc|uniform] [--order given|tsp] --out OUT.obj [--svg PICTURE.svg]\n"
-  "      [--report REPORT.json] [--recentre]\n"
+  "      [--report REPORT.json] [--recentre] [REPAIR]\n"
   "      embeds the mesh into the hyperbolic orbifold whose cones are the landmarks CONES\n"
   "      (0-based vertex indices); OUT.obj holds the input vertices (v), one Poincare point\n"
   "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
@@ -64,19 +64,31 @@ const char* const usage_text =
   "      --recentre: a part too squeezed for double in the tile (a long protrusion without\n"
   "      landmarks) may be solved in a moved frame; the report then gives the frame.\n"
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
-  "      --out MAP.txt [--colors-out B_colored.ply]\n"
+  "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off] [REPAIR]\n"
   "      maps every vertex of A onto B through the common orbifold (landmark i of CA to\n"
-  "      landmark i of CB); MAP.txt: one line 'face b0 b1 b2' per vertex of A\n"
-  "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs]\n"
+  "      landmark i of CB); MAP.txt: one line 'face b0 b1 b2' per vertex of A (with --repair:\n"
+  "      per vertex of A's file, then per vertex the repair added; '-1 0 0 0' for a vertex on\n"
+  "      no face; faces are those of the repaired B, written by --prepared-target)\n"
+  "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [REPAIR]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
   "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt)\n"
-  "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES\n"
-  "      writes K well-spread landmarks of the mesh\n"
+  "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES [REPAIR]\n"
+  "      writes K well-spread landmarks of the mesh (vertices of the file, also with --repair)\n"
   "  hyperbolic_orbifold_tutte cut --mesh IN --cones CONES [--order given|tsp] --out OUT.selection.txt\n"
   "      cuts the closed genus-0 mesh along a simple path through the cones in order (the\n"
   "      given one by default, or the paper's tour) and writes it as CGAL's selection file:\n"
   "      line 1 the cones in that order, line 2 empty, line 3 the seam edges 's0 t0 s1 t1 ...'\n"
-  "      (for Seam_mesh::add_seams() and Surface_mesh_parameterization::locate_cones())\n";
+  "      (for Seam_mesh::add_seams() and Surface_mesh_parameterization::locate_cones())\n"
+  "  REPAIR (embed, map, collection, landmarks):\n"
+  "      --repair: prepares the mesh first (merges duplicated border vertices, orients, removes\n"
+  "      invalid, duplicated and degenerate faces, splits non-manifold vertices, triangulates\n"
+  "      polygons, fills holes, splits the inner edges of a disk that join two boundary\n"
+  "      vertices) and says what it did; landmark files and written vertex numbers stay those\n"
+  "      of the input file, the added vertices come after them\n"
+  "      --max-hole F: fills boundary loops up to F bounding box diagonals long (default 0.5)\n"
+  "      --largest-component: keeps the largest connected component of a mesh with several\n"
+  "      --snap-landmarks: moves disk-type corners that are not on the boundary to the\n"
+  "      nearest boundary vertex (also without --repair)\n";
 
 int run_tile(int argc, char** argv)
 {
@@ -115,26 +127,45 @@ typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
 
 typedef Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> UV_map;
 
-// reads and checks a mesh and its landmarks (the same calls as the fuzz target,
-// fuzz/fuzz_mesh_reader.cpp); returns the orbifold type (required or detected)
+// a mesh file read for a job (as is, or prepared with --repair), its addressing by the file's
+// vertices, and the landmarks moved by --snap-landmarks
+struct Input
+{
+  hot_tools::Input_mesh file;
+  std::vector<hot_tools::Landmark_snap_record> snaps;
+};
+
+// reads and checks (or prepares) a mesh and its landmarks (without --repair the same calls as
+// the fuzz target, fuzz/fuzz_mesh_reader.cpp); returns the orbifold type (required or detected)
 HOT::Orbifold_type read_mesh_and_landmarks(const std::string& mesh_path, const std::string& cones_path,
-                                           std::optional<HOT::Orbifold_type> required_type, Surface_mesh& m,
-                                           std::vector<SM_vertex>& landmarks)
+                                           std::optional<HOT::Orbifold_type> required_type,
+                                           const hot_tools::Repair_options& repair, Surface_mesh& m,
+                                           std::vector<SM_vertex>& landmarks, Input& in)
 {
   HOT::Mesh_info info;
-  require(hot_tools::read_and_check_mesh(mesh_path, required_type, m, &info));
-  require(hot_tools::read_and_check_landmarks(cones_path, m, info.type, landmarks));
+  require(hot_tools::read_input_mesh(mesh_path, required_type, repair, m, in.file, &info));
+  require(hot_tools::read_input_landmarks(cones_path, m, in.file, info.type, repair.snap_landmarks, landmarks, &in.snaps));
   return info.type;
 }
 
-// the 0-based file indices of vertices of a mesh read by read_mesh(), which keeps the file's
-// vertex order: idx() is the file's index
-std::vector<std::size_t> file_indices(const std::vector<SM_vertex>& vs)
+// the 0-based indices, in the files (the input file's, then the added ones), of vertices of a
+// mesh read by read_mesh_and_landmarks()
+std::vector<std::size_t> file_indices(const std::vector<SM_vertex>& vs, const hot_tools::Input_mesh& in)
 {
   std::vector<std::size_t> r;
   for(SM_vertex v : vs)
-    r.push_back(v.idx());
+    r.push_back(hot_tools::output_vertex(v, &in));
   return r;
+}
+
+// one line on stdout saying what --repair and --snap-landmarks changed
+void print_repair(const std::string& path, const Input& in)
+{
+  if(in.file.repaired)
+    std::cout << "repaired " << path << ": " << in.file.prep.summary() << std::endl;
+  for(const auto& s : in.snaps)
+    std::cout << "snapped landmark " << s.landmark << " of " << path << " from vertex " << s.from << " to boundary vertex "
+              << s.to << " (distance " << s.distance << ")" << std::endl;
 }
 
 // Writes the embedding's SVG: the tiling (faded tile copies), the embedded mesh in the
@@ -195,11 +226,14 @@ struct Embed_job
   std::optional<HOT::Orbifold_type> required_type;
   HOT::Weight_type weights = HOT::Cotangent;
   bool recentre = false;
+  hot_tools::Repair_options repair;
 };
 
 Embed_job parse_embed_options(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report"}, {"recentre"});
+  std::set<std::string> flags = repair_flags();
+  flags.insert("recentre");
+  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole"}, flags);
   Embed_job job;
   job.request.mesh_path = opt.get("mesh");
   job.cones_path = opt.get("cones");
@@ -220,6 +254,7 @@ Embed_job parse_embed_options(int argc, char** argv)
   if(opt.has("report"))
     job.report_path = opt.get("report");
   job.recentre = opt.has("recentre");
+  job.repair = parse_repair_options(opt);
   return job;
 }
 
@@ -242,7 +277,7 @@ HOT::Embedding_statistics embed_mesh(const Embed_job& job, Surface_mesh& m, cons
 
 // OUT.obj, and the picture and the report when asked for
 void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_map& uv,
-                         const std::vector<SM_vertex>& landmarks, const HOT::Embedding_statistics& st)
+                         const std::vector<SM_vertex>& landmarks, const HOT::Embedding_statistics& st, const Input& in)
 {
   const HOT::Orbifold_type type = job.request.type;
   HOT::Orbifold_tile<> tile;
@@ -251,7 +286,7 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
     tile = tile.transformed(st.frame); // the tile of the written coordinates
 
   Output_files files;
-  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv); });
+  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr); });
   if(job.svg_path) {
     std::ostringstream title;
     title << (type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold, " << landmarks.size() << " cones, "
@@ -270,15 +305,21 @@ int run_embed(int argc, char** argv)
   Embed_job job = parse_embed_options(argc, argv);
   Surface_mesh m;
   std::vector<SM_vertex> landmarks;
-  const HOT::Orbifold_type type = read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, m, landmarks);
+  Input in;
+  const HOT::Orbifold_type type =
+    read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, job.repair, m, landmarks, in);
+  print_repair(job.request.mesh_path, in);
   job.request.type = type;
   if(job.request.order.empty())
     job.request.order = (type == HOT::Sphere_type) ? "tsp" : "given";
-  job.request.cones = file_indices(landmarks);
+  job.request.cones = file_indices(landmarks, in.file);
+  job.request.input = &in.file;
+  if(job.repair.snap_landmarks)
+    job.request.snaps = &in.snaps;
 
   const UV_map uv = m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
   const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv);
-  write_embed_outputs(job, m, uv, landmarks, st);
+  write_embed_outputs(job, m, uv, landmarks, st, in);
   std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
             << (type == HOT::Sphere_type ? "sphere" : "disk") << " type) in "
             << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
@@ -296,11 +337,19 @@ struct Embedded
   std::vector<SM_vertex> ordered;                    // in cone order
   UV_map uv;
   HOT::Embedding_statistics stats;
+  Input in;                                          // the file's addressing (--repair)
 };
 
-void read_and_check(const std::string& mesh_path, const std::string& cones_path, Embedded& e)
+void read_and_check(const std::string& mesh_path, const std::string& cones_path, const hot_tools::Repair_options& repair, Embedded& e)
 {
-  e.type = read_mesh_and_landmarks(mesh_path, cones_path, std::nullopt, e.mesh, e.landmarks);
+  e.type = read_mesh_and_landmarks(mesh_path, cones_path, std::nullopt, repair, e.mesh, e.landmarks, e.in);
+  print_repair(mesh_path, e.in);
+}
+
+// the addressing to write a mesh's files with: the file's (--repair), or none (as read)
+const hot_tools::Input_mesh* addressing(const Input& in)
+{
+  return in.file.repaired ? &in.file : nullptr;
 }
 
 void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::string& name)
@@ -343,11 +392,13 @@ std::vector<std::size_t> map_cone_order(const Embedded& A)
 
 int run_map(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"source", "source-cones", "target", "target-cones", "out", "colors-out"});
+  const Options opt(argc, argv, 2, {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "max-hole"},
+                    repair_flags());
   const std::string out = opt.get("out");
+  const hot_tools::Repair_options repair = parse_repair_options(opt);
   Embedded A, B;
-  read_and_check(opt.get("source"), opt.get("source-cones"), A);
-  read_and_check(opt.get("target"), opt.get("target-cones"), B);
+  read_and_check(opt.get("source"), opt.get("source-cones"), repair, A);
+  read_and_check(opt.get("target"), opt.get("target-cones"), repair, B);
   check_map_pair(A, B);
   const std::vector<std::size_t> order = map_cone_order(A);
   embed_in_order(A, order, "source");
@@ -362,7 +413,9 @@ int run_map(int argc, char** argv)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
   Output_files files;
-  files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f); });
+  files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, addressing(A.in)); });
+  if(opt.has("prepared-target"))
+    files.write(opt.get("prepared-target"), [&](std::ostream& os) { hot_tools::write_addressed_off(os, B.mesh, B.in.file); });
   if(opt.has("colors-out")) {
     // a smooth colouring of A, carried to B by f_BA
     const Locator locA(A.mesh, A.uv, A.type, k, HOT::Hyperboloid_linear);
@@ -411,13 +464,15 @@ Manifest read_manifest(const std::string& manifest)
 }
 
 // reads and checks every mesh of the manifest into the collection; returns the orbifold type
-HOT::Orbifold_type read_collection(const Manifest& entries, Collection& coll)
+HOT::Orbifold_type read_collection(const Manifest& entries, const hot_tools::Repair_options& repair, Collection& coll,
+                                   std::vector<hot_tools::Input_mesh>& inputs)
 {
   HOT::Orbifold_type type = HOT::Sphere_type;
   std::size_t k = 0;
   for(std::size_t i = 0; i < entries.size(); ++i) {
     Embedded e;
-    read_and_check(entries[i].first, entries[i].second, e);
+    read_and_check(entries[i].first, entries[i].second, repair, e);
+    inputs.push_back(e.in.file);
     if(i == 0) {
       type = e.type;
       k = e.landmarks.size();
@@ -514,8 +569,9 @@ Collection_maps map_collection(Collection& coll, bool all_pairs)
 // DIR/<i>_<name>.obj per mesh, with --all-pairs DIR/<a>_to_<b>.map.txt per ordered pair, and
 // DIR/report.json
 void write_collection_files(const std::string& dir, const Manifest& entries, Collection& coll, HOT::Orbifold_type type,
-                            const Collection_maps& maps, bool all_pairs)
+                            const Collection_maps& maps, bool all_pairs, const std::vector<hot_tools::Input_mesh>& inputs)
 {
+  auto addressed = [&](std::size_t i) { return inputs[i].repaired ? &inputs[i] : nullptr; };
   const std::size_t N = entries.size();
   std::vector<std::string> mesh_paths;
   for(const auto& e : entries)
@@ -528,49 +584,92 @@ void write_collection_files(const std::string& dir, const Manifest& entries, Col
     throw std::runtime_error("cannot create the folder '" + dir + "'");
   Output_files files;
   for(std::size_t i = 0; i < N; ++i)
-    files.write(dir + "/" + stem(i) + ".obj", [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i)); });
+    files.write(dir + "/" + stem(i) + ".obj", [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i), addressed(i)); });
   if(all_pairs)
     for(std::size_t a = 0; a < N; ++a)
       for(std::size_t b = 0; b < N; ++b) {
         if(a == b) continue;
         const auto& f = coll.map(a, b);
         files.write(dir + "/" + std::to_string(a) + "_to_" + std::to_string(b) + ".map.txt",
-                    [&](std::ostream& os) { hot_tools::write_map(os, coll.mesh(b), coll.locator(b), f); });
+                    [&](std::ostream& os) { hot_tools::write_map(os, coll.mesh(b), coll.locator(b), f, addressed(a)); });
       }
-  files.write(dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, mesh_paths, coll, type, maps); });
+  files.write(dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, mesh_paths, coll, type, maps, &inputs); });
   files.commit();
 }
 
 int run_collection(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"manifest", "out"}, {"all-pairs"});
+  std::set<std::string> flags = repair_flags();
+  flags.insert("all-pairs");
+  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole"}, flags);
   const std::string manifest = opt.get("manifest"), dir = opt.get("out");
   const bool all_pairs = opt.has("all-pairs");
+  const hot_tools::Repair_options repair = parse_repair_options(opt);
   const Manifest entries = read_manifest(manifest);
   Collection coll;
-  const HOT::Orbifold_type type = read_collection(entries, coll);
+  std::vector<hot_tools::Input_mesh> inputs;
+  const HOT::Orbifold_type type = read_collection(entries, repair, coll, inputs);
   embed_collection(entries, coll);
   const Collection_maps maps = map_collection(coll, all_pairs);
-  write_collection_files(dir, entries, coll, type, maps, all_pairs);
+  write_collection_files(dir, entries, coll, type, maps, all_pairs, inputs);
   std::cout << "collection of " << entries.size() << " meshes embedded" << (all_pairs ? " and mapped pairwise" : "") << "; "
             << maps.triples << " triples checked, cycle consistency " << maps.cycle << "; wrote " << dir << std::endl;
   return EXIT_SUCCESS;
 }
 
+// With --repair the landmarks are vertices of the input file: a landmark that falls on a vertex
+// the repair added (inside a filled hole, or a copy of a split non-manifold vertex) moves to the
+// nearest input vertex, ring by ring along the edges, that is not a landmark yet and is on the
+// boundary if the landmark was.
+std::vector<SM_vertex> input_vertices_only(const Surface_mesh& m, const hot_tools::Input_mesh& in, std::vector<SM_vertex> lm)
+{
+  const std::size_t n = in.prep.number_of_input_vertices;
+  auto on_border = [&](SM_vertex v) { return bool(CGAL::is_border(v, m)); };
+  std::set<SM_vertex> taken(lm.begin(), lm.end());
+  for(SM_vertex& v : lm) {
+    if(hot_tools::output_vertex(v, &in) < n) continue;
+    // breadth-first over the one-rings, nearest first within a ring
+    std::vector<SM_vertex> ring(1, v);
+    std::set<SM_vertex> seen(ring.begin(), ring.end());
+    SM_vertex found = v;
+    while(found == v && !ring.empty()) {
+      std::vector<SM_vertex> next;
+      for(SM_vertex u : ring)
+        for(SM_vertex w : vertices_around_target(halfedge(u, m), m))
+          if(seen.insert(w).second) next.push_back(w);
+      std::sort(next.begin(), next.end(), [&](SM_vertex a, SM_vertex b) {
+        return CGAL::squared_distance(m.point(a), m.point(v)) < CGAL::squared_distance(m.point(b), m.point(v));
+      });
+      for(SM_vertex w : next)
+        if(found == v && hot_tools::output_vertex(w, &in) < n && !taken.count(w) && on_border(w) == on_border(v)) found = w;
+      ring.swap(next);
+    }
+    taken.erase(v);
+    taken.insert(found);
+    v = found;
+  }
+  return lm;
+}
+
 int run_landmarks(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"mesh", "count", "out"});
+  const Options opt(argc, argv, 2, {"mesh", "count", "out", "max-hole"}, repair_flags());
   const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
   const long k = opt.get_int("count", 1, 100000);
+  const hot_tools::Repair_options repair = parse_repair_options(opt);
   Surface_mesh m;
-  require(hot_tools::read_and_check_mesh(mesh_path, std::nullopt, m));
+  Input in;
+  require(hot_tools::read_input_mesh(mesh_path, std::nullopt, repair, m, in.file));
+  print_repair(mesh_path, in);
   if(static_cast<std::size_t>(k) > num_vertices(m))
     throw Usage_error{"--count is larger than the number of vertices (" + std::to_string(num_vertices(m)) + ")"};
-  const std::vector<SM_vertex> lm = HOT::select_landmarks(m, static_cast<std::size_t>(k));
+  std::vector<SM_vertex> lm = HOT::select_landmarks(m, static_cast<std::size_t>(k));
   if(lm.size() != static_cast<std::size_t>(k))
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the boundary has fewer than " + std::to_string(k) + " vertices"};
+  if(in.file.repaired)
+    lm = input_vertices_only(m, in.file, lm);
   write_file_atomically(out, [&](std::ostream& os) {
-    for(std::size_t i : file_indices(lm))
+    for(std::size_t i : file_indices(lm, in.file))
       os << i << "\n";
   });
   std::cout << "wrote " << k << " landmarks of " << mesh_path << " to " << out << std::endl;

@@ -12,6 +12,8 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <cstddef>
+#include "prepared_input.h"
+
 #include <ostream>
 #include <utility>
 #include <vector>
@@ -22,11 +24,39 @@
 
 namespace hot_tools {
 
+// the index of a vertex of a mesh read by read_input_mesh() in the files written for it
+template <class Vertex_index>
+std::size_t output_vertex(Vertex_index v, const Input_mesh* in)
+{
+  return in ? in->prep.output_index[v.idx()] : std::size_t(v.idx());
+}
+
+// Writes the vertices of `m` (prefix + point per line) in the files' order: the file's
+// vertices, then the ones the repair added (all of `m`'s in order without `in`).
+template <class Point_3>
+void write_addressed_vertices(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const Input_mesh* in, const char* prefix)
+{
+  if(!in) {
+    for(auto v : vertices(m))
+      os << prefix << m.point(v) << "\n";
+    return;
+  }
+  for(const auto& p : in->file_points)
+    os << prefix << Point_3(p[0], p[1], p[2]) << "\n";
+  for(auto v : vertices(m))
+    if(in->prep.output_index[v.idx()] >= in->prep.number_of_input_vertices)
+      os << prefix << m.point(v) << "\n";
+}
+
 // Writes an embedding as OBJ: v = input vertices, vt = one Poincare point per cut-mesh
 // vertex (corners of a vertex with equal points share their vt), f = input faces in input
 // order with their corners' vt. `uv` maps each halfedge to the point of its target corner.
+// With `in` (a prepared mesh, see prepared_input.h), the vertices are addressed as the file's:
+// v lines = the file's vertices in file order, then the vertices the repair added; f lines =
+// the prepared mesh's faces.
 template <class Point_3, class HalfedgeUVMap>
-void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const HalfedgeUVMap& uv)
+void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const HalfedgeUVMap& uv,
+                         const Input_mesh* in = nullptr)
 {
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
@@ -49,15 +79,14 @@ void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
     }
   os.precision(17);
   os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
-  for(typename Mesh::Vertex_index v : vertices(m))
-    os << "v " << m.point(v) << "\n";
+  write_addressed_vertices(os, m, in, "v ");
   for(const auto& p : vt_points)
     os << "vt " << p.x() << " " << p.y() << "\n";
   for(typename Mesh::Face_index f : faces(m)) {
     os << "f";
     // read_mesh() builds face f with source(halfedge(f)) = the file's first vertex of the face
     for(typename Mesh::Halfedge_index h : halfedges_around_face(prev(halfedge(f, m), m), m))
-      os << " " << target(h, m).idx() + 1 << "/" << corner_vt[h.idx()] + 1;
+      os << " " << output_vertex(target(h, m), in) + 1 << "/" << corner_vt[h.idx()] + 1;
     os << "\n";
   }
 }

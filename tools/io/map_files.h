@@ -12,6 +12,9 @@
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include "embedding_obj.h"
+#include "prepared_input.h"
+
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -47,14 +50,43 @@ std::array<double, 3> input_order_barycentric(const CGAL::Surface_mesh<Point_3>&
 // Writes the map f from a source mesh onto `target_mesh` (located by `target_locator`): one line
 // `face b0 b1 b2` per source vertex in input order, face = the 0-based face of the target in
 // input order, b = barycentric coordinates w.r.t. that face's vertices in input order.
+// With `source` (a prepared source mesh), one line per vertex of the source's files (the file's
+// vertices, then the added ones): `-1 0 0 0` for a file vertex on no face of the prepared mesh.
 template <class Point_3, class Locator>
 void write_map(std::ostream& os, const CGAL::Surface_mesh<Point_3>& target_mesh, const Locator& target_locator,
-               const std::vector<typename Locator::Location>& f)
+               const std::vector<typename Locator::Location>& f, const Input_mesh* source = nullptr)
 {
   os.precision(17);
-  for(const typename Locator::Location& l : f) {
+  auto line = [&](const typename Locator::Location& l) {
     const std::array<double, 3> b = input_order_barycentric(target_mesh, target_locator, l);
     os << l.face_index << " " << b[0] << " " << b[1] << " " << b[2] << "\n";
+  };
+  if(!source) {
+    for(const typename Locator::Location& l : f) line(l);
+    return;
+  }
+  const HOT::Mesh_preparation& prep = source->prep;
+  for(std::size_t p : prep.prepared_vertex) {
+    if(p == HOT::Mesh_preparation::npos) os << "-1 0 0 0\n";
+    else line(f[p]);
+  }
+  for(std::size_t p = 0; p < prep.output_index.size(); ++p)
+    if(prep.output_index[p] >= prep.number_of_input_vertices) line(f[p]);
+}
+
+// Writes a mesh read by read_input_mesh() as OFF in the files' addressing (the file's vertices,
+// then the added ones; the faces of the prepared mesh in order, as MAP.txt numbers them).
+template <class Point_3>
+void write_addressed_off(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const Input_mesh& in)
+{
+  os.precision(17);
+  os << "OFF\n" << in.file_points.size() + in.prep.number_of_added_vertices() << " " << num_faces(m) << " 0\n";
+  write_addressed_vertices(os, m, &in, "");
+  for(auto fc : faces(m)) {
+    os << "3";
+    for(auto h : halfedges_around_face(prev(halfedge(fc, m), m), m))
+      os << " " << output_vertex(target(h, m), &in);
+    os << "\n";
   }
 }
 

@@ -12,6 +12,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
 
 #include <cstddef>
+#include "prepared_input.h"
+
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -37,6 +39,41 @@ inline std::string json_escape(const std::string& s)
   return r;
 }
 
+// `"repair": {...}` for a mesh read with --repair: every count of the preparation, the holes
+// filled and the chords split (vertex numbers as in the written files), and a summary line
+inline void write_repair_json(std::ostream& os, const HOT::Mesh_preparation& p, const char* indent)
+{
+  os << "{\"summary\": \"" << json_escape(p.summary()) << "\", \"input_vertices\": " << p.number_of_input_vertices
+     << ", \"input_faces\": " << p.number_of_input_faces << ", \"added_vertices\": " << p.number_of_added_vertices()
+     << ",\n" << indent << " \"merged_duplicate_vertices\": " << p.merged_duplicate_vertices << ", \"isolated_vertices\": " << p.isolated_vertices
+     << ", \"invalid_faces_removed\": " << p.invalid_faces_removed << ", \"duplicate_faces_removed\": " << p.duplicate_faces_removed
+     << ", \"reoriented_faces\": " << p.reoriented_faces << ", \"non_manifold_vertices_split\": " << p.non_manifold_vertices_split
+     << ",\n" << indent << " \"polygons_triangulated\": " << p.polygons_triangulated << ", \"triangles_from_polygons\": " << p.triangles_from_polygons
+     << ", \"degenerate_faces_removed\": " << p.degenerate_faces_removed << ", \"components_removed\": " << p.components_removed
+     << ", \"component_faces_removed\": " << p.component_faces_removed << ", \"faces_added_by_hole_filling\": " << p.faces_added_by_hole_filling()
+     << ",\n" << indent << " \"filled_holes\": [";
+  for(std::size_t i = 0; i < p.filled_holes.size(); ++i) {
+    const HOT::Filled_hole& h = p.filled_holes[i];
+    os << (i ? ", " : "") << "{\"vertex\": " << h.vertex << ", \"boundary_vertices\": " << h.boundary_vertices
+       << ", \"boundary_length\": " << h.boundary_length << ", \"faces_added\": " << h.faces_added
+       << ", \"vertices_added\": " << h.vertices_added << ", \"faired\": " << (h.faired ? "true" : "false") << "}";
+  }
+  os << "],\n" << indent << " \"split_chords\": [";
+  for(std::size_t i = 0; i < p.split_chords.size(); ++i)
+    os << (i ? ", " : "") << "[" << p.split_chords[i].first << ", " << p.split_chords[i].second << "]";
+  os << "]}";
+}
+
+// `[{"landmark": i, "from": a, "to": b, "distance": d}, ...]` for --snap-landmarks
+inline void write_snaps_json(std::ostream& os, const std::vector<Landmark_snap_record>& snaps)
+{
+  os << "[";
+  for(std::size_t i = 0; i < snaps.size(); ++i)
+    os << (i ? ", " : "") << "{\"landmark\": " << snaps[i].landmark << ", \"from\": " << snaps[i].from << ", \"to\": "
+       << snaps[i].to << ", \"distance\": " << snaps[i].distance << "}";
+  os << "]";
+}
+
 // what `embed` was asked to do, as its report repeats it
 struct Embedding_request
 {
@@ -45,6 +82,8 @@ struct Embedding_request
   HOT::Orbifold_type type = HOT::Sphere_type;
   std::string weights = "cotan";           // cotan, mvc or uniform
   std::string order;                       // given or tsp
+  const Input_mesh* input = nullptr;       // with --repair: the preparation (reported)
+  const std::vector<Landmark_snap_record>* snaps = nullptr; // with --snap-landmarks
 };
 
 // Writes the report of `embed`: the request, the mesh's sizes, the landmark order used, and
@@ -56,8 +95,18 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
   const HOT::Embedding_certificate& c = st.certificate;
   os.precision(17);
   os << "{\n  \"mesh\": \"" << json_escape(request.mesh_path) << "\",\n"
-     << "  \"vertices\": " << vertices << ",\n  \"faces\": " << faces << ",\n"
-     << "  \"cones\": [";
+     << "  \"vertices\": " << vertices << ",\n  \"faces\": " << faces << ",\n";
+  if(request.input && request.input->repaired) {
+    os << "  \"repair\": ";
+    write_repair_json(os, request.input->prep, "  ");
+    os << ",\n";
+  }
+  if(request.snaps) {
+    os << "  \"snapped_landmarks\": ";
+    write_snaps_json(os, *request.snaps);
+    os << ",\n";
+  }
+  os << "  \"cones\": [";
   for(std::size_t i = 0; i < cone_indices.size(); ++i) os << (i ? ", " : "") << cone_indices[i];
   os << "],\n  \"orbifold\": \"" << (request.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n"
      << "  \"weights\": \"" << request.weights << "\",\n  \"order\": \"" << request.order << "\",\n"
@@ -101,7 +150,8 @@ struct Collection_maps
 // `mesh_paths[i]` is the file of the collection's mesh i.
 template <class Collection>
 void write_collection_report(std::ostream& os, const std::vector<std::string>& mesh_paths, Collection& coll,
-                             HOT::Orbifold_type type, const Collection_maps& maps)
+                             HOT::Orbifold_type type, const Collection_maps& maps,
+                             const std::vector<Input_mesh>* inputs = nullptr)
 {
   const std::size_t N = mesh_paths.size();
   os.precision(17);
@@ -112,7 +162,12 @@ void write_collection_report(std::ostream& os, const std::vector<std::string>& m
        << num_vertices(coll.mesh(i)) << ", \"embedding_seconds\": "
        << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << ", \"iterations\": "
        << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
-       << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false") << "}" << (i + 1 < N ? "," : "") << "\n";
+       << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false");
+    if(inputs && (*inputs)[i].repaired) {
+      os << ",\n     \"repair\": ";
+      write_repair_json(os, (*inputs)[i].prep, "     ");
+    }
+    os << "}" << (i + 1 < N ? "," : "") << "\n";
   }
   os << "  ],\n  \"orbifold\": \"" << (type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << coll.order().size()
      << ",\n  \"landmark_order_used\": [";

@@ -64,7 +64,7 @@ struct Mesh_preparation
   /// per vertex of the prepared mesh, its output index (see above): increasing
   std::vector<std::size_t> output_index;
 
-  std::size_t merged_duplicate_vertices = 0;  ///< input vertices merged into an earlier one at the same position
+  std::size_t merged_duplicate_vertices = 0;  ///< border vertices merged into an earlier one at the same position
   std::size_t isolated_vertices = 0;          ///< input vertices on no face (dropped)
   std::size_t invalid_faces_removed = 0;      ///< polygons with fewer than 3 distinct vertices, or a repeated one
   std::size_t duplicate_faces_removed = 0;    ///< polygons on the same vertices as another (either orientation)

@@ -48,6 +48,7 @@ Status run_preparation(const PointRange& points, const PolygonRange& polygons, T
   P::Soup soup;
   Status r = P::load_points(points, soup, prep);
   if(r) r = P::load_polygons(polygons, soup, prep);
+  if(r) r = P::merge_border_duplicates(soup, prep);
   if(r) r = P::make_oriented_manifold(soup, prep);
   if(!r) return r;
   P::drop_unused_points(soup, prep);
@@ -75,10 +76,12 @@ orbifold: on success `out` is a triangle mesh that passes `check_mesh()` for the
 input's (see `Mesh_preparation`: landmark files keep referring to the input's vertex numbers).
 
 In this order, each step doing nothing on a mesh that does not need it:
- 1. points at equal positions are merged into the first one (exact comparison of
-    coordinates); a coordinate that is not finite is an error (`ERROR_NON_FINITE_COORDINATES`);
- 2. repeated consecutive corners are dropped; polygons left with fewer than three corners or
-    with a repeated corner are removed;
+ 1. a coordinate that is not finite is an error (`ERROR_NON_FINITE_COORDINATES`); repeated
+    consecutive corners are dropped; polygons left with fewer than three corners or with a
+    repeated corner are removed;
+ 2. points on the border of the soup (on an edge of only one polygon) at equal positions
+    (exact comparison) are merged into the first one, which glues unwelded seams and
+    triangle soups (STL); distinct inner vertices at one position are kept apart;
  3. if the polygons do not form an oriented manifold surface
     (`CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`), duplicated polygons
     are removed (`merge_duplicate_polygons_in_polygon_soup()`) and the soup is oriented

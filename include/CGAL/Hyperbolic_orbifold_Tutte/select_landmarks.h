@@ -8,6 +8,11 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cstddef>
 
 #include <vector>
 
@@ -43,6 +48,70 @@ select_landmarks(const TriangleMesh& tm, std::size_t k)
   for(std::size_t i : internal::sample_landmarks(tm, get(CGAL::vertex_point, tm), k))
     result.push_back(verts[i]);
   return result;
+}
+
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+a landmark moved onto the boundary by `snap_landmarks_to_border()`.
+*/
+template <class VertexDescriptor>
+struct Landmark_snap
+{
+  std::size_t landmark = 0; ///< its position in the landmark list
+  VertexDescriptor from;    ///< the vertex given
+  VertexDescriptor to;      ///< the boundary vertex it was moved to
+  double distance = 0;      ///< the length of the shortest edge path between them
+};
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+replaces every landmark that is not a boundary vertex of `tm` by the boundary vertex nearest to
+it along the edges (Dijkstra over edge lengths; the first of equally near ones in the search's
+order), as disk-type corners must lie on the boundary (the authors' MATLAB code snaps its
+corners the same way). Landmarks on the boundary are kept. Two landmarks may end on one vertex:
+`check_landmarks()` then reports the duplicate.
+\tparam TriangleMesh a model of `FaceGraph` and `VertexListGraph` with an internal `vertex_point`
+        property map
+\return the landmarks moved, in landmark order (none if `tm` has no boundary)
+*/
+template <class TriangleMesh>
+std::vector<Landmark_snap<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >
+snap_landmarks_to_border(const TriangleMesh& tm,
+                         std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  std::vector<Landmark_snap<vertex_descriptor> > snaps;
+  const internal::Mesh_graph<TriangleMesh> g(tm, get(CGAL::vertex_point, tm));
+  std::vector<char> on_border(g.size(), 0);
+  bool any = false;
+  for(std::size_t i = 0; i < g.size(); ++i)
+    any |= (on_border[i] = CGAL::is_border(g.verts[i], tm) ? 1 : 0) != 0;
+  if(!any)
+    return snaps;
+  internal::Dijkstra_workspace ws;
+  ws.init(g.size());
+  for(std::size_t l = 0; l < landmarks.size(); ++l) {
+    const std::size_t s = g.index(landmarks[l]);
+    if(s == g.index.npos || on_border[s])
+      continue;
+    ws.begin_run();
+    int found = -1;
+    internal::dijkstra(g, ws, static_cast<int>(s),
+                       [&](int u) { if(found < 0 && on_border[u]) found = u; },
+                       [&]() { return found >= 0; });
+    if(found < 0)
+      continue; // another component: check_landmarks() reports the landmark off the boundary
+    Landmark_snap<vertex_descriptor> snap;
+    snap.landmark = l;
+    snap.from = landmarks[l];
+    snap.to = g.verts[static_cast<std::size_t>(found)];
+    snap.distance = ws.distance(found);
+    landmarks[l] = snap.to;
+    snaps.push_back(snap);
+  }
+  return snaps;
 }
 
 } // namespace Hyperbolic_orbifold_Tutte

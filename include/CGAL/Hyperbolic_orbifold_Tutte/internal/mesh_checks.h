@@ -14,6 +14,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h> // border_loops
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/topology_description.h>
 
 #include <CGAL/boost/graph/helpers.h>     // is_border, is_valid_polygon_mesh
 #include <CGAL/boost/graph/iterator.h>
@@ -534,7 +535,8 @@ template <class TriangleMesh, class VertexPointMap, class VertexIndex, class Mes
 Status check_topology(const TriangleMesh& tm, VertexPointMap vpm, const VertexIndex& vindex,
                       std::optional<Orbifold_type> required_type, MeshInfo& mi)
 {
-  mi.number_of_border_loops = border_loops(tm).size();
+  const auto loops = border_loops(tm);
+  mi.number_of_border_loops = loops.size();
   mi.euler_characteristic = static_cast<long long>(mi.number_of_vertices)
                           - static_cast<long long>(mi.number_of_edges)
                           + static_cast<long long>(mi.number_of_faces);
@@ -552,7 +554,7 @@ Status check_topology(const TriangleMesh& tm, VertexPointMap vpm, const VertexIn
     std::ostringstream os;
     os << "the mesh has " << b << " boundary loops: sphere-type orbifolds need a closed mesh"
        << " and disk-type orbifolds a mesh with one boundary loop"
-       << coincident_border_note(tm, vpm, vindex);
+       << coincident_border_note(tm, vpm, vindex) << describe_topology(tm, vpm, loops, mi.genus);
     return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
   }
   mi.type = type;
@@ -560,7 +562,8 @@ Status check_topology(const TriangleMesh& tm, VertexPointMap vpm, const VertexIn
   const std::string reason = wrong_topology_reason(type, b, mi.euler_characteristic, mi.genus);
   if(!reason.empty()) {
     const bool note = b > (type == Sphere_type ? 0u : 1u);
-    return Status::failure(ERROR_WRONG_TOPOLOGY, reason + (note ? coincident_border_note(tm, vpm, vindex) : std::string()));
+    return Status::failure(ERROR_WRONG_TOPOLOGY, reason + (note ? coincident_border_note(tm, vpm, vindex) : std::string()) +
+                                                   describe_topology(tm, vpm, loops, mi.genus));
   }
   mi.type_known = true;
   return Status();

@@ -15,6 +15,8 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
+#include <boost/functional/hash.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,7 +27,7 @@
 #include <vector>
 
 // The polygon-soup half of prepare_polygon_soup_for_embedding(): the soup is read into
-// double points, duplicated points are merged (exact equality), invalid polygons dropped,
+// double points, duplicated border points are merged (exact equality), invalid polygons dropped,
 // and, when the soup is not already an oriented manifold polygon mesh, CGAL PMP removes
 // duplicated polygons and orients the soup (duplicating non-manifold vertices). Every point
 // keeps the input index it comes from, so that the prepared mesh stays addressed by the input.
@@ -72,13 +74,11 @@ struct Coordinates_hash
   }
 };
 
-// Reads the points (merging equal positions into the first one) and checks they are finite.
-// `prep.prepared_vertex[i]` temporarily holds the soup point of input vertex i.
+// Reads the points and checks they are finite; `prep.prepared_vertex[i]` temporarily holds the
+// soup point of input vertex i (itself until merge_border_duplicates()).
 template <class PointRange>
 Status load_points(const PointRange& points, Soup& soup, Mesh_preparation& prep)
 {
-  std::unordered_map<std::array<double, 3>, std::size_t, Coordinates_hash> first;
-  first.reserve(points.size());
   std::size_t i = 0;
   for(const auto& p : points) {
     const std::array<double, 3> c = coordinates(p);
@@ -87,28 +87,33 @@ Status load_points(const PointRange& points, Soup& soup, Mesh_preparation& prep)
       os << "vertex " << i << " has a coordinate that is not a finite number; no repair can place it";
       return Status::failure(ERROR_NON_FINITE_COORDINATES, os.str());
     }
-    const auto ins = first.emplace(c, soup.points.size());
-    if(ins.second) {
-      soup.points.push_back(Point(c[0], c[1], c[2]));
-      soup.input.push_back(i);
-    } else {
-      ++prep.merged_duplicate_vertices;
-    }
-    prep.prepared_vertex.push_back(ins.first->second);
+    soup.points.push_back(Point(c[0], c[1], c[2]));
+    soup.input.push_back(i);
+    prep.prepared_vertex.push_back(i);
     ++i;
   }
   prep.number_of_input_vertices = i;
   return Status();
 }
 
-// Reads the polygons in soup indices: consecutive repeats are dropped; polygons left with
-// fewer than 3 vertices or with a repeated vertex are removed (counted).
+// true if `poly` (consecutive repeats dropped in place) is a polygon: 3 or more corners, none repeated
+inline bool simplify_polygon(std::vector<std::size_t>& poly, std::vector<std::size_t>& scratch)
+{
+  poly.erase(std::unique(poly.begin(), poly.end()), poly.end());
+  while(poly.size() > 1 && poly.front() == poly.back())
+    poly.pop_back();
+  scratch = poly;
+  std::sort(scratch.begin(), scratch.end());
+  return poly.size() >= 3 && std::adjacent_find(scratch.begin(), scratch.end()) == scratch.end();
+}
+
+// Reads the polygons; polygons with fewer than 3 corners or with a repeated corner are removed.
 template <class PolygonRange>
 Status load_polygons(const PolygonRange& polygons, Soup& soup, Mesh_preparation& prep)
 {
   const std::size_t n = prep.number_of_input_vertices;
   std::size_t j = 0;
-  std::vector<std::size_t> poly, sorted;
+  std::vector<std::size_t> poly, scratch;
   for(const auto& polygon : polygons) {
     poly.clear();
     for(const auto id : polygon) {
@@ -118,23 +123,52 @@ Status load_polygons(const PolygonRange& polygons, Soup& soup, Mesh_preparation&
         os << "face " << j << " uses vertex " << v << ", but there are only " << n << " vertices";
         return Status::failure(ERROR_WRONG_PARAMETER, os.str());
       }
-      const std::size_t s = prep.prepared_vertex[v];
-      if(poly.empty() || poly.back() != s)
-        poly.push_back(s);
+      poly.push_back(v);
     }
-    while(poly.size() > 1 && poly.front() == poly.back())
-      poly.pop_back();
-    sorted = poly;
-    std::sort(sorted.begin(), sorted.end());
-    if(poly.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-      ++prep.invalid_faces_removed;
-    else
-      soup.polygons.push_back(poly);
+    if(simplify_polygon(poly, scratch)) soup.polygons.push_back(poly);
+    else ++prep.invalid_faces_removed;
     ++j;
   }
   prep.number_of_input_faces = j;
   if(soup.polygons.empty())
     return Status::failure(ERROR_EMPTY_MESH, j == 0 ? "the mesh has no face" : "the mesh has no valid face");
+  return Status();
+}
+
+// Merges the points on the border of the soup (on an edge of one polygon only) that have equal
+// coordinates into the first of them: unwelded seams and triangle soups (STL) get glued.
+// Distinct inner vertices at one position are kept apart: they are a valid mesh already.
+inline Status merge_border_duplicates(Soup& soup, Mesh_preparation& prep)
+{
+  std::unordered_map<std::pair<std::size_t, std::size_t>, int, boost::hash<std::pair<std::size_t, std::size_t> > > uses;
+  for(const auto& poly : soup.polygons)
+    for(std::size_t i = 0; i < poly.size(); ++i) {
+      const std::size_t a = poly[i], b = poly[(i + 1) % poly.size()];
+      ++uses[std::make_pair((std::min)(a, b), (std::max)(a, b))];
+    }
+  std::vector<char> border(soup.points.size(), 0);
+  for(const auto& e : uses)
+    if(e.second == 1) border[e.first.first] = border[e.first.second] = 1;
+  std::unordered_map<std::array<double, 3>, std::size_t, Coordinates_hash> first;
+  std::vector<std::size_t>& rep = prep.prepared_vertex;
+  for(std::size_t i = 0; i < soup.points.size(); ++i) {
+    if(!border[i]) continue;
+    const Point& p = soup.points[i];
+    const std::size_t r = first.emplace(std::array<double, 3>{{p.x(), p.y(), p.z()}}, i).first->second;
+    if(r != i) { rep[i] = r; ++prep.merged_duplicate_vertices; }
+  }
+  if(prep.merged_duplicate_vertices == 0)
+    return Status();
+  std::vector<std::vector<std::size_t> > kept;
+  std::vector<std::size_t> scratch;
+  for(auto& poly : soup.polygons) {
+    for(std::size_t& v : poly) v = rep[v];
+    if(simplify_polygon(poly, scratch)) kept.push_back(std::move(poly));
+    else ++prep.invalid_faces_removed; // collapsed by the merge
+  }
+  soup.polygons.swap(kept);
+  if(soup.polygons.empty())
+    return Status::failure(ERROR_EMPTY_MESH, "the mesh has no valid face");
   return Status();
 }
 

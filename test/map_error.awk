@@ -1,0 +1,44 @@
+# Error of a map against the identity correspondence (source vertex i <-> truth vertex i):
+#   awk -f map_error.awk MAP.txt TARGET.off TRUTH.off
+# MAP.txt: one line 'face b0 b1 b2' per source vertex ('-1 ...': no image, counted apart);
+# TARGET.off: the mesh whose faces MAP.txt refers to; TRUTH.off: the mesh whose vertex i is the
+# true image of source vertex i. Prints "mapped N unmapped U max E mean M" with E and M
+# relative to the bounding box diagonal of TRUTH.off.
+function read_off(file, P, F,    line, stage, k, m, t, nv) {
+  stage = 0; k = 0; m = 0
+  while((getline line < file) > 0) {
+    if(line ~ /^[ \t]*#/ || line ~ /^[ \t]*$/) continue
+    split(line, t, " ")
+    if(stage == 0) { stage = 1; if(t[1] == "OFF" && length(t) == 1) continue; sub(/^OFF[ \t]*/, "", line); split(line, t, " ") }
+    if(stage == 1) { nv = t[1]; stage = 2; continue }
+    if(stage == 2) { P[k, 0] = t[1]; P[k, 1] = t[2]; P[k, 2] = t[3]; k++; if(k == nv) stage = 3; continue }
+    F[m, 0] = t[2]; F[m, 1] = t[3]; F[m, 2] = t[4]; m++
+  }
+  close(file)
+  return k
+}
+BEGIN {
+  map = ARGV[1]; target = ARGV[2]; truth = ARGV[3]; ARGC = 1
+  read_off(target, TP, TF)
+  nt = read_off(truth, GP, GF)
+  for(i = 0; i < nt; ++i) for(d = 0; d < 3; ++d) {
+    if(i == 0 || GP[i, d] < lo[d]) lo[d] = GP[i, d]
+    if(i == 0 || GP[i, d] > hi[d]) hi[d] = GP[i, d]
+  }
+  diag = sqrt((hi[0] - lo[0])^2 + (hi[1] - lo[1])^2 + (hi[2] - lo[2])^2)
+  i = 0; mapped = 0; unmapped = 0; max = 0; sum = 0
+  while((getline line < map) > 0) {
+    split(line, t, " ")
+    if(t[1] < 0) { unmapped++; i++; continue }
+    if(i < nt) {
+      e2 = 0
+      for(d = 0; d < 3; ++d) {
+        x = t[2] * TP[TF[t[1], 0], d] + t[3] * TP[TF[t[1], 1], d] + t[4] * TP[TF[t[1], 2], d]
+        e2 += (x - GP[i, d])^2
+      }
+      e = sqrt(e2) / diag; sum += e; mapped++; if(e > max) max = e
+    }
+    i++
+  }
+  printf "mapped %d unmapped %d max %.6f mean %.6f\n", mapped, unmapped, max, (mapped ? sum / mapped : 0)
+}

@@ -1,0 +1,187 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_PREPARED_INPUT_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_PREPARED_INPUT_H
+
+// A mesh file read for a job, as is (checked) or prepared (--repair), with its addressing by
+// the file's vertices, and its landmarks read in the file's numbering (--snap-landmarks moves
+// disk corners onto the boundary). Without --repair the addressing is the identity and every
+// message is the one of read_and_check.h.
+
+#include "read_and_check.h"
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/prepare_mesh_for_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CGAL/disable_warnings.h>
+
+/// \file prepared_input.h
+
+namespace hot_tools {
+
+/// the command line's repair options
+struct Repair_options
+{
+  bool repair = false;            ///< --repair
+  bool largest_component = false; ///< --largest-component
+  bool snap_landmarks = false;    ///< --snap-landmarks
+  double max_hole = 0.5;          ///< --max-hole (bounding box diagonals)
+};
+
+/// a mesh file as a job sees it: the file's vertices and how the (prepared) mesh's vertices
+/// are addressed by them (`HOT::Mesh_preparation`; the identity without --repair)
+struct Input_mesh
+{
+  std::string path;
+  bool repaired = false;
+  std::vector<std::array<double, 3> > file_points; // the file's vertices, in file order
+  HOT::Mesh_preparation prep;
+};
+
+/// a landmark moved onto the boundary, in the file's numbering
+struct Landmark_snap_record
+{
+  std::size_t landmark = 0, from = 0, to = 0;
+  double distance = 0;
+};
+
+namespace prepared_input_impl {
+
+inline void identity_addressing(const std::vector<std::array<double, 3> >& points, HOT::Orbifold_type type,
+                                HOT::Mesh_preparation& prep)
+{
+  prep = HOT::Mesh_preparation();
+  prep.number_of_input_vertices = points.size();
+  prep.prepared_vertex.resize(points.size());
+  prep.output_index.resize(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    prep.prepared_vertex[i] = prep.output_index[i] = i;
+  prep.type = type;
+}
+
+} // namespace prepared_input_impl
+
+/*!
+Reads the mesh file `path` into `mesh`: with `opt.repair`, its polygon soup is prepared
+(`HOT::prepare_polygon_soup_for_embedding()`), otherwise read and checked as
+`read_and_check_mesh()` does. `info` (if not null) receives the sizes and the type.
+Every message starts with the file name.
+*/
+template <class TriangleMesh>
+HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold_type> required_type,
+                            const Repair_options& opt, TriangleMesh& mesh, Input_mesh& in, HOT::Mesh_info* info = nullptr)
+{
+  in = Input_mesh();
+  in.path = path;
+  in.repaired = opt.repair;
+  HOT::Mesh_info local;
+  HOT::Mesh_info& mi = info ? *info : local;
+  if(!opt.repair) {
+    HOT::Status r = read_and_check_mesh(path, required_type, mesh, &mi);
+    if(!r) return r;
+    for(auto v : vertices(mesh)) {
+      const auto& p = get(CGAL::vertex_point, mesh, v);
+      in.file_points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+    }
+    prepared_input_impl::identity_addressing(in.file_points, mi.type, in.prep);
+    return r;
+  }
+  Polygon_soup soup;
+  HOT::Status r = read_polygon_soup_file(path, soup); // its messages start with the file name
+  if(!r) return r;
+  std::vector<std::vector<std::size_t> > polygons(soup.number_of_faces());
+  for(std::size_t j = 0; j < polygons.size(); ++j)
+    polygons[j].assign(soup.face_vertices.begin() + soup.face_begin[j], soup.face_vertices.begin() + soup.face_begin[j + 1]);
+  namespace P = HOT::parameters;
+  const auto np = P::maximum_hole_length(opt.max_hole, P::keep_largest_component(opt.largest_component));
+  if(required_type)
+    r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, P::orbifold_type(*required_type, np));
+  else
+    r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, np);
+  if(r) r = HOT::check_mesh(mesh, in.prep.type, &mi);
+  if(!r) {
+    r.message = path + ": " + r.message;
+    return r;
+  }
+  in.file_points = std::move(soup.points);
+  return r;
+}
+
+/*!
+Reads the landmark file `path` (the mesh file's vertex numbers), converts them to vertices of
+`mesh` through the addressing of `in`, with `snap` moves disk-type corners that are not on the
+boundary onto it (recorded in `snaps`, in the file's numbering), and checks them
+(`check_landmarks()`). Every message starts with the landmark file's name.
+*/
+template <class TriangleMesh>
+HOT::Status read_input_landmarks(const std::string& path, const TriangleMesh& mesh, const Input_mesh& in,
+                                 HOT::Orbifold_type type, bool snap,
+                                 std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+                                 std::vector<Landmark_snap_record>* snaps = nullptr)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  if(!in.repaired && !snap)
+    return read_and_check_landmarks(path, mesh, type, landmarks);
+  landmarks.clear();
+  std::vector<std::size_t> ids;
+  HOT::Status r = read_landmarks(path, ids);
+  if(!r) return r;
+  const HOT::Mesh_preparation& prep = in.prep;
+  const std::size_t n = prep.number_of_input_vertices;
+  auto fail = [&](HOT::Error_code code, const std::string& m) { return HOT::Status::failure(code, path + ": " + m); };
+  std::vector<std::size_t> prepared(ids.size());
+  for(std::size_t i = 0; i < ids.size(); ++i) {
+    const std::string which = "landmark " + std::to_string(i) + " (vertex " + std::to_string(ids[i]) + ")";
+    if(ids[i] >= n)
+      return fail(HOT::ERROR_LANDMARK_OUT_OF_RANGE, which + " is not a vertex of the mesh file, which has " + std::to_string(n) + " vertices");
+    if(prep.prepared_vertex[ids[i]] == HOT::Mesh_preparation::npos)
+      return fail(HOT::ERROR_LANDMARK_OUT_OF_RANGE, which + " is on no face of the repaired mesh (an isolated vertex or one of a dropped component)");
+    prepared[i] = prep.prepared_vertex[ids[i]];
+  }
+  const std::vector<vertex_descriptor> verts(vertices(mesh).begin(), vertices(mesh).end());
+  if(snap && type == HOT::Disk_type) {
+    std::vector<vertex_descriptor> lm;
+    for(std::size_t p : prepared) lm.push_back(verts[p]);
+    for(const auto& s : HOT::snap_landmarks_to_border(mesh, lm)) {
+      const std::size_t to = static_cast<std::size_t>(std::find(verts.begin(), verts.end(), s.to) - verts.begin());
+      prepared[s.landmark] = to;
+      if(snaps) snaps->push_back({s.landmark, ids[s.landmark], prep.output_index[to], s.distance});
+    }
+  }
+  // duplicates and corners off the boundary, in the file's numbering
+  std::vector<std::size_t> first(verts.size(), HOT::Mesh_preparation::npos);
+  for(std::size_t i = 0; i < prepared.size(); ++i) {
+    const std::size_t j = first[prepared[i]];
+    if(j == HOT::Mesh_preparation::npos) { first[prepared[i]] = i; continue; }
+    if(ids[i] == ids[j])
+      return fail(HOT::ERROR_DUPLICATE_LANDMARK, "vertex " + std::to_string(ids[i]) + " is given twice, as landmarks " +
+                                                   std::to_string(j) + " and " + std::to_string(i));
+    return fail(HOT::ERROR_DUPLICATE_LANDMARK, "landmarks " + std::to_string(j) + " and " + std::to_string(i) + " (vertices " +
+                                                 std::to_string(ids[j]) + " and " + std::to_string(ids[i]) +
+                                                 ") are one vertex of the repaired mesh (equal positions, or snapped to one boundary vertex)");
+  }
+  if(type == HOT::Disk_type)
+    for(std::size_t i = 0; i < prepared.size(); ++i)
+      if(!CGAL::is_border(verts[prepared[i]], mesh))
+        return fail(HOT::ERROR_LANDMARK_NOT_ON_BORDER, "landmark " + std::to_string(i) + " (vertex " + std::to_string(ids[i]) +
+                                                         ") is not on the boundary loop; disk-type orbifold corners must be boundary"
+                                                         " vertices (--snap-landmarks moves them to the nearest one)");
+  r = HOT::check_landmarks(mesh, prepared, type, landmarks); // the number of landmarks
+  if(!r) r.message = path + ": " + r.message;
+  return r;
+}
+
+} // namespace hot_tools
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_PREPARED_INPUT_H
