@@ -20,7 +20,7 @@ jobs="${HOT_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 # (seconds with a warm one), tests under 3 min; the CI's two jobs about halve both.
 labels='^(unit|input|cut|maps|cli|embedding)$'
 exclude='^test_input_checks\.performance$'
-targets=(test_hyperbolic_kernel test_orbifold_tiles test_traits_archetype test_input_checks test_cut_graph
+targets=(test_hyperbolic_kernel test_orbifold_tiles test_traits_archetype test_input_checks test_prepare_mesh test_cut_graph
          test_parameterizer test_maps test_cgal_drop_in hyperbolic_orbifold_tutte)
 asan="${HOT_ASAN_BUILD_DIR:-$build-asan}"
 t0=$SECONDS

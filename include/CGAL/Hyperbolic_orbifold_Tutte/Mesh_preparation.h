@@ -59,7 +59,9 @@ struct Mesh_preparation
 
   /// per input vertex, the prepared mesh's vertex (its position in `vertices()`) it became:
   /// itself, the vertex it was merged into (duplicates, collapsed degenerate faces: the
-  /// nearest remaining vertex), or `npos` if it lies on no face or on a removed component
+  /// nearest remaining vertex), or `npos` if it lies on no face or only on removed components
+  /// (a split non-manifold vertex whose original lies on a removed component and a copy on
+  /// the kept one is that copy)
   std::vector<std::size_t> prepared_vertex;
   /// per vertex of the prepared mesh, its output index (see above): increasing
   std::vector<std::size_t> output_index;
@@ -72,7 +74,7 @@ struct Mesh_preparation
   std::size_t non_manifold_vertices_split = 0; ///< vertex copies added to make the surface manifold
   std::size_t polygons_triangulated = 0;      ///< polygons with more than 3 vertices
   std::size_t triangles_from_polygons = 0;    ///< the triangles they became
-  std::size_t degenerate_faces_removed = 0;   ///< faces removed with degenerate (zero-area) triangles
+  std::size_t degenerate_faces_removed = 0;   ///< degenerate (zero-area) faces removed (by edge collapses or flips)
   std::size_t components_removed = 0;         ///< connected components dropped (all but the largest)
   std::size_t component_faces_removed = 0;    ///< their faces
   std::vector<Filled_hole> filled_holes;      ///< the holes filled, in the order they were filled

@@ -50,6 +50,7 @@ struct Work
 {
   Work_mesh mesh;
   Work_mesh::Property_map<Work_vertex, std::size_t> input; // input index, npos for added vertices
+  Work_mesh::Property_map<Work_vertex, std::size_t> copy_of; // a non-manifold vertex's copy: the input vertex it copies
   std::vector<char> dropped;                               // per input vertex: on a removed component
   std::vector<std::pair<Work_vertex, Work_vertex> > chords; // split chords' endpoints
   std::vector<Work_vertex> hole_vertex;                     // a boundary vertex per filled hole
@@ -61,9 +62,12 @@ inline Status build_work_mesh(const Soup& soup, Work& w, std::size_t number_of_i
   if(num_vertices(w.mesh) != soup.points.size() || num_faces(w.mesh) != soup.polygons.size())
     return Status::failure(ERROR_NON_MANIFOLD, "the repaired polygon soup could not be built into a mesh");
   w.input = w.mesh.add_property_map<Work_vertex, std::size_t>("v:hot_input", Mesh_preparation::npos).first;
+  w.copy_of = w.mesh.add_property_map<Work_vertex, std::size_t>("v:hot_copy_of", Mesh_preparation::npos).first;
   std::size_t i = 0;
-  for(Work_vertex v : vertices(w.mesh)) // polygon_soup_to_polygon_mesh adds the points in order
+  for(Work_vertex v : vertices(w.mesh)) { // polygon_soup_to_polygon_mesh adds the points in order
+    if(!soup.copy_of.empty()) w.copy_of[v] = soup.copy_of[i];
     w.input[v] = soup.input[i++];
+  }
   w.dropped.assign(number_of_input_vertices, 0);
   return Status();
 }
@@ -109,11 +113,23 @@ inline Status keep_one_component(Work& w, bool keep_largest, Mesh_preparation& p
     w.mesh.remove_property_map(fcc);
     return Status::failure(ERROR_SEVERAL_COMPONENTS, os.str());
   }
-  for(Work_vertex v : vertices(w.mesh)) {
+  auto in_largest = [&](Work_vertex v) {
     const Work_halfedge h = halfedge(v, w.mesh);
-    const Work_face f = is_border(h, w.mesh) ? face(opposite(h, w.mesh), w.mesh) : face(h, w.mesh);
-    if(fcc[f] != largest && w.input[v] != Mesh_preparation::npos)
-      w.dropped[w.input[v]] = 1;
+    return fcc[is_border(h, w.mesh) ? face(opposite(h, w.mesh), w.mesh) : face(h, w.mesh)] == largest;
+  };
+  std::vector<char> kept(w.dropped.size(), 0);
+  for(Work_vertex v : vertices(w.mesh))
+    if(w.input[v] != Mesh_preparation::npos)
+      (in_largest(v) ? kept : w.dropped)[w.input[v]] = 1;
+  // a split non-manifold vertex whose original is on a dropped component but a copy on the
+  // kept one: the (first) copy becomes that input vertex, which stays addressed
+  for(Work_vertex v : vertices(w.mesh)) {
+    const std::size_t c = w.copy_of[v];
+    if(c != Mesh_preparation::npos && !kept[c] && in_largest(v)) {
+      w.input[v] = c;
+      kept[c] = 1;
+      w.dropped[c] = 0;
+    }
   }
   prep.components_removed = n - 1;
   prep.component_faces_removed = num_faces(w.mesh) - size[largest];
@@ -128,15 +144,19 @@ inline Status keep_one_component(Work& w, bool keep_largest, Mesh_preparation& p
 inline Status remove_degenerate_faces(Work& w, Mesh_preparation& prep)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  bool any = false;
-  for(Work_face f : faces(w.mesh))
-    if(PMP::is_degenerate_triangle_face(f, w.mesh)) { any = true; break; }
-  if(!any)
+  auto count_degenerate = [&w]() {
+    std::size_t n = 0;
+    for(Work_face f : faces(w.mesh)) n += PMP::is_degenerate_triangle_face(f, w.mesh) ? 1 : 0;
+    return n;
+  };
+  const std::size_t before = count_degenerate();
+  if(before == 0)
     return Status();
-  const std::size_t before = num_faces(w.mesh);
   const bool ok = PMP::remove_degenerate_faces(w.mesh);
   w.mesh.collect_garbage();
-  prep.degenerate_faces_removed = before - num_faces(w.mesh);
+  // the degenerate faces gone (a flip replaces a cap without changing the number of faces)
+  const std::size_t after = count_degenerate();
+  prep.degenerate_faces_removed = before > after ? before - after : 0;
   if(!ok)
     return Status::failure(ERROR_DEGENERATE_FACE, "some degenerate faces (zero area) could not be removed");
   return Status();

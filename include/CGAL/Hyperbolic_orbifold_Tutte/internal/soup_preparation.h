@@ -45,6 +45,19 @@ struct Soup
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
   std::vector<std::size_t> input; // per point: the input vertex it is (first of equal ones), or npos (added)
+  std::vector<std::size_t> copy_of; // per point: for a copy of a non-manifold vertex, the input vertex it copies, else npos
+};
+
+// records, per point added by orient_polygon_soup(), the point it duplicates (the visitor is
+// copied by PMP, hence the pointer)
+struct Copy_recorder : CGAL::Polygon_mesh_processing::Default_orientation_visitor
+{
+  std::vector<std::size_t>* copy_of;
+  void duplicated_vertex(std::size_t original, std::size_t copy)
+  {
+    if(copy_of->size() <= copy) copy_of->resize(copy + 1, Mesh_preparation::npos);
+    (*copy_of)[copy] = original;
+  }
 };
 
 // the coordinates of a point of any kernel, or of a std::array<double, 3>
@@ -183,9 +196,15 @@ inline Status make_oriented_manifold(Soup& soup, Mesh_preparation& prep)
   prep.duplicate_faces_removed = PMP::merge_duplicate_polygons_in_polygon_soup(soup.points, soup.polygons);
   const std::vector<std::vector<std::size_t> > before = soup.polygons;
   const std::size_t points_before = soup.points.size();
-  PMP::orient_polygon_soup(soup.points, soup.polygons);
+  std::vector<std::size_t> duplicated(points_before, Mesh_preparation::npos);
+  Copy_recorder recorder;
+  recorder.copy_of = &duplicated;
+  PMP::orient_polygon_soup(soup.points, soup.polygons, CGAL::parameters::visitor(recorder));
   prep.non_manifold_vertices_split = soup.points.size() - points_before;
   soup.input.resize(soup.points.size(), Mesh_preparation::npos);
+  soup.copy_of.assign(soup.points.size(), Mesh_preparation::npos);
+  for(std::size_t p = points_before; p < soup.points.size() && p < duplicated.size(); ++p)
+    if(duplicated[p] < points_before) soup.copy_of[p] = soup.input[duplicated[p]];
   for(std::size_t f = 0; f < before.size() && f < soup.polygons.size(); ++f) {
     // a reversed polygon has the same vertices (up to the copies) in the other order
     const std::vector<std::size_t>& a = before[f];
@@ -215,10 +234,12 @@ inline void drop_unused_points(Soup& soup, Mesh_preparation& prep)
     new_index[v] = k;
     soup.points[k] = soup.points[v];
     soup.input[k] = soup.input[v];
+    if(!soup.copy_of.empty()) soup.copy_of[k] = soup.copy_of[v];
     ++k;
   }
   soup.points.resize(k);
   soup.input.resize(k);
+  if(!soup.copy_of.empty()) soup.copy_of.resize(k);
   for(auto& poly : soup.polygons)
     for(std::size_t& v : poly)
       v = new_index[v];
