@@ -5,7 +5,9 @@
 #     400K vertices (and 1M with --large), with 7 and 50 landmarks; on ../shared/data meshes
 #     (the paper's cases) when that folder exists (read in place, never copied);
 #  2. bench_collection: 20 poses of bull.off (6.2K vertices) with 23 landmarks, all 380 maps;
-#  3. bench_tiles: the kernel.
+#  3. bench_tiles: the kernel;
+#  4. the whole `embed` process with and without --repair on meshes that need no repair (the
+#     preparation's overhead, target <= 10%), and on meshes that need it.
 # Prints the machine first. Usage: scripts/benchmark.sh [--large] [--quick]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -14,7 +16,7 @@ for a in "$@"; do
   case "$a" in --large) large=1 ;; --quick) quick=1 ;; *) echo "usage: $0 [--large] [--quick]" >&2; exit 2 ;; esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
-"$root/scripts/build.sh" bench_parameterizer bench_collection bench_tiles >/dev/null
+"$root/scripts/build.sh" bench_parameterizer bench_collection bench_tiles hyperbolic_orbifold_tutte >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
 echo "== machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GB", $2/1048576}' /proc/meminfo), $(. /etc/os-release; echo "$PRETTY_NAME"), $(g++ --version | head -1)"
 meshes=()
@@ -42,3 +44,25 @@ echo "== collection (the paper's FAUST setting)"
 "$build/bin/bench_collection"
 echo "== kernel"
 "$build/bin/bench_tiles"
+echo "== --repair: whole embed process, fastest of 3 runs (7 landmarks from 'landmarks')"
+cli="$build/bin/hyperbolic_orbifold_tutte"
+work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
+fastest() { # fastest of 3 runs of the command, in seconds
+  local best=""
+  for _ in 1 2 3; do
+    local t0 t1; t0=$(date +%s.%N); "$@" >/dev/null 2>&1 || { echo fail; return; }; t1=$(date +%s.%N)
+    best=$(awk -v a="$best" -v d="$(awk -v x="$t0" -v y="$t1" 'BEGIN{print y-x}')" 'BEGIN{ if(a == "" || d < a) print d; else print a }')
+  done
+  echo "$best"
+}
+printf '%-24s %10s %10s %8s  %s\n' mesh plain_s repair_s ratio "what --repair did"
+clean=("$build/data/meshes/bear.off" "$build/data/meshes/armadillo.off" "$build/data/meshes/bunny00.off" "$build/data/meshes/diplodocus.off")
+[ -f "$shared/igea_134k.off" ] && clean+=("$shared/igea_134k.off")
+for m in "${clean[@]}" "$build/data/meshes/pig.off" "$build/data/meshes/mannequin-devil.off" "$build/data/meshes/blobby-shuffled.off"; do
+  "$cli" landmarks --mesh "$m" --count 7 --repair --out "$work/c.txt" >/dev/null 2>&1 || continue
+  plain=$(fastest "$cli" embed --mesh "$m" --cones "$work/c.txt" --out "$work/e.obj")
+  repair=$(fastest "$cli" embed --mesh "$m" --cones "$work/c.txt" --repair --out "$work/e.obj")
+  what=$("$cli" embed --mesh "$m" --cones "$work/c.txt" --repair --out "$work/e.obj" 2>/dev/null | sed -n 's/^repaired [^:]*: //p')
+  ratio=$(awk -v a="$plain" -v b="$repair" 'BEGIN { if(a + 0 > 0) printf "%.2f", b / a; else print "-" }')
+  printf '%-24s %10s %10s %8s  %s\n' "$(basename "$m")" "$plain" "$repair" "$ratio" "$what"
+done

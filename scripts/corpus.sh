@@ -44,7 +44,8 @@ for f in "${files[@]}"; do
     continue
   fi
   if "$bin" embed --mesh "$f" --cones "$work/c.txt" "${repair[@]}" --out "$work/e.obj" >"$work/out" 2>"$work/err"; then
-    ok=$((ok + 1)); printf '%-48s %8s  %-8s %s\n' "$name" "$n" embedded "$(grep -o 'certified[^,)]*' "$work/out" | head -1)"
+    ok=$((ok + 1)); printf '%-48s %8s  %-8s %s\n' "$name" "$n" embedded \
+      "$(grep -o 'certified bijective' "$work/out" | head -1)$(sed -n 's/^repaired [^:]*: / (repair: /p' "$work/out" | head -1 | sed 's/$/)/')"
   else
     printf '%-48s %8s  %-8s %s\n' "$name" "$n" refused "$(head -c 200 "$work/err" | head -1 | sed 's/^hyperbolic_orbifold_tutte: //')"
   fi

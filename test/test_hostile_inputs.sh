@@ -576,5 +576,39 @@ coll collection_binary_manifest 3 "binary.manifest: line 2: expected 'mesh_path 
 coll collection_manifest_directory 3 "directory.manifest' is a directory, not a file" directory.manifest
 coll collection_missing_manifest 3 "nowhere.manifest': no such file" nowhere.manifest
 
+# --repair on every mesh of the corpus, with the sphere and the disk landmarks: either a
+# certified embedding or a one-line refusal (exit 2 or 3) with no output left; never a crash,
+# a hang, or a result that is not certified
+run_repaired() {
+  local name="$1"
+  shift
+  cases=$((cases + 1))
+  rm -rf "$O"
+  mkdir -p "$O"
+  (timeout "$limit" "$prog" "$@" >"$tmp/stdout" 2>"$tmp/stderr"; exit $?) 2>/dev/null
+  local rc=$? problem="" err
+  err="$(head -c 600 "$tmp/stderr")"
+  if [ $rc -eq 124 ]; then problem="hang: killed after $limit s"
+  elif [ $rc -ge 128 ]; then problem="crash: killed by signal $((rc - 128))"
+  elif [ $rc -eq 0 ]; then
+    grep -q "certified bijective" "$tmp/stdout" || problem="exit 0 without a certified embedding"
+    [ -s "$O/x.obj" ] || problem="exit 0 without output"
+  elif [ $rc -ne 2 ] && [ $rc -ne 3 ]; then problem="exit status $rc"
+  elif [ "$(wc -l <"$tmp/stderr")" -ne 1 ] || [ "${err#hyperbolic_orbifold_tutte: }" = "$err" ]; then problem="stderr is not one line from the program"
+  elif [ -n "$(find "$O" -type f)" ]; then problem="output left behind: $(find "$O" -type f | sed "s|$O/||" | tr '\n' ' ')"
+  fi
+  if [ -n "$problem" ]; then
+    failures=$((failures + 1)); echo "FAIL $name: $problem -- stderr: $err"
+  elif [ $verbose -eq 1 ]; then
+    if [ $rc -eq 0 ]; then echo "ok   $name (repaired and certified)"; else echo "ok   $name (exit $rc): ${err#hyperbolic_orbifold_tutte: }"; fi
+  fi
+}
+for f in "$C"/*.off "$C"/*.obj "$C"/*.ply "$C"/*.stl "$C"/*.ts; do
+  [ -f "$f" ] || continue
+  b="$(basename "$f")"
+  run_repaired "repair_sphere_cones:$b" embed --mesh "$f" --cones "$SC" --repair --largest-component --out "$O/x.obj"
+  run_repaired "repair_disk_cones:$b" embed --mesh "$f" --cones "$DC" --repair --snap-landmarks --out "$O/x.obj"
+done
+
 echo "$cases corpus items, $failures failed"
 [ "$failures" -eq 0 ]

@@ -15,8 +15,11 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/prepare_mesh_for_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -71,6 +74,40 @@ inline void identity_addressing(const std::vector<std::array<double, 3> >& point
 } // namespace prepared_input_impl
 
 /*!
+true if the soup, built as without --repair (`mesh`), passes `check_mesh()` and the
+preparation would not change it: closed, or a disk without inner edge joining two boundary
+vertices whose boundary is not a hole to fill (a disk is required, or its boundary is longer
+than `opt.max_hole` bounding box diagonals). A clean mesh then costs nothing more than
+without --repair and gives the same files.
+*/
+template <class TriangleMesh>
+bool needs_no_repair(const Polygon_soup& soup, std::optional<HOT::Orbifold_type> required_type, const Repair_options& opt,
+                     TriangleMesh& mesh, HOT::Mesh_info& mi)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(!polygon_soup_to_mesh(soup, mesh) || !HOT::check_mesh(mesh, required_type, &mi))
+    return false;
+  if(mi.type == HOT::Sphere_type)
+    return true;
+  for(auto e : edges(mesh)) {
+    const auto h = halfedge(e, mesh);
+    if(!CGAL::is_border_edge(h, mesh) && CGAL::is_border(source(h, mesh), mesh) && CGAL::is_border(target(h, mesh), mesh))
+      return false; // a chord to split
+  }
+  if(required_type)
+    return true;
+  double length = 0;
+  for(auto h : halfedges(mesh))
+    if(CGAL::is_border(h, mesh))
+      length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(CGAL::vertex_point, mesh, source(h, mesh)),
+                                                                  get(CGAL::vertex_point, mesh, target(h, mesh)))));
+  const CGAL::Bbox_3 b = PMP::bbox(mesh);
+  const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                                    CGAL::square(b.zmax() - b.zmin()));
+  return length > opt.max_hole * diagonal; // else a hole to fill
+}
+
+/*!
 Reads the mesh file `path` into `mesh`: with `opt.repair`, its polygon soup is prepared
 (`HOT::prepare_polygon_soup_for_embedding()`), otherwise read and checked as
 `read_and_check_mesh()` does. `info` (if not null) receives the sizes and the type.
@@ -98,9 +135,20 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
   Polygon_soup soup;
   HOT::Status r = read_polygon_soup_file(path, soup); // its messages start with the file name
   if(!r) return r;
+  if(needs_no_repair(soup, required_type, opt, mesh, mi)) { // as without --repair: same mesh, same bits
+    in.file_points = std::move(soup.points);
+    prepared_input_impl::identity_addressing(in.file_points, mi.type, in.prep);
+    return r;
+  }
+  CGAL::clear(mesh);
   std::vector<std::vector<std::size_t> > polygons(soup.number_of_faces());
-  for(std::size_t j = 0; j < polygons.size(); ++j)
+  for(std::size_t j = 0; j < polygons.size(); ++j) {
     polygons[j].assign(soup.face_vertices.begin() + soup.face_begin[j], soup.face_vertices.begin() + soup.face_begin[j + 1]);
+    for(std::size_t v : polygons[j])
+      if(v >= soup.number_of_points()) // a file error, said as validate_polygon_soup() says it
+        return HOT::Status::failure(HOT::ERROR_READ_FAILED, path + ": " + soup.face_name(j) + ": vertex index " + std::to_string(v) +
+                                                              " is out of range (the file has " + std::to_string(soup.number_of_points()) + " vertices)");
+  }
   namespace P = HOT::parameters;
   const auto np = P::maximum_hole_length(opt.max_hole, P::keep_largest_component(opt.largest_component));
   if(required_type)
