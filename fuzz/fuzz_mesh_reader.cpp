@@ -29,6 +29,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 
 #include <io/read_and_check.h>
+#include <io/prepared_input.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -136,6 +137,36 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string cones_path = dir + (selection ? "/cones.selection.txt" : "/cones.txt");
   write_file(mesh_path, data + 3, rest - L);
   write_file(cones_path, data + 3 + (rest - L), L);
+
+  // --repair: the preparation either fails with a message or gives a mesh that passes the
+  // checks, addressed by the file's vertices
+  if((s / 60) % 2 == 1) {
+    hot_tools::Repair_options opt;
+    opt.repair = true;
+    opt.largest_component = (s / 120) % 2 == 1;
+    Surface_mesh pm;
+    hot_tools::Input_mesh in;
+    HOT::Mesh_info pinfo;
+    const HOT::Status rp = hot_tools::read_input_mesh(mesh_path, required_type, opt, pm, in, &pinfo);
+    check_result(rp);
+    if(rp) {
+      if(!CGAL::is_valid_polygon_mesh(pm) || !HOT::check_mesh(pm, in.prep.type))
+        contract_broken("a prepared mesh that fails the checks", rp);
+      const HOT::Mesh_preparation& p = in.prep;
+      if(p.output_index.size() != num_vertices(pm) || p.prepared_vertex.size() != p.number_of_input_vertices ||
+         in.file_points.size() != p.number_of_input_vertices)
+        contract_broken("an addressing of the wrong size", rp);
+      for(std::size_t k = 1; k < p.output_index.size(); ++k)
+        if(p.output_index[k] <= p.output_index[k - 1])
+          contract_broken("output indices not increasing", rp);
+      for(std::size_t v : p.prepared_vertex)
+        if(v != HOT::Mesh_preparation::npos && v >= num_vertices(pm))
+          contract_broken("an input vertex addressed out of range", rp);
+    } else if(num_vertices(pm) != 0) {
+      contract_broken("a refused preparation leaves a mesh", rp);
+    }
+    return 0;
+  }
 
   // embed, map, collection, landmarks: the mesh
   Surface_mesh m;

@@ -133,6 +133,7 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
     return r;
   }
   Polygon_soup soup;
+  CGAL::clear(mesh);
   HOT::Status r = read_polygon_soup_file(path, soup); // its messages start with the file name
   if(!r) return r;
   if(needs_no_repair(soup, required_type, opt, mesh, mi)) { // as without --repair: same mesh, same bits
@@ -157,6 +158,7 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
     r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, np);
   if(r) r = HOT::check_mesh(mesh, in.prep.type, &mi);
   if(!r) {
+    CGAL::clear(mesh);
     r.message = path + ": " + r.message;
     return r;
   }
