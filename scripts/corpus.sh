@@ -32,6 +32,9 @@ count_vertices() { # the header's count: OFF line 2 / OBJ v lines / PLY element 
     *.stl) echo 999 ;;
   esac
 }
+# the specific reason of a refusal: the program's line without its name, the error code's
+# description and the file name
+reason() { head -n 1 "$work/err" | sed 's/^hyperbolic_orbifold_tutte: [^:]*: //; s/^[^ ]*\.[A-Za-z]*: //' | cut -c1-400; }
 printf '%-48s %8s  %-8s %s\n' mesh vertices verdict reason
 for f in "${files[@]}"; do
   n="$(count_vertices "$f" 2>/dev/null)"; n="${n:-0}"
@@ -40,14 +43,14 @@ for f in "${files[@]}"; do
   total=$((total + 1))
   name="${f#"$root"/}"
   if ! "$bin" landmarks --mesh "$f" --count 7 "${repair[@]}" --out "$work/c.txt" >/dev/null 2>"$work/err"; then
-    printf '%-48s %8s  %-8s %s\n' "$name" "$n" refused "landmarks: $(head -c 200 "$work/err" | head -1 | sed 's/^hyperbolic_orbifold_tutte: //')"
+    printf '%-48s %8s  %-8s %s\n' "$name" "$n" refused "landmarks: $(reason)"
     continue
   fi
   if "$bin" embed --mesh "$f" --cones "$work/c.txt" "${repair[@]}" --out "$work/e.obj" >"$work/out" 2>"$work/err"; then
     ok=$((ok + 1)); printf '%-48s %8s  %-8s %s\n' "$name" "$n" embedded \
       "$(grep -o 'certified bijective' "$work/out" | head -1)$(sed -n 's/^repaired [^:]*: / (repair: /p' "$work/out" | head -1 | sed 's/$/)/')"
   else
-    printf '%-48s %8s  %-8s %s\n' "$name" "$n" refused "$(head -c 200 "$work/err" | head -1 | sed 's/^hyperbolic_orbifold_tutte: //')"
+    printf '%-48s %8s  %-8s %s\n' "$name" "$n" refused "$(reason)"
   fi
 done
 echo "embedded $ok of $total meshes"

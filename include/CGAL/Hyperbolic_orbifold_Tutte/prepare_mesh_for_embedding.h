@@ -76,30 +76,30 @@ orbifold: on success `out` is a triangle mesh that passes `check_mesh()` for the
 input's (see `Mesh_preparation`: landmark files keep referring to the input's vertex numbers).
 
 In this order, each step doing nothing on a mesh that does not need it:
- 1. a coordinate that is not finite is an error (`ERROR_NON_FINITE_COORDINATES`); repeated
+ -# a coordinate that is not finite is an error (`ERROR_NON_FINITE_COORDINATES`); repeated
     consecutive corners are dropped; polygons left with fewer than three corners or with a
     repeated corner are removed;
- 2. points on the border of the soup (on an edge of only one polygon) at equal positions
+ -# points on the border of the soup (on an edge of only one polygon) at equal positions
     (exact comparison) are merged into the first one, which glues unwelded seams and
     triangle soups (STL); distinct inner vertices at one position are kept apart;
- 3. if the polygons do not form an oriented manifold surface
+ -# if the polygons do not form an oriented manifold surface
     (`CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`), duplicated polygons
     are removed (`merge_duplicate_polygons_in_polygon_soup()`) and the soup is oriented
     (`orient_polygon_soup()`), which duplicates the vertices where the surface is not a
     manifold;
- 4. points on no polygon (isolated vertices) are dropped;
- 5. polygons with more than three corners are triangulated (`triangulate_faces()`);
- 6. a mesh with several connected components fails (`ERROR_SEVERAL_COMPONENTS`, with their
+ -# points on no polygon (isolated vertices) are dropped;
+ -# polygons with more than three corners are triangulated (`triangulate_faces()`);
+ -# a mesh with several connected components fails (`ERROR_SEVERAL_COMPONENTS`, with their
     sizes) unless `keep_largest_component` is `true`: the largest one (in faces) is kept;
- 7. degenerate faces (collinear or coincident corners) are removed (`remove_degenerate_faces()`);
- 8. holes are filled (`triangulate_refine_and_fair_hole()`): every boundary loop no longer than
+ -# degenerate faces (collinear or coincident corners) are removed (`remove_degenerate_faces()`);
+ -# holes are filled (`triangulate_refine_and_fair_hole()`): every boundary loop no longer than
     `maximum_hole_length` times the diagonal of the bounding box, except, when the disk type is
     required, the longest loop. The loops that remain decide the type: none, sphere type; one,
     disk type; more, an error (`ERROR_WRONG_TOPOLOGY`) that gives their sizes and lengths;
- 9. disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
+ -# disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
     a boundary ear) is split at its midpoint and the midpoint joined to the two opposite
     corners (Euler operations), so no triangle gets flat on a side of the disk orbifold's tile;
-10. `check_mesh()` on the result, whose failure (e.g. a closed mesh of genus 1, which no repair
+ -# `check_mesh()` on the result, whose failure (e.g. a closed mesh of genus 1, which no repair
     makes genus 0) is returned with its own code.
 
 The input's geometry is kept: no input vertex is moved. Faces are added only by the
