@@ -98,10 +98,13 @@ case "$case_name" in
     awk -v x="$max" 'BEGIN { exit !(x < 0.02) }' || fail "error against the identity: max $max of the diagonal"
     # the other way: MAP.txt refers to the faces of the prepared target, written by --prepared-target
     "$prog" map --repair --source "$M/bear.off" --source-cones "$tmp/c.txt" --target "$tmp/holes.off" --target-cones "$tmp/c.txt" \
-      --out "$tmp/m2.txt" --prepared-target "$tmp/t2.off" >/dev/null || fail "map bear -> holes"
+      --out "$tmp/m2.txt" --prepared-target "$tmp/t2.off" --colors-out "$tmp/c.ply" >/dev/null || fail "map bear -> holes"
     [ "$(wc -l < "$tmp/m2.txt")" -eq "$nv" ] || fail "one line per vertex of bear"
     read -r tv tf <<<"$(off_counts "$tmp/t2.off")"
     [ "$tv" -gt "$nv" ] || fail "the prepared target has the input's vertices and the added ones"
+    [ "$(grep -m1 '^element vertex' "$tmp/c.ply" | awk '{print $3}')" -eq "$tv" ] || fail "the coloured target is addressed as the prepared target"
+    [ "$(grep -m1 '^element face' "$tmp/c.ply" | awk '{print $3}')" -eq "$tf" ] || fail "the coloured target has the prepared target's faces"
+    cmp -s <(awk '/^3 / && NF == 4' "$tmp/c.ply") <(awk -v nv="$tv" 'NR > 2 + nv && NF >= 4' "$tmp/t2.off") || fail "the coloured target's faces are the prepared target's"
     read -r mapped unmapped max mean <<<"$(awk -f "$here/map_error.awk" "$tmp/m2.txt" "$tmp/t2.off" "$M/bear.off" | awk '{print $2, $4, $6, $8}')"
     echo "bear -> holes: error max $max mean $mean"
     awk -v m="$mean" 'BEGIN { exit !(m < 0.02) }' || fail "error against the identity: mean $mean"

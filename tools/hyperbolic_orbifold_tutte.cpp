@@ -420,7 +420,7 @@ int run_map(int argc, char** argv)
     // a smooth colouring of A, carried to B by f_BA
     const Locator locA(A.mesh, A.uv, A.type, k, HOT::Hyperboloid_linear);
     const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, locA);
-    files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g); });
+    files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g, addressing(B.in)); });
   }
   files.commit();
   std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << opt.get("source") << " onto "

@@ -92,10 +92,13 @@ void write_addressed_off(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
 
 // Writes `target_mesh` as an ASCII PLY coloured by a smooth colouring of `source_mesh` (its bounding
 // box mapped to RGB) carried over by g, the map from the target onto the source (located by
-// `source_locator`); grey where a vertex was not located.
+// `source_locator`); grey where a vertex was not located. With `target_input` (a prepared target), the
+// vertices are addressed as in its files (the file's vertices, grey if on no face, then the added
+// ones).
 template <class Point_3, class Locator>
 void write_coloured_ply(std::ostream& os, const CGAL::Surface_mesh<Point_3>& source_mesh, const Locator& source_locator,
-                        const CGAL::Surface_mesh<Point_3>& target_mesh, const std::vector<typename Locator::Location>& g)
+                        const CGAL::Surface_mesh<Point_3>& target_mesh, const std::vector<typename Locator::Location>& g,
+                        const Input_mesh* target_input = nullptr)
 {
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
@@ -107,25 +110,38 @@ void write_coloured_ply(std::ostream& os, const CGAL::Surface_mesh<Point_3>& sou
   };
   std::vector<Vector_3> source_colours;
   for(typename Mesh::Vertex_index v : vertices(source_mesh)) source_colours.push_back(colour(source_mesh.point(v)));
-  os << "ply\nformat ascii 1.0\nelement vertex " << num_vertices(target_mesh)
+  const Vector_3 grey(0.5, 0.5, 0.5);
+  auto carried = [&](std::size_t p) { // the colour of the target's prepared vertex p
+    const typename Locator::Location& l = g[p];
+    if(!l.success) return grey;
+    return l.barycentric[0] * source_colours[source_locator.corner_vertex_index(l.face_index, 0)] +
+           l.barycentric[1] * source_colours[source_locator.corner_vertex_index(l.face_index, 1)] +
+           l.barycentric[2] * source_colours[source_locator.corner_vertex_index(l.face_index, 2)];
+  };
+  auto byte = [](double t) { return static_cast<int>(std::lround(255 * std::min(1.0, std::max(0.0, t)))); };
+  auto line = [&](const Point_3& p, const Vector_3& c) {
+    os << p << " " << byte(c.x()) << " " << byte(c.y()) << " " << byte(c.z()) << "\n";
+  };
+  const std::size_t nv = target_input ? target_input->file_points.size() + target_input->prep.number_of_added_vertices() : num_vertices(target_mesh);
+  os << "ply\nformat ascii 1.0\nelement vertex " << nv
      << "\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
      << "element face " << num_faces(target_mesh) << "\nproperty list uchar int vertex_indices\nend_header\n";
   os.precision(17);
-  std::size_t i = 0;
-  for(typename Mesh::Vertex_index v : vertices(target_mesh)) {
-    const typename Locator::Location& l = g[i++];
-    Vector_3 c(0.5, 0.5, 0.5);
-    if(l.success)
-      c = l.barycentric[0] * source_colours[source_locator.corner_vertex_index(l.face_index, 0)] +
-          l.barycentric[1] * source_colours[source_locator.corner_vertex_index(l.face_index, 1)] +
-          l.barycentric[2] * source_colours[source_locator.corner_vertex_index(l.face_index, 2)];
-    auto byte = [](double t) { return static_cast<int>(std::lround(255 * std::min(1.0, std::max(0.0, t)))); };
-    os << target_mesh.point(v) << " " << byte(c.x()) << " " << byte(c.y()) << " " << byte(c.z()) << "\n";
+  if(!target_input) {
+    for(typename Mesh::Vertex_index v : vertices(target_mesh)) line(target_mesh.point(v), carried(v.idx()));
+  } else {
+    const HOT::Mesh_preparation& prep = target_input->prep;
+    for(std::size_t i = 0; i < target_input->file_points.size(); ++i) {
+      const auto& q = target_input->file_points[i];
+      line(Point_3(q[0], q[1], q[2]), prep.prepared_vertex[i] == HOT::Mesh_preparation::npos ? grey : carried(prep.prepared_vertex[i]));
+    }
+    for(typename Mesh::Vertex_index v : vertices(target_mesh))
+      if(prep.output_index[v.idx()] >= prep.number_of_input_vertices) line(target_mesh.point(v), carried(v.idx()));
   }
   for(typename Mesh::Face_index fc : faces(target_mesh)) {
     os << "3";
     for(typename Mesh::Halfedge_index h : halfedges_around_face(prev(halfedge(fc, target_mesh), target_mesh), target_mesh))
-      os << " " << target(h, target_mesh).idx();
+      os << " " << output_vertex(target(h, target_mesh), target_input);
     os << "\n";
   }
 }
