@@ -589,6 +589,27 @@ TEST_CASE(bad_input)
   CHECK_CODE(prepare(tetra, HOT::parameters::orbifold_type(HOT::Disk_type)), HOT::ERROR_WRONG_TOPOLOGY);
 }
 
+// 11b. found by the fuzz target: two triangles on two distinct vertices at one position
+// (1 and 2: on no border edge, so not merged) in a soup that is not a manifold mesh; PMP's
+// merge_duplicate_polygons_in_polygon_soup() has the precondition that no polygon has two
+// corners at one position (a CGAL assertion, or undefined behaviour without assertions).
+// Those two are removed as invalid; 4 = (0, 1, -0) is merged into 3 = (0, 1, 0) (both on the
+// border, -0 == 0), so the triangles 3 1 5 and 0 3 5 share the edge 3-5: a disk of 4
+// vertices whose inner edge 3-5 joins two boundary vertices and is split (V 5, F 4); vertices
+// 2 (only on removed faces) and 6 (on none) are isolated.
+TEST_CASE(coincident_corners)
+{
+  const Soup s{{Point(1, 0, 0), Point(-1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0), Point(0, 1, -0.0), Point(0, 0, 1),
+                Point(0, 0, -1)},
+               {{1, 2, 4}, {2, 1, 4}, {4, 1, 5}, {0, 3, 5}}};
+  const Run a = prepare(s);
+  CHECK_OK(a);
+  CHECK(a.prep.invalid_faces_removed == 2 && a.prep.merged_duplicate_vertices == 1 && a.prep.isolated_vertices == 2);
+  CHECK(a.prep.type == HOT::Disk_type && a.V() == 5 && a.F() == 4 && a.prep.split_chords.size() == 1);
+  CHECK(a.prep.prepared_vertex[4] == a.prep.prepared_vertex[3] && a.prep.prepared_vertex[2] == npos &&
+        a.prep.prepared_vertex[6] == npos);
+}
+
 // 12. the mesh interface (Polyhedron_3, Surface_mesh) gives the soup's result
 struct Flat
 {

@@ -68,7 +68,7 @@ struct Mesh_preparation
 
   std::size_t merged_duplicate_vertices = 0;  ///< border vertices merged into an earlier one at the same position
   std::size_t isolated_vertices = 0;          ///< input vertices on no face (dropped)
-  std::size_t invalid_faces_removed = 0;      ///< polygons with fewer than 3 distinct vertices, or a repeated one
+  std::size_t invalid_faces_removed = 0;      ///< polygons with fewer than 3 distinct vertices, a repeated one, or (in a soup that is not a manifold mesh) two corners at one position
   std::size_t duplicate_faces_removed = 0;    ///< polygons on the same vertices as another (either orientation)
   std::size_t reoriented_faces = 0;           ///< polygons reversed to orient the surface consistently
   std::size_t non_manifold_vertices_split = 0; ///< vertex copies added to make the surface manifold

@@ -84,7 +84,8 @@ In this order, each step doing nothing on a mesh that does not need it:
     triangle soups (STL); distinct inner vertices at one position are kept apart;
  -# if the polygons do not form an oriented manifold surface
     (`CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`), duplicated polygons
-    are removed (`merge_duplicate_polygons_in_polygon_soup()`) and the soup is oriented
+    are removed (`merge_duplicate_polygons_in_polygon_soup()`, after the polygons with two
+    corners at one position), and the soup is oriented
     (`orient_polygon_soup()`), which duplicates the vertices where the surface is not a
     manifold;
  -# points on no polygon (isolated vertices) are dropped;
@@ -134,7 +135,10 @@ Status prepare_polygon_soup_for_embedding(const PointRange& points, const Polygo
   try {
     r = internal::run_preparation(points, polygons, out, prep, np);
   } catch(const std::exception& e) { // CGAL's failure exceptions, bad_alloc
-    r = Status::failure(ERROR_NON_MANIFOLD, std::string("CGAL could not repair the mesh: ") + e.what());
+    std::string what = e.what(); // CGAL's messages have several lines
+    for(char& c : what)
+      if(c == '\n' || c == '\r') c = ' ';
+    r = Status::failure(ERROR_NON_MANIFOLD, "CGAL could not repair the mesh: " + what);
   }
   if(!r)
     CGAL::clear(out);

@@ -193,6 +193,20 @@ inline Status make_oriented_manifold(Soup& soup, Mesh_preparation& prep)
   namespace PMP = CGAL::Polygon_mesh_processing;
   if(PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
     return Status();
+  // polygons with two corners at one position (distinct inner vertices, not merged) are
+  // degenerate, and merge_duplicate_polygons_in_polygon_soup() requires there are none
+  std::vector<std::vector<std::size_t> > kept;
+  std::vector<Point> corners;
+  for(auto& poly : soup.polygons) {
+    corners.clear();
+    for(std::size_t v : poly) corners.push_back(soup.points[v]);
+    std::sort(corners.begin(), corners.end());
+    if(std::adjacent_find(corners.begin(), corners.end()) == corners.end()) kept.push_back(std::move(poly));
+    else ++prep.invalid_faces_removed;
+  }
+  soup.polygons.swap(kept);
+  if(soup.polygons.empty())
+    return Status::failure(ERROR_EMPTY_MESH, "the mesh has no valid face");
   prep.duplicate_faces_removed = PMP::merge_duplicate_polygons_in_polygon_soup(soup.points, soup.polygons);
   const std::vector<std::vector<std::size_t> > before = soup.polygons;
   const std::size_t points_before = soup.points.size();
