@@ -608,6 +608,11 @@ TEST_CASE(coincident_corners)
   CHECK(a.prep.type == HOT::Disk_type && a.V() == 5 && a.F() == 4 && a.prep.split_chords.size() == 1);
   CHECK(a.prep.prepared_vertex[4] == a.prep.prepared_vertex[3] && a.prep.prepared_vertex[2] == npos &&
         a.prep.prepared_vertex[6] == npos);
+  // also found by the fuzz target: a closed tetrahedron whose 4 vertices are at one position is
+  // a manifold soup with every face degenerate; removing them leaves nothing (the addressing of
+  // the collapsed vertices then looked for the nearest of no vertex)
+  const Run b = prepare(Soup{std::vector<Point>(4, Point(0, 0, 0)), {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}});
+  CHECK_CODE(b, HOT::ERROR_DEGENERATE_FACE);
 }
 
 // 12. the mesh interface (Polyhedron_3, Surface_mesh) gives the soup's result

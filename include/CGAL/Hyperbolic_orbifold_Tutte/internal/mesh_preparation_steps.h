@@ -157,6 +157,8 @@ inline Status remove_degenerate_faces(Work& w, Mesh_preparation& prep)
   // the degenerate faces gone (a flip replaces a cap without changing the number of faces)
   const std::size_t after = count_degenerate();
   prep.degenerate_faces_removed = before > after ? before - after : 0;
+  if(num_faces(w.mesh) == 0)
+    return Status::failure(ERROR_DEGENERATE_FACE, "every face of the mesh is degenerate (zero area)");
   if(!ok)
     return Status::failure(ERROR_DEGENERATE_FACE, "some degenerate faces (zero area) could not be removed");
   return Status();
@@ -297,6 +299,8 @@ inline std::vector<std::size_t> nearest_points(const std::vector<Point>& points,
   typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
   typedef typename Search::Tree Tree;
   typedef typename Search::Distance Distance;
+  if(points.empty())
+    return std::vector<std::size_t>(queries.size(), Mesh_preparation::npos);
   const Point_map pmap = CGAL::make_property_map(points);
   std::vector<std::size_t> ids(points.size());
   for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
