@@ -613,6 +613,12 @@ TEST_CASE(coincident_corners)
   // the collapsed vertices then looked for the nearest of no vertex)
   const Run b = prepare(Soup{std::vector<Point>(4, Point(0, 0, 0)), {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}});
   CHECK_CODE(b, HOT::ERROR_DEGENERATE_FACE);
+  // and (a hang, the soup of the fuzz input): a non-planar hexagon 2 0 3 1 5 4 among
+  // triangles on its corners; after PMP::triangulate_faces() the halfedge structure was not
+  // valid and the component search looped: now refused, in no time
+  const Run c = prepare(Soup{{Point(1, 0, 0), Point(-1, 0, 0), Point(0, 0, 0), Point(0, -1, 0), Point(0, 0, 1), Point(0, 0, -1)},
+                             {{0, 2, 4}, {2, 0, 3, 1, 5, 4}, {0, 2, 4}, {2, 1, 4}, {1, 3, 5}}});
+  CHECK(!c.r);
 }
 
 // 12. the mesh interface (Polyhedron_3, Surface_mesh) gives the soup's result

@@ -85,6 +85,10 @@ inline Status triangulate_polygons(Work& w, Mesh_preparation& prep)
     return Status();
   if(!CGAL::Polygon_mesh_processing::triangulate_faces(w.mesh))
     return Status::failure(ERROR_NON_TRIANGULAR_MESH, "a polygon of the mesh could not be triangulated");
+  // a diagonal of a polygon may already be an edge of the mesh (a non-planar polygon folded
+  // over its neighbours): the result is then not a valid surface, which later steps need
+  if(!CGAL::is_valid_polygon_mesh(w.mesh) || !CGAL::is_triangle_mesh(w.mesh))
+    return Status::failure(ERROR_NON_MANIFOLD, "the triangulation of a polygon of the mesh does not give a valid surface");
   return Status();
 }
 
