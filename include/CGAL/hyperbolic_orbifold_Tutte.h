@@ -14,6 +14,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>

@@ -84,6 +84,15 @@ struct Embedding_statistics : public Solver_statistics
   /// the isometry of the frame (the identity unless `recentred`): the translation that
   /// moves the most squeezed region of the embedding to the origin
   Hyperbolic_isometry_2<double> frame;
+  /// faces written in charts centred at cone images (0 unless a part of the mesh converges
+  /// onto a cone's image below what `double` resolves in the tile: a long protrusion ending
+  /// at a landmark); see `Chart_point`
+  std::size_t charted_faces = 0;
+  /// the charts (\ref HOT_Charts): chart `i` maps the tile's coordinates to its own, moving
+  /// the tile corner `chart_corners[i]` to the origin; empty when `charted_faces` is 0
+  std::vector<Hyperbolic_isometry_2<double> > charts;
+  /// the tile corner at the origin of each chart
+  std::vector<int> chart_corners;
   bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
   std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
   /// \var time_setup

@@ -7,6 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
@@ -177,6 +178,25 @@ public:
                           const std::vector<TM_vertex_descriptor>& landmarks, VertexUVMap uvmap,
                           Embedding_statistics* stats = nullptr) const
   {
+    return parameterize(mesh, bhd, landmarks, uvmap, internal::No_chart_map(), stats);
+  }
+
+  /*!
+  computes the embedding, allowing a part that converges onto cone images (a long
+  protrusion ending at a landmark) to be written in charts around them (\ref HOT_Charts),
+  where the other overload refuses it. `chartmap` receives the `Chart_point` of every
+  vertex (`chart` -1 for the vertices written in the tile only), `stats` the charts
+  (`Embedding_statistics::charts`); `uvmap` receives the tile points of all vertices (in a
+  chart's region, rounded to `double`: the embedding there is the chart's).
+  \tparam VertexChartMap a model of `WritablePropertyMap` with `vertex_descriptor` as key
+          type and `Chart_point<Point_2>` as value type
+  */
+  template <class VertexUVMap, class VertexChartMap>
+  Error_code parameterize(const SeamMesh& mesh, halfedge_descriptor bhd,
+                          const std::vector<TM_vertex_descriptor>& landmarks, VertexUVMap uvmap,
+                          VertexChartMap chartmap, Embedding_statistics* stats = nullptr) const
+  {
+    constexpr bool with_charts = !std::is_same<VertexChartMap, internal::No_chart_map>::value;
     Embedding_statistics local;
     Embedding_statistics& st = stats ? *stats : local;
     st = Embedding_statistics();
@@ -190,12 +210,22 @@ public:
       st.message = error_message(ERROR_NOT_HYPERBOLIC);
       return ERROR_NOT_HYPERBOLIC;
     }
-    internal::Seam_mesh_embedding<SeamMesh, Tile> job(mesh, bhd, landmarks, tile, settings_, st);
+    Settings settings = settings_;
+    settings.charts = with_charts;
+    internal::Seam_mesh_embedding<SeamMesh, Tile> job(mesh, bhd, landmarks, tile, settings, st);
     const Error_code ec = job.run();
     if(ec != OK)
       return ec;
-    for(std::size_t v = 0; v < job.cut_vertices().size(); ++v)
+    for(std::size_t v = 0; v < job.cut_vertices().size(); ++v) {
       put(uvmap, job.cut_vertices()[v], Point_2(job.uv()[v].real(), job.uv()[v].imag()));
+      if constexpr(with_charts) {
+        const std::pair<int, std::complex<double> > cp = job.chart_point(v);
+        Chart_point<Point_2> c;
+        c.chart = cp.first;
+        c.point = Point_2(cp.second.real(), cp.second.imag());
+        put(chartmap, job.cut_vertices()[v], c);
+      }
+    }
     return OK;
   }
 
@@ -243,7 +273,8 @@ public:
 private:
   Orbifold_type type_;
   Traits traits_;
-  internal::Embedding_settings<TM_edge_descriptor> settings_;
+  typedef internal::Embedding_settings<TM_edge_descriptor> Settings;
+  Settings settings_;
   mutable Status last_status_;                   // (the cone-map overload)
   mutable Embedding_statistics last_statistics_; // (the cone-map overload)
 };

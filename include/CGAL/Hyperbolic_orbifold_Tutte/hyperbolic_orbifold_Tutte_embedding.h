@@ -22,6 +22,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <chrono>
+#include <optional>
 #include <vector>
 
 /// \file hyperbolic_orbifold_Tutte_embedding.h
@@ -76,6 +77,12 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     coordinates are `Embedding_statistics::frame` applied to the positions in the tile; see
     `Hyperbolic_orbifold_Tutte_parameterizer_3::set_recentring()`}
     \cgalParamDefault{`false`} \cgalParamNEnd
+  \cgalParamNBegin{chart_map} \cgalParamDescription{a read-write property map from halfedges to
+    `Chart_point<Point_2>`: allows a part of the embedding that converges onto cone images (a long
+    protrusion ending at a landmark), too small for `double` in the tile, to be written in charts
+    centred at them, and receives each corner's chart point (\ref HOT_Charts);
+    `Embedding_statistics::charts` receives the charts}
+    \cgalParamDefault{none: such an embedding is refused (`ERROR_NO_1_TO_1_MAPPING`)} \cgalParamNEnd
   \cgalParamNBegin{verbose} \cgalParamDescription{prints the solver's progress on `std::cerr`}
     \cgalParamDefault{`false`} \cgalParamNEnd
   \cgalParamNBegin{embedding_statistics} \cgalParamDescription{an `Embedding_statistics*` filled on return}
@@ -151,9 +158,16 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
     parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });
   }
   internal::Seam_vertex_points<Mesh, Point_2> canonical(tm);
+  constexpr bool with_charts = !is_default_parameter<NamedParameters, internal_np::chart_map_t>::value;
+  std::optional<internal::Seam_vertex_points<Mesh, Chart_point<Point_2> > > chart_points;
   std::vector<std::size_t> order_used = st.landmark_order;
-  const Error_code ec =
-    parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), &st);
+  Error_code ec;
+  if constexpr(with_charts) {
+    chart_points.emplace(tm);
+    ec = parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), chart_points->map(), &st);
+  }
+  else
+    ec = parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), &st);
   st.landmark_order = order_used;
   st.time_setup += time_cut;
   if(ec != OK)
@@ -165,6 +179,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
       const typename boost::graph_traits<Mesh>::halfedge_descriptor sh(h, false);
       const auto vd = target(sh, mesh);
       put(uvmap, h, canonical.at(vd));
+      if constexpr(with_charts)
+        put(get_parameter(np, internal_np::chart_map), h, chart_points->at(vd));
     }
   return OK;
 }

@@ -37,6 +37,8 @@ enum embedding_statistics_t { embedding_statistics };
 enum edge_weight_map_t { edge_weight_map };
 enum recentring_t { recentring };
 enum frame_t { frame };
+enum chart_map_t { chart_map };
+enum charts_t { charts };
 enum maximum_hole_length_t { maximum_hole_length };
 enum keep_largest_component_t { keep_largest_component };
 enum split_boundary_chords_t { split_boundary_chords };
@@ -82,6 +84,16 @@ CGAL_HOT_NAMED_PARAMETER(recentring)
 /// `Hyperbolic_isometry_2<double>`: for `certify_hyperbolic_orbifold_embedding()`, the frame
 /// of a recentred embedding (`Embedding_statistics::frame`; default the identity)
 CGAL_HOT_NAMED_PARAMETER(frame)
+
+/// a read-write property map from halfedges to `Chart_point`: allows a part of the
+/// embedding that converges onto cone images to be written in charts around them, and
+/// receives every corner's chart point (\ref HOT_Charts); for
+/// `certify_hyperbolic_orbifold_embedding()`, `Embedding_locator` and the surface maps,
+/// the chart points of an embedding written so (default: none; such a part is refused)
+CGAL_HOT_NAMED_PARAMETER(chart_map)
+/// `std::vector<Hyperbolic_isometry_2<double> >`: the charts of an embedding
+/// (`Embedding_statistics::charts`), with `chart_map` (default: none)
+CGAL_HOT_NAMED_PARAMETER(charts)
 
 /// `double`: for `prepare_polygon_soup_for_embedding()`, the longest boundary loop that is
 /// filled as a hole, as a fraction of the diagonal of the mesh's bounding box (default 0.5)

@@ -6,6 +6,7 @@
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CERTIFICATE_H
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_charts.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 
 #include <cmath>
@@ -14,6 +15,34 @@
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
+
+// the twin, cone and border checks of certify_flat() for the charted region's vertex q
+template <class Distance>
+void check_charted_vertex(const Cone_charts& ch, int q, double tolerance, const Distance& hdist, Embedding_certificate& cert)
+{
+  typedef std::complex<double> C;
+  const Flat_problem& Q = ch.Q;
+  const C z = ch.q_position[q];
+  if(Q.kind[q] == Transformed) {
+    const double d = hdist(Q.transform[q].apply(ch.q_position[Q.twin[q]]), z);
+    cert.max_twin_error = (std::max)(cert.max_twin_error, d);
+    if(!(d <= tolerance))
+      ++cert.twin_failures;
+  }
+  if(Q.corner[q] >= 0 && Q.kind[q] == Fixed) { // a cone copy: at its chart's origin
+    const double d = hdist(Q.fixed[q], z);
+    cert.max_cone_error = (std::max)(cert.max_cone_error, d);
+    if(!(d <= tolerance) || Q.fixed[q] != C(0, 0))
+      ++cert.cone_failures;
+  }
+  if(Q.kind[q] == On_line) { // on its side's segment in the chart (a Klein segment)
+    const C k = poincare_to_klein(z) - Q.line_k0[q], D = Q.line_D[q];
+    const double off = std::abs(D.real() * k.imag() - D.imag() * k.real()) / std::abs(D);
+    cert.max_border_error = (std::max)(cert.max_border_error, off);
+    if(!(off <= tolerance))
+      ++cert.border_failures;
+  }
+}
 
 // Checks an embedding of the cut mesh given by one Poincare point per cut-mesh vertex.
 //
@@ -25,9 +54,13 @@ namespace internal {
 // and a quarter of the tile's area, far above the rounding of the angles computed in
 // double precision (which reaches 1e-4 on nearly flat triangles) and far below the
 // smallest wrong value. Twins, cones and border points are measured with `tolerance`.
+//
+// With `charts`, the faces of the charted region are checked in their charts' coordinates
+// (orientation, angles and areas do not depend on the frame: isometries), and so are the
+// twins, cones and border points of the region's vertices.
 template <class Tile>
 Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
-                                   double tolerance = 1e-6)
+                                   double tolerance = 1e-6, const Cone_charts* charts = nullptr)
 {
   typedef std::complex<double> C;
   typedef typename Tile::Traits Traits;
@@ -42,12 +75,21 @@ Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, cons
   for(int v = 0; v < P.n; ++v)
     if(!(squared_modulus(uv[v]) < 1.0) || !std::isfinite(uv[v].real()) || !std::isfinite(uv[v].imag()))
       ++cert.points_outside_disk;
+  const bool charted = charts != nullptr && !charts->empty();
+  if(charted)
+    for(const C& z : charts->q_position)
+      if(!(squared_modulus(z) < 1.0) || !std::isfinite(z.real()) || !std::isfinite(z.imag()))
+        ++cert.points_outside_disk;
 
   std::vector<double> angle_sum(P.n_base, 0.0);
   auto pt = [&](int v) { return Point_2(uv[v].real(), uv[v].imag()); };
+  auto point = [](const C& z) { return Point_2(z.real(), z.imag()); };
   if(cert.points_outside_disk == 0) {
-    for(const auto& t : P.faces) {
-      const Point_2 a = pt(t[0]), b = pt(t[1]), c = pt(t[2]);
+    for(std::size_t f = 0; f < P.faces.size(); ++f) {
+      const auto& t = P.faces[f];
+      const Point_2 a = charted ? point(charts->face_point(P, uv, f, 0)) : pt(t[0]);
+      const Point_2 b = charted ? point(charts->face_point(P, uv, f, 1)) : pt(t[1]);
+      const Point_2 c = charted ? point(charts->face_point(P, uv, f, 2)) : pt(t[2]);
       const Orientation o = orient(a, b, c);
       if(o == NEGATIVE)
         ++cert.flipped_faces;
@@ -88,6 +130,18 @@ Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, cons
       return CGAL::to_double(tr.compute_hyperbolic_distance_2_object()(Point_2(p.real(), p.imag()), Point_2(q.real(), q.imag())));
     };
     for(int v = 0; v < P.n; ++v) {
+      const int q = charted ? charts->region_q[v] : -1;
+      if(q >= 0) { // in its chart
+        check_charted_vertex(*charts, q, tolerance, hdist, cert);
+        if(P.corner[v] >= 0) { // and the chart is centred at the cone's tile corner
+          const auto& c = tile.corner(P.corner[v]);
+          const double d = hdist(charts->chart[charts->q_chart[q]].apply(C(CGAL::to_double(c.x()), CGAL::to_double(c.y()))), C(0, 0));
+          cert.max_cone_error = std::max(cert.max_cone_error, d);
+          if(!(d <= tolerance))
+            ++cert.cone_failures;
+        }
+        continue;
+      }
       if(P.kind[v] == Transformed) {
         const double d = hdist(P.transform[v].apply(uv[P.twin[v]]), uv[v]);
         cert.max_twin_error = std::max(cert.max_twin_error, d);

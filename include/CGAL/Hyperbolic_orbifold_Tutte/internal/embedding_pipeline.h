@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certify_and_repair.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_chart_solve.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_solver.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/recentring.h>
@@ -44,6 +45,7 @@ struct Embedding_settings
   double epsilon = 1e-6;            // the lower clamp of cotangent weights
   Solver_options solver;
   bool recentring = false;
+  bool charts = false;              // a part converging onto cone images may be written in charts
   std::function<double(const TM_edge_descriptor&)> user_weights; // empty: `weights`
 };
 
@@ -88,6 +90,15 @@ public:
 
   const std::vector<C>& uv() const { return uv_; }
   const std::vector<vertex_descriptor>& cut_vertices() const { return cut_vertices_; }
+  const Flat_problem& flat_problem() const { return P_; }
+  // the charts around cone images, where `uv()` is not the embedding (see cone_charts.h)
+  const Cone_charts& charts() const { return charts_; }
+  // the chart of cut vertex v (-1: none) and its position there
+  std::pair<int, C> chart_point(std::size_t v) const
+  {
+    const int q = charts_.empty() ? -1 : charts_.region_q[v];
+    return q < 0 ? std::make_pair(-1, C()) : std::make_pair(charts_.q_chart[q], charts_.q_position[q]);
+  }
 
 private:
   typedef std::chrono::steady_clock Clock;
@@ -165,6 +176,15 @@ private:
     const Embedding_certificate& c = st_.certificate;
     const bool local_failure = !c.is_bijective() && c.points_outside_disk == 0 && c.twin_failures == 0 &&
                                c.cone_failures == 0 && c.border_failures == 0;
+    if(solved && local_failure && tiny_.count > 0) {
+      double radius = 0;
+      Cone_charts probe;
+      onto_cones_ = choose_cone_charts(P_, tile_, uv_, tiny_.flag, radius, probe);
+    }
+    if(onto_cones_ && settings_.charts && solve_in_charts()) {
+      st_.time_certificate = seconds_since(t3);
+      return false;
+    }
     const bool recentring_tried = solved && local_failure && tiny_.count > 0 && settings_.recentring;
     if(recentring_tried) {
       const auto t4 = Clock::now();
@@ -177,6 +197,32 @@ private:
     }
     st_.time_certificate = seconds_since(t3);
     return recentring_tried;
+  }
+
+  // The faces below what double resolves converge onto cone images (a long protrusion ending
+  // at a landmark): solved again in charts centred at them; true when certified so
+  bool solve_in_charts()
+  {
+    const auto t = Clock::now();
+    std::vector<C> uv = uv_;
+    Embedding_statistics st = st_;
+    bool ok = solve_in_cone_charts(P_, tile_, uv, settings_.solver, charts_, st);
+    if(ok) {
+      st.certificate = certify_flat(P_, tile_, uv, 1e-6, &charts_);
+      ok = st.certificate.is_bijective();
+    }
+    st_.time_optimization += seconds_since(t);
+    if(!ok) {
+      charts_ = Cone_charts();
+      return false;
+    }
+    st.time_optimization = st_.time_optimization;
+    st_ = st;
+    st_.charted_faces = charts_.Q.faces.size();
+    st_.charts = charts_.chart;
+    st_.chart_corners = charts_.chart_corner;
+    uv_.swap(uv);
+    return true;
   }
 
   // Newton until rounding stops it, with every vertex's forces balanced to the floor
@@ -211,7 +257,15 @@ private:
     // triangles double cannot resolve: their edges within a few hundred units in the last
     // place of their coordinates (a protrusion without landmarks shrinks exponentially
     // along its length, by e per radius for a tube: about 33 radii exhaust double)
-    if(tiny_.count > 0) {
+    if(tiny_.count > 0 && onto_cones_) {
+      // a protrusion ending at a landmark: it converges onto the landmark's cone image
+      os << "; " << tiny_.count << " triangles are below what double resolves in the tile (smallest edge "
+         << tiny_.smallest << "): they converge onto cone images (a long protrusion ending at a landmark)";
+      if(settings_.charts)
+        os << ", and solving them again in charts centred at the cone images did not suffice";
+      else
+        os << "; allow charts centred at the cone images (a chart map: parameters::chart_map())";
+    } else if(tiny_.count > 0) {
       os << "; " << tiny_.count << " triangles are below what double resolves (smallest edge " << tiny_.smallest
          << "): a part of the mesh far from every landmark (a long protrusion) shrinks exponentially"
             " in the embedding; put a landmark on it";
@@ -238,6 +292,8 @@ private:
   std::vector<double> x_;
   Interior_laplacian interior_; // factored by the initialisation, reused by the solver
   std::vector<C> uv_;
+  Cone_charts charts_; // empty unless a region converging onto cone images needed them
+  bool onto_cones_ = false; // the faces double cannot resolve converge onto cone images
   Unresolved_faces tiny_;
 };
 

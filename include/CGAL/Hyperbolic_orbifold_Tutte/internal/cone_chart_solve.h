@@ -1,0 +1,334 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CONE_CHART_SOLVE_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CONE_CHART_SOLVE_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_charts.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton_on_region.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_solver.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/recentring.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <utility>
+#include <vector>
+
+// The region of the embedding that converges onto cone images, solved again in charts
+// centred at them (cone_charts.h): Newton on the region alone, its neighbours held fixed,
+// then Newton again on what is still unresolved there, each time at that part's own scale.
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// the most rounds of Newton on the still unresolved part of the charted region
+constexpr int max_chart_rounds = 24;
+
+// the hyperbolic distance of two points of the Poincare disk
+inline double hyperbolic_distance(const std::complex<double>& a, const std::complex<double>& b)
+{
+  return 2 * std::asinh(std::sqrt(hyperbolic_proximity(a, b)));
+}
+
+// Which cone images the unresolved faces `flag` (per face of P, at the tile positions `uv`)
+// converge onto, and the charts of their tile corners: false when some of them are near no
+// cone image (a protrusion without landmarks: charts cannot help).
+template <class Tile>
+bool choose_cone_charts(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
+                        const std::vector<char>& flag, double& radius, Cone_charts& ch)
+{
+  typedef std::complex<double> C;
+  const int nc = tile.number_of_corners();
+  std::vector<C> corner(nc);
+  for(int i = 0; i < nc; ++i)
+    corner[i] = C(CGAL::to_double(tile.corner(i).x()), CGAL::to_double(tile.corner(i).y()));
+  double closest = std::numeric_limits<double>::infinity();
+  for(int i = 0; i < nc; ++i)
+    for(int j = i + 1; j < nc; ++j)
+      closest = (std::min)(closest, hyperbolic_distance(corner[i], corner[j]));
+  // a ball around each corner, far from the others: a quarter of the closest two
+  radius = (std::min)(1.0, closest / 4);
+  std::vector<char> cone(tile.number_of_cones(), 0);
+  for(std::size_t f = 0; f < P.faces.size(); ++f) {
+    if(!flag[f])
+      continue;
+    for(int v : P.faces[f]) {
+      int near = -1;
+      for(int i = 0; i < nc && near < 0; ++i)
+        if(hyperbolic_distance(uv[v], corner[i]) < radius)
+          near = i;
+      if(near < 0)
+        return false;
+      cone[tile.corner_cone(near)] = 1;
+    }
+  }
+  ch = Cone_charts();
+  for(int i = 0; i < nc; ++i)
+    if(cone[tile.corner_cone(i)]) {
+      ch.chart.push_back(Cone_charts::Isometry::translation_to_origin(corner[i]));
+      ch.chart_corner.push_back(i);
+    }
+  return !ch.empty();
+}
+
+// The charted region's flat problem (Cone_charts::Q, positions in the charts) and its
+// variables `xq`, from P's tile positions `uv`: the vertices within `radius` of a chart's
+// corner (and the seam twins of those), each in that chart. False when the region is not
+// made of separate balls (an edge between two charts).
+template <class Tile>
+bool build_chart_problem(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
+                         double radius, Cone_charts& ch, std::vector<double>& xq)
+{
+  typedef std::complex<double> C;
+  typedef Cone_charts::Isometry Isometry;
+  const int nch = static_cast<int>(ch.chart.size());
+  std::vector<C> origin(nch);
+  for(int c = 0; c < nch; ++c) {
+    const auto& p = tile.corner(ch.chart_corner[c]);
+    origin[c] = C(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  }
+  std::vector<int> chart_of(P.n, -1);
+  auto nearest_chart = [&](int v, double limit) {
+    int best = -1;
+    double bd = limit;
+    for(int c = 0; c < nch; ++c) {
+      const double d = hyperbolic_distance(uv[v], origin[c]);
+      if(d < bd) {
+        bd = d;
+        best = c;
+      }
+    }
+    return best;
+  };
+  for(int v = 0; v < P.n; ++v)
+    chart_of[v] = P.corner[v] >= 0 ? -1 : nearest_chart(v, radius);
+  for(int v = 0; v < P.n; ++v) // cone copies: in the chart of their own corner
+    for(int c = 0; c < nch; ++c)
+      if(P.corner[v] == ch.chart_corner[c])
+        chart_of[v] = c;
+  for(int v = 0; v < P.n; ++v) // a seam copy moves with its twin: both in the region or neither
+    if(P.kind[v] == Transformed && (chart_of[v] < 0) != (chart_of[P.twin[v]] < 0)) {
+      const int u = chart_of[v] < 0 ? v : P.twin[v];
+      chart_of[u] = nearest_chart(u, std::numeric_limits<double>::infinity());
+    }
+  // Q's vertices: the region's (owners of variables first), then fixed copies of outside neighbours
+  Flat_problem& Q = ch.Q;
+  Q = Flat_problem();
+  Q.type = P.type;
+  Q.k = P.k;
+  Q.n_base = P.n_base;
+  ch.region_q.assign(P.n, -1);
+  ch.q_source.clear();
+  ch.q_chart.clear();
+  ch.q_region.clear();
+  auto add_vertex = [&](int v, int c, bool region) {
+    ch.q_source.push_back(v);
+    ch.q_chart.push_back(c);
+    ch.q_region.push_back(region ? 1 : 0);
+    Q.base.push_back(P.base[v]);
+    Q.side.push_back(region ? P.side[v] : -1);
+    Q.corner.push_back(region ? P.corner[v] : -1);
+    Q.kind.push_back(Fixed);
+    Q.var.push_back(-1);
+    Q.twin.push_back(-1);
+    Q.transform.push_back(Isometry());
+    Q.fixed.push_back(C());
+    Q.line_k0.push_back(C());
+    Q.line_D.push_back(C());
+    return Q.n++;
+  };
+  for(int v = 0; v < P.n; ++v)
+    if(chart_of[v] >= 0)
+      ch.region_q[v] = add_vertex(v, chart_of[v], true);
+  std::map<std::pair<int, int>, int> outside; // (P vertex, chart) -> its fixed copy
+  auto q_of = [&](int v, int c) {
+    if(ch.region_q[v] >= 0)
+      return ch.region_q[v];
+    const auto it = outside.find(std::make_pair(v, c));
+    if(it != outside.end())
+      return it->second;
+    const int q = add_vertex(v, c, false);
+    Q.fixed[q] = ch.chart[c].apply(uv[v]);
+    outside.emplace(std::make_pair(v, c), q);
+    return q;
+  };
+  // faces and edges of the region, each in one chart
+  ch.face_chart.assign(P.faces.size(), -1);
+  ch.face_q.assign(P.faces.size(), -1);
+  for(std::size_t f = 0; f < P.faces.size(); ++f) {
+    int c = -1;
+    for(int v : P.faces[f])
+      if(chart_of[v] >= 0) {
+        if(c >= 0 && chart_of[v] != c)
+          return false;
+        c = chart_of[v];
+      }
+    if(c < 0)
+      continue;
+    ch.face_chart[f] = c;
+    ch.face_q[f] = static_cast<int>(Q.faces.size());
+    Q.faces.push_back({q_of(P.faces[f][0], c), q_of(P.faces[f][1], c), q_of(P.faces[f][2], c)});
+  }
+  for(std::size_t e = 0; e < P.edges.size(); ++e) {
+    const int a = P.edges[e][0], b = P.edges[e][1];
+    if(chart_of[a] < 0 && chart_of[b] < 0)
+      continue;
+    if(chart_of[a] >= 0 && chart_of[b] >= 0 && chart_of[a] != chart_of[b])
+      return false;
+    const int c = chart_of[a] >= 0 ? chart_of[a] : chart_of[b];
+    Q.edges.push_back({q_of(a, c), q_of(b, c)});
+    Q.edge_weight.push_back(P.edge_weight[e]);
+  }
+  // the region's vertices in their charts: variables for the owners, then the seam copies
+  xq.clear();
+  for(int v = 0; v < P.n; ++v) {
+    const int q = ch.region_q[v];
+    if(q < 0)
+      continue;
+    const Isometry& m = ch.chart[chart_of[v]];
+    switch(P.kind[v]) {
+      case Fixed:
+        // a cone copy at its chart's corner is the origin itself
+        Q.fixed[q] = P.corner[v] == ch.chart_corner[chart_of[v]] ? C(0, 0) : m.apply(P.fixed[v]);
+        break;
+      case Free: {
+        const C w = m.apply(uv[v]);
+        Q.kind[q] = Free;
+        Q.var[q] = static_cast<int>(xq.size());
+        xq.push_back(w.real());
+        xq.push_back(w.imag());
+        break;
+      }
+      case On_line: {
+        // the side in the chart: its end at the chart's corner is the origin
+        const int s = P.side[v], corner = ch.chart_corner[chart_of[v]];
+        C e0 = poincare_to_klein(m.apply(klein_to_poincare(P.line_k0[v])));
+        C e1 = poincare_to_klein(m.apply(klein_to_poincare(P.line_k0[v] + P.line_D[v])));
+        if(tile.side_target(s) == corner)
+          std::swap(e0, e1);
+        if(tile.side_source(s) == corner || tile.side_target(s) == corner)
+          e0 = C(0, 0);
+        Q.kind[q] = On_line;
+        Q.line_k0[q] = e0;
+        Q.line_D[q] = e1 - e0;
+        const C d = poincare_to_klein(m.apply(uv[v])) - e0;
+        Q.var[q] = static_cast<int>(xq.size());
+        xq.push_back((d.real() * Q.line_D[q].real() + d.imag() * Q.line_D[q].imag()) / squared_modulus(Q.line_D[q]));
+        break;
+      }
+      case Transformed:
+        break;
+    }
+  }
+  for(int v = 0; v < P.n; ++v) {
+    const int q = ch.region_q[v];
+    if(q < 0 || P.kind[v] != Transformed)
+      continue;
+    const int t = P.twin[v];
+    Isometry m = ch.chart[chart_of[v]] * P.transform[v] * ch.chart[chart_of[t]].inverse();
+    // between two corners of one cone the pairing fixes the origin: a rotation, kept exact
+    if(std::abs(m.apply(C(0, 0))) < 1e-8)
+      m = Isometry(m.a() / std::abs(m.a()), C(0, 0));
+    Q.kind[q] = Transformed;
+    Q.twin[q] = ch.region_q[t];
+    Q.transform[q] = m;
+  }
+  Q.n_vars = static_cast<int>(xq.size());
+  return true;
+}
+
+// Solves the charted region again: Newton on all of it, then on what is still unresolved
+// (faces not positive, or below what double resolves even in the chart) and two rings
+// around it, at that part's own scale, while that helps. Returns the faces of Q left.
+template <class Traits>
+std::size_t solve_chart_problem(Cone_charts& ch, std::vector<double>& xq, const Traits& tr, const Solver_options& options,
+                                Embedding_statistics& st)
+{
+  const Flat_problem& Q = ch.Q;
+  Solver_options opt = options;
+  opt.max_iterations = (std::min)(opt.max_iterations, 50);
+  std::vector<char> region(Q.n, 0);
+  for(int q = 0; q < Q.n; ++q)
+    region[q] = ch.q_region[q];
+  std::size_t best = std::numeric_limits<std::size_t>::max();
+  Unresolved_faces left;
+  for(int round = 0, idle = 0; round < max_chart_rounds && idle < 4; ++round) {
+    Solver_statistics rs;
+    minimize_energy_on_region(Q, xq, region, opt, rs);
+    st.polishing_iterations += rs.iterations;
+    st.cg_iterations += rs.cg_iterations;
+    ch.q_position.resize(Q.n);
+    for(int q = 0; q < Q.n; ++q)
+      ch.q_position[q] = position(Q, xq, q);
+    left = unresolved_faces(Q, ch.q_position, tr, true);
+    if(options.verbose)
+      std::cerr << "  cone charts, round " << round + 1 << ": " << left.count
+                << " faces not positive or below what double resolves (smallest edge " << left.smallest << ")" << std::endl;
+    if(left.count == 0)
+      break;
+    idle = left.count < best ? 0 : idle + 1;
+    best = (std::min)(best, left.count);
+    // the next round: the faces left and two rings around them (at the owners of the variables)
+    std::fill(region.begin(), region.end(), 0);
+    auto owner = [&](int q) { return owner_vertex(Q, q); };
+    for(std::size_t f = 0; f < Q.faces.size(); ++f)
+      if(left.flag[f])
+        for(int q : Q.faces[f])
+          region[owner(q)] = 1;
+    for(int ring = 0; ring < 2; ++ring) {
+      std::vector<char> grown = region;
+      for(const auto& f : Q.faces)
+        if(region[owner(f[0])] || region[owner(f[1])] || region[owner(f[2])])
+          for(int q : f)
+            grown[owner(q)] = 1;
+      region.swap(grown);
+    }
+    for(int q = 0; q < Q.n; ++q)
+      region[q] = region[q] && ch.q_region[q];
+  }
+  return left.count;
+}
+
+// The faces of the tile's problem P that double cannot resolve and that converge onto cone
+// images, solved again in charts at those images. On success (every face of the region
+// resolved and positive) `ch` holds the charts and the region's positions, and `uv` the
+// region's tile positions (rounded: the charts hold the embedding there); returns false and
+// leaves `uv` as it was otherwise.
+template <class Tile>
+bool solve_in_cone_charts(const Flat_problem& P, const Tile& tile, std::vector<std::complex<double> >& uv,
+                          const Solver_options& options, Cone_charts& ch, Embedding_statistics& st)
+{
+  const Unresolved_faces flagged = unresolved_faces(P, uv, tile.traits(), true);
+  double radius = 0;
+  std::vector<double> xq;
+  if(flagged.count == 0 || !choose_cone_charts(P, tile, uv, flagged.flag, radius, ch) ||
+     !build_chart_problem(P, tile, uv, radius, ch, xq)) {
+    ch = Cone_charts();
+    return false;
+  }
+  if(solve_chart_problem(ch, xq, tile.traits(), options, st) > 0) {
+    ch = Cone_charts();
+    return false;
+  }
+  for(int q = 0; q < ch.Q.n; ++q)
+    if(ch.q_region[q])
+      uv[ch.q_source[q]] = ch.chart[ch.q_chart[q]].inverse().apply(ch.q_position[q]);
+  return true;
+}
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CONE_CHART_SOLVE_H
