@@ -7,6 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
@@ -14,6 +15,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/lifted_triangulation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_charts.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_build.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_search.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_walk.h>
@@ -161,8 +163,59 @@ public:
     build(tm, uv, tile);
   }
 
+  /// builds the locator of an embedding written partly in charts around cone images
+  /// (\ref HOT_Charts): `uv` as for the other constructors, `charts` the charts
+  /// (`Embedding_statistics::charts`) and `chart_map` (a readable property map from halfedges to
+  /// `Chart_point<Point_2>`) every corner's chart point. The faces written in a chart are
+  /// located in its coordinates (the tile points of their corners are not used).
+  template <class HalfedgeChartMap>
+  Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, HalfedgeChartMap chart_map,
+                    const std::vector<Isometry>& charts, Orbifold_type type, int k,
+                    Interpolation_model model = Hyperboloid_linear)
+    : Embedding_locator(tm, uv, type, k, model)
+  {
+    if(!lt_.valid || charts.empty())
+      return;
+    ch_.charts = charts;
+    ch_.face_chart.assign(faces_.size(), -1);
+    ch_.z.resize(faces_.size());
+    for(std::size_t i = 0; i < faces_.size(); ++i) {
+      const halfedge_descriptor h0 = halfedge(faces_[i], tm);
+      const halfedge_descriptor hs[3] = {h0, next(h0, tm), next(next(h0, tm), tm)};
+      for(int j = 0; j < 3; ++j) {
+        const auto cp = get(chart_map, hs[j]);
+        if(cp.chart < -1 || cp.chart >= static_cast<int>(charts.size())) {
+          lt_.fail("a corner's chart is not one of the charts");
+          return;
+        }
+        if(cp.chart >= 0)
+          ch_.face_chart[i] = cp.chart;
+      }
+      const int c = ch_.face_chart[i];
+      if(c >= 0)
+        for(int j = 0; j < 3; ++j) {
+          const auto p = chart_coordinates(charts, c, get(chart_map, hs[j]), get(uv, hs[j]));
+          ch_.z[i][j] = C(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+        }
+    }
+    ch_.build(lt_.tile);
+    // inverted faces: those of the tile's coordinates, and those of the charts in theirs
+    lt_.n_inverted = 0;
+    for(std::size_t i = 0; i < faces_.size(); ++i) {
+      const C* z = ch_.face_chart[i] >= 0 ? ch_.z[i].data() : lt_.faces[i].z;
+      lt_.n_inverted += lt_.orient(z[0], z[1], z[2]) > 0 ? 0 : 1;
+    }
+    lt_.message = lt_.n_inverted == 0 ? std::string()
+                                      : std::to_string(lt_.n_inverted) + " faces are not positively oriented: the embedding is not bijective";
+  }
+
   /// \name Access
   /// @{
+
+  /// the charts of the embedding (empty if it is written in the tile only)
+  const std::vector<Isometry>& charts() const { return ch_.charts; }
+  /// the chart face `i` is written in, or -1 (the tile's coordinates)
+  int face_chart(std::size_t i) const { return ch_.empty() ? -1 : ch_.face_chart[i]; }
 
   /// whether the locator was built (see `message()` otherwise)
   bool is_valid() const { return lt_.valid; }
@@ -222,13 +275,23 @@ public:
     const C z0(CGAL::to_double(z.x()), CGAL::to_double(z.y()));
     if(!(internal::squared_modulus(z0) < 1.0) || !std::isfinite(z0.real()) || !std::isfinite(z0.imag()))
       return loc;
-    // a corner's point, bitwise (before reduction: a vertex of B outside the tile is found too)
-    if(lt_.corner_hit(z0, Isometry(), loc))
+    // a corner's point, bitwise (before reduction: a vertex of B outside the tile is found too),
+    // not in a chart (where the tile points are rounded: the charts hold the embedding)
+    if(lt_.corner_hit(z0, Isometry(), loc) && face_chart(loc.face_index) < 0)
       return with_face(loc);
     const typename Tile::Reduction r = lt_.tile.reduce_to_tile(Point_2(z0.real(), z0.imag()));
     const C q(CGAL::to_double(r.point.x()), CGAL::to_double(r.point.y()));
-    if(lt_.corner_hit(q, r.element, loc))
+    if(lt_.corner_hit(q, r.element, loc) && face_chart(loc.face_index) < 0)
       return with_face(loc);
+    loc = Location();
+    // near a chart's origin: among its faces, in its coordinates
+    for(std::size_t c = 0; c < ch_.charts.size(); ++c) {
+      const C w = ch_.charts[c].apply(q);
+      if(2 * std::atanh((std::min)(std::abs(w), 1 - 1e-16)) <= ch_.reach[c] && locate_in_chart(static_cast<int>(c), w, loc)) {
+        loc.element = loc.element * r.element;
+        return with_face(loc);
+      }
+    }
 
     const int start = lt_.grid.start_face(q);
     Isometry h;
@@ -244,6 +307,25 @@ public:
     loc.used_search = true;
     loc.element = h.inverse() * r.element;
     return with_face(loc);
+  }
+
+  /// locates the point whose coordinates in the frame `chart` (an isometry applied to the tile's
+  /// coordinates, such as a chart of another embedding of the same orbifold) are `w`: in this
+  /// embedding's chart with the same isometry if it has one, else at `chart^-1(w)` (rounded to
+  /// `double`). With charts centred at one cone's image in two embeddings, the points of a
+  /// protrusion converging onto it are located at their own scale.
+  Location locate(const Point_2& w, const Isometry& chart) const
+  {
+    Location loc;
+    const C w0(CGAL::to_double(w.x()), CGAL::to_double(w.y()));
+    if(!lt_.valid || lt_.faces.empty() || !(internal::squared_modulus(w0) < 1.0) || !std::isfinite(w0.real()) ||
+       !std::isfinite(w0.imag()))
+      return loc;
+    const int c = ch_.chart_of(chart);
+    if(c >= 0 && locate_in_chart(c, w0, loc))
+      return with_face(loc);
+    const C z = chart.inverse().apply(w0);
+    return locate(Point_2(z.real(), z.imag()));
   }
 
   /// locates `z` with the fallback search only (for testing it; much slower than `locate()`)
@@ -270,6 +352,29 @@ private:
       lt_.place_start_points();
   }
 
+  // w among the faces of chart c, or across a side at its corner (an exact rotation into
+  // another chart of the cone); loc.element maps the point into the face (tile coordinates)
+  bool locate_in_chart(int c, const C& w, Location& loc) const
+  {
+    auto orient = [&](const C& a, const C& b, const C& p) { return lt_.orient(a, b, p); };
+    int f = ch_.find(c, w, orient), d = c;
+    Isometry rot;
+    for(std::size_t i = 0; f < 0 && i < ch_.across[c].size(); ++i) {
+      d = ch_.across[c][i].first;
+      rot = ch_.across[c][i].second;
+      f = ch_.find(d, rot.apply(w), orient);
+    }
+    if(f < 0)
+      return false;
+    loc = Location();
+    loc.face_index = static_cast<std::size_t>(f);
+    loc.barycentric = ch_.barycentric(f, rot.apply(w), lt_.model, loc.min_raw_barycentric);
+    loc.element = ch_.charts[d].inverse() * rot * ch_.charts[c];
+    loc.success = true;
+    loc.steps = 1;
+    return true;
+  }
+
   // the internal code fills the face's index only
   Location& with_face(Location& loc) const
   {
@@ -279,6 +384,7 @@ private:
   }
 
   internal::Lifted_triangulation<Traits> lt_;
+  internal::Chart_faces ch_; // (empty: no charts)
   std::vector<face_descriptor> faces_;
   std::vector<vertex_descriptor> vertices_;
 };

@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_chart_solve.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
@@ -51,9 +52,12 @@ orientation predicate on the given coordinates.
 \param uvmap for every halfedge `h` of a face, the point of corner `target(h)` in `face(h)`
 \param certificate receives the verdict and the count of each failure
 \param message if not null, receives a one-line explanation of an error
-\param np optional named parameters `orbifold_type` (default: from the mesh's topology) and
+\param np optional named parameters `orbifold_type` (default: from the mesh's topology),
        `frame` (a `Hyperbolic_isometry_2<double>`, default the identity): the map fills the
-       tile moved by `frame` (`Embedding_statistics::frame` of a recentred embedding)
+       tile moved by `frame` (`Embedding_statistics::frame` of a recentred embedding), and
+       `chart_map` with `charts` for an embedding written partly in charts around cone images
+       (\ref HOT_Charts): its faces there are checked in their charts' coordinates, and the
+       seam pairings between two charts centred at corners of one cone are exact rotations
 
 \return `OK` when the map could be analysed (read `certificate.is_bijective()`), otherwise the
 reason (invalid mesh or landmarks, or a cut that is not a simple path through the landmarks
@@ -109,7 +113,16 @@ Error_code certify_hyperbolic_orbifold_embedding(
     if(is_border(h, tm) || is_border(o, tm))
       continue;
     // corner of target(h) in face(h) vs in face(o); corner of source(h) likewise
-    const bool differ = get(uvmap, h) != get(uvmap, prev(o, tm)) || get(uvmap, prev(h, tm)) != get(uvmap, o);
+    bool differ = get(uvmap, h) != get(uvmap, prev(o, tm)) || get(uvmap, prev(h, tm)) != get(uvmap, o);
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value) {
+      // (in a chart, two copies of a vertex may have one rounded tile point: their chart points differ)
+      const auto cm = CGAL::parameters::get_parameter(np, internal_np::chart_map);
+      auto other = [&](halfedge_descriptor a, halfedge_descriptor b) {
+        const auto ca = get(cm, a), cb = get(cm, b);
+        return ca.chart != cb.chart || (ca.chart >= 0 && ca.point != cb.point);
+      };
+      differ = differ || other(h, prev(o, tm)) || other(prev(h, tm), o);
+    }
     if(differ)
       mesh.add_seam(source(h, tm), target(h, tm));
   }
@@ -134,6 +147,15 @@ Error_code certify_hyperbolic_orbifold_embedding(
       index_of[k] = i;
   }
   std::vector<std::complex<double> > uv(P.n, std::complex<double>(2.0, 0.0));
+  constexpr bool with_charts = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value;
+  std::vector<int> chart_of(with_charts ? P.n : 0, -2); // (-2: not seen yet)
+  std::vector<std::complex<double> > chart_local(with_charts ? P.n : 0);
+  std::vector<Hyperbolic_isometry_2<double> > charts;
+  if constexpr(with_charts) {
+    static_assert(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::charts_t>::value,
+                  "parameters::chart_map() needs parameters::charts()");
+    charts = CGAL::parameters::get_parameter(np, internal_np::charts);
+  }
   for(face_descriptor f : faces(tm))
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
       const auto vd = target(typename boost::graph_traits<Mesh>::halfedge_descriptor(h, false), mesh);
@@ -142,7 +164,33 @@ Error_code certify_hyperbolic_orbifold_embedding(
         return fail(ERROR_CUT_FAILED, "a corner could not be matched to a vertex of the cut mesh");
       const Point_2 p = get(uvmap, h);
       uv[index_of[k]] = std::complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      if constexpr(with_charts) {
+        const auto cp = get(CGAL::parameters::get_parameter(np, internal_np::chart_map), h);
+        const int i = index_of[k];
+        if(cp.chart < -1 || cp.chart >= static_cast<int>(charts.size()))
+          return fail(ERROR_WRONG_PARAMETER, "a corner's chart " + std::to_string(cp.chart) + " is not one of the " +
+                                               std::to_string(charts.size()) + " charts");
+        if(chart_of[i] != -2 && chart_of[i] != cp.chart)
+          return fail(ERROR_WRONG_PARAMETER, "two corners of one vertex (off the cut) are in different charts");
+        chart_of[i] = cp.chart;
+        chart_local[i] = std::complex<double>(CGAL::to_double(cp.point.x()), CGAL::to_double(cp.point.y()));
+      }
     }
+  if constexpr(with_charts) {
+    for(const auto& m : charts)
+      if(!m.is_orientation_preserving())
+        return fail(ERROR_WRONG_PARAMETER, "a chart must be an orientation-preserving isometry");
+    for(int& c : chart_of)
+      c = (std::max)(c, -1);
+    internal::Cone_charts ch;
+    if(!charts.empty()) {
+      if(!internal::charts_of_written_embedding(P, tile, uv, charts, chart_of, chart_local, ch))
+        return fail(ERROR_WRONG_PARAMETER, "the charts do not make separate regions (a face or an edge joins two charts, "
+                                           "or a seam copy is in a chart and its twin is not)");
+      certificate = internal::certify_flat(P, tile, uv, 1e-6, &ch);
+      return OK;
+    }
+  }
   certificate = internal::certify_flat(P, tile, uv);
   return OK;
 }

@@ -25,6 +25,7 @@
 #endif
 
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 /// \file surface_maps.h
@@ -33,6 +34,74 @@
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
+
+namespace internal {
+
+// map_vertices(): `chart_of(h)` the chart of corner h of A (-1: the tile's coordinates) and
+// `chart_point(h)` its point there
+template <class TriangleMeshA, class HalfedgeUVMapA, class Locator, class ChartOf,
+          class ChartPoint = std::nullptr_t>
+std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, HalfedgeUVMapA uvA, const Locator& locB,
+                                                     const ChartOf& chart_of,
+                                                     const std::vector<Hyperbolic_isometry_2<double> >& charts,
+                                                     const ChartPoint& chart_point = nullptr)
+{
+  typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMeshA>::halfedge_descriptor halfedge_descriptor;
+  typedef typename Locator::Point_2 Point_2;
+  // the point of one corner of each vertex (none for an isolated vertex: not located), and its chart
+  std::vector<Point_2> points;
+  std::vector<int> chart; // -2: no point
+  points.reserve(num_vertices(A));
+  chart.reserve(num_vertices(A));
+  for(vertex_descriptor v : vertices(A)) {
+    halfedge_descriptor corner = boost::graph_traits<TriangleMeshA>::null_halfedge();
+    const halfedge_descriptor h0 = halfedge(v, A);
+    if(h0 != boost::graph_traits<TriangleMeshA>::null_halfedge())
+      for(halfedge_descriptor h : halfedges_around_target(h0, A))
+        if(!is_border(h, A)) {
+          corner = h;
+          break;
+        }
+    if(corner == boost::graph_traits<TriangleMeshA>::null_halfedge()) {
+      points.push_back(Point_2(0, 0));
+      chart.push_back(-2);
+      continue;
+    }
+    const int c = chart_of(corner);
+    if constexpr(!std::is_same<ChartPoint, std::nullptr_t>::value)
+      if(c >= 0) {
+        const auto p = chart_point(corner);
+        points.push_back(Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())));
+        chart.push_back(c);
+        continue;
+      }
+    const auto p = get(uvA, corner);
+    points.push_back(Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())));
+    chart.push_back(-1);
+  }
+  std::vector<typename Locator::Location> result(points.size());
+  auto run = [&](std::size_t i) {
+    if(chart[i] == -1)
+      result[i] = locB.locate(points[i]);
+    else if(chart[i] >= 0)
+      result[i] = locB.locate(points[i], charts[chart[i]]);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(points.size() > 10000) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t i = r.begin(); i != r.end(); ++i)
+        run(i);
+    });
+    return result;
+  }
+#endif
+  for(std::size_t i = 0; i < points.size(); ++i)
+    run(i);
+  return result;
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
@@ -60,49 +129,29 @@ the number of threads). An isolated vertex is not located (`success` is `false`)
 template <class TriangleMeshA, class HalfedgeUVMapA, class Locator>
 std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, HalfedgeUVMapA uvA, const Locator& locB)
 {
-  typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<TriangleMeshA>::halfedge_descriptor halfedge_descriptor;
-  typedef typename Locator::Point_2 Point_2;
-  // the point of one corner of each vertex (none for an isolated vertex: not located)
-  std::vector<Point_2> points;
-  std::vector<char> has_point;
-  points.reserve(num_vertices(A));
-  has_point.reserve(num_vertices(A));
-  for(vertex_descriptor v : vertices(A)) {
-    halfedge_descriptor corner = boost::graph_traits<TriangleMeshA>::null_halfedge();
-    const halfedge_descriptor h0 = halfedge(v, A);
-    if(h0 != boost::graph_traits<TriangleMeshA>::null_halfedge())
-      for(halfedge_descriptor h : halfedges_around_target(h0, A))
-        if(!is_border(h, A)) {
-          corner = h;
-          break;
-        }
-    if(corner == boost::graph_traits<TriangleMeshA>::null_halfedge()) {
-      points.push_back(Point_2(0, 0));
-      has_point.push_back(0);
-      continue;
-    }
-    const auto p = get(uvA, corner);
-    points.push_back(Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())));
-    has_point.push_back(1);
-  }
-  std::vector<typename Locator::Location> result(points.size());
-  auto run = [&](std::size_t i) {
-    if(has_point[i])
-      result[i] = locB.locate(points[i]);
-  };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(points.size() > 10000) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const tbb::blocked_range<std::size_t>& r) {
-      for(std::size_t i = r.begin(); i != r.end(); ++i)
-        run(i);
-    });
-    return result;
-  }
-#endif
-  for(std::size_t i = 0; i < points.size(); ++i)
-    run(i);
-  return result;
+  return internal::map_vertices(A, uvA, locB, [](const auto&) { return -1; }, std::vector<Hyperbolic_isometry_2<double> >());
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+`map_vertices()` for an embedding of `A` written partly in charts around cone images
+(\ref HOT_Charts): a vertex written in a chart is located in `B`'s chart with the same
+isometry (a chart centred at the same tile corner) at its own scale, where `B` has one (see
+`Embedding_locator::locate(const Point_2&, const Isometry&)`). `locB` is built with `B`'s
+charts when `B` has some.
+
+\tparam HalfedgeChartMapA a model of `ReadablePropertyMap` from the halfedges of `A` to `Chart_point`
+\param chart_mapA the chart points of `A`'s corners
+\param chartsA the charts of `A` (`Embedding_statistics::charts`)
+*/
+template <class TriangleMeshA, class HalfedgeUVMapA, class HalfedgeChartMapA, class Locator>
+std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, HalfedgeUVMapA uvA, HalfedgeChartMapA chart_mapA,
+                                                     const std::vector<Hyperbolic_isometry_2<double> >& chartsA,
+                                                     const Locator& locB)
+{
+  return internal::map_vertices(A, uvA, locB, [&](const auto& h) { return get(chart_mapA, h).chart; }, chartsA,
+                                [&](const auto& h) { return get(chart_mapA, h).point; });
 }
 
 /*!

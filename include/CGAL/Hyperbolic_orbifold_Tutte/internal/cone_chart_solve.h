@@ -80,22 +80,14 @@ bool choose_cone_charts(const Flat_problem& P, const Tile& tile, const std::vect
   return !ch.empty();
 }
 
-// The charted region's flat problem (Cone_charts::Q, positions in the charts) and its
-// variables `xq`, from P's tile positions `uv`: the vertices within `radius` of a chart's
-// corner (and the seam twins of those), each in that chart. False when the region is not
-// made of separate balls (an edge between two charts).
-template <class Tile>
-bool build_chart_problem(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
-                         double radius, Cone_charts& ch, std::vector<double>& xq)
+// The vertices within `radius` of a chart's corner, each in that chart (cone copies in
+// the chart of their own corner), and the seam twins of those: per vertex of P its chart
+// or -1.
+inline std::vector<int> assign_charts(const Flat_problem& P, const std::vector<std::complex<double> >& uv,
+                                      const std::vector<std::complex<double> >& origin,
+                                      const std::vector<int>& chart_corner, double radius)
 {
-  typedef std::complex<double> C;
-  typedef Cone_charts::Isometry Isometry;
-  const int nch = static_cast<int>(ch.chart.size());
-  std::vector<C> origin(nch);
-  for(int c = 0; c < nch; ++c) {
-    const auto& p = tile.corner(ch.chart_corner[c]);
-    origin[c] = C(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-  }
+  const int nch = static_cast<int>(origin.size());
   std::vector<int> chart_of(P.n, -1);
   auto nearest_chart = [&](int v, double limit) {
     int best = -1;
@@ -113,13 +105,30 @@ bool build_chart_problem(const Flat_problem& P, const Tile& tile, const std::vec
     chart_of[v] = P.corner[v] >= 0 ? -1 : nearest_chart(v, radius);
   for(int v = 0; v < P.n; ++v) // cone copies: in the chart of their own corner
     for(int c = 0; c < nch; ++c)
-      if(P.corner[v] == ch.chart_corner[c])
+      if(P.corner[v] == chart_corner[c])
         chart_of[v] = c;
   for(int v = 0; v < P.n; ++v) // a seam copy moves with its twin: both in the region or neither
     if(P.kind[v] == Transformed && (chart_of[v] < 0) != (chart_of[P.twin[v]] < 0)) {
       const int u = chart_of[v] < 0 ? v : P.twin[v];
       chart_of[u] = nearest_chart(u, std::numeric_limits<double>::infinity());
     }
+  return chart_of;
+}
+
+// The charted region's flat problem (Cone_charts::Q, positions in the charts) and its
+// variables `xq`, from P's tile positions `uv`, for the charts `ch.chart` centred at the
+// tile corners `ch.chart_corner` and the chart of each vertex `chart_of` (-1: none). False
+// when a face or an edge would join two charts, or a seam copy is in a chart and its twin
+// is not.
+template <class Tile>
+bool build_chart_problem(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
+                         const std::vector<int>& chart_of, Cone_charts& ch, std::vector<double>& xq)
+{
+  typedef std::complex<double> C;
+  typedef Cone_charts::Isometry Isometry;
+  for(int v = 0; v < P.n; ++v)
+    if(P.kind[v] == Transformed && (chart_of[v] < 0) != (chart_of[P.twin[v]] < 0))
+      return false;
   // Q's vertices: the region's (owners of variables first), then fixed copies of outside neighbours
   Flat_problem& Q = ch.Q;
   Q = Flat_problem();
@@ -246,9 +255,56 @@ bool build_chart_problem(const Flat_problem& P, const Tile& tile, const std::vec
   return true;
 }
 
-// Solves the charted region again: Newton on all of it, then on what is still unresolved
-// (faces not positive, or below what double resolves even in the chart) and two rings
-// around it, at that part's own scale, while that helps. Returns the faces of Q left.
+// the tile corners at the charts' origins
+template <class Tile>
+std::vector<std::complex<double> > chart_origins(const Tile& tile, const Cone_charts& ch)
+{
+  std::vector<std::complex<double> > origin;
+  for(int i : ch.chart_corner)
+    origin.emplace_back(CGAL::to_double(tile.corner(i).x()), CGAL::to_double(tile.corner(i).y()));
+  return origin;
+}
+
+// The charts of a written embedding, for its certificate: the charts `charts`, each
+// centred at the tile corner its origin comes from (the nearest one), the chart of each
+// vertex of P `chart_of` and its position there `local`. False when they do not make a
+// charted region (see build_chart_problem()).
+template <class Tile>
+bool charts_of_written_embedding(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
+                                 const std::vector<Cone_charts::Isometry>& charts, const std::vector<int>& chart_of,
+                                 const std::vector<std::complex<double> >& local, Cone_charts& ch)
+{
+  typedef std::complex<double> C;
+  ch = Cone_charts();
+  ch.chart = charts;
+  for(const auto& m : charts) {
+    const C o = m.inverse().apply(C(0, 0));
+    int best = 0;
+    for(int i = 1; i < tile.number_of_corners(); ++i) {
+      const C ci(CGAL::to_double(tile.corner(i).x()), CGAL::to_double(tile.corner(i).y()));
+      const C cb(CGAL::to_double(tile.corner(best).x()), CGAL::to_double(tile.corner(best).y()));
+      if(hyperbolic_distance(o, ci) < hyperbolic_distance(o, cb))
+        best = i;
+    }
+    ch.chart_corner.push_back(best);
+  }
+  std::vector<double> xq;
+  if(!build_chart_problem(P, tile, uv, chart_of, ch, xq))
+    return false;
+  ch.q_position.resize(ch.Q.n);
+  for(int q = 0; q < ch.Q.n; ++q)
+    ch.q_position[q] = ch.q_region[q] ? local[ch.q_source[q]] : ch.Q.fixed[q];
+  return true;
+}
+
+// Solves the charted region again: Newton on all of it, then, where faces are still not
+// positive or below what double resolves (deeper than the energy's double can see: it
+// resolves 16 orders of magnitude of energy, 8 of length), sweeps from the shallowest of
+// them down to the cone, Newton on one band of distances to the cone at a time (7 orders of
+// magnitude, the next band 4 orders deeper), the rest held fixed: a band's upper part is
+// then accurate whatever is below it (an error at the band's floor decays upwards as the
+// square of the ratio of distances), and is the next band's ceiling. Returns the faces of Q
+// left unresolved.
 template <class Traits>
 std::size_t solve_chart_problem(Cone_charts& ch, std::vector<double>& xq, const Traits& tr, const Solver_options& options,
                                 Embedding_statistics& st)
@@ -259,42 +315,65 @@ std::size_t solve_chart_problem(Cone_charts& ch, std::vector<double>& xq, const 
   std::vector<char> region(Q.n, 0);
   for(int q = 0; q < Q.n; ++q)
     region[q] = ch.q_region[q];
-  std::size_t best = std::numeric_limits<std::size_t>::max();
   Unresolved_faces left;
-  for(int round = 0, idle = 0; round < max_chart_rounds && idle < 4; ++round) {
+  int rounds = 0;
+  auto solve = [&](const char* what) {
     Solver_statistics rs;
-    minimize_energy_on_region(Q, xq, region, opt, rs);
+    const Error_code rec = minimize_energy_on_region(Q, xq, region, opt, rs);
     st.polishing_iterations += rs.iterations;
     st.cg_iterations += rs.cg_iterations;
+    ++rounds;
+    if(options.verbose) {
+      int moving = 0;
+      for(char r : region)
+        moving += r;
+      std::cerr << "  cone charts, " << what << ": " << moving << " vertices, " << rs.iterations << " Newton steps, "
+                << error_message(rec) << ", imbalance " << rs.relative_gradient_norm << std::endl;
+    }
+  };
+  auto check = [&]() {
     ch.q_position.resize(Q.n);
     for(int q = 0; q < Q.n; ++q)
       ch.q_position[q] = position(Q, xq, q);
     left = unresolved_faces(Q, ch.q_position, tr, true);
     if(options.verbose)
-      std::cerr << "  cone charts, round " << round + 1 << ": " << left.count
-                << " faces not positive or below what double resolves (smallest edge " << left.smallest << ")" << std::endl;
-    if(left.count == 0)
-      break;
-    idle = left.count < best ? 0 : idle + 1;
-    best = (std::min)(best, left.count);
-    // the next round: the faces left and two rings around them (at the owners of the variables)
-    std::fill(region.begin(), region.end(), 0);
-    auto owner = [&](int q) { return owner_vertex(Q, q); };
+      std::cerr << "  cone charts: " << left.count << " faces not positive or below what double resolves (smallest edge "
+                << left.smallest << ")" << std::endl;
+  };
+  solve("the whole region");
+  check();
+  // the deepest moving vertex at the current positions
+  auto lowest = [&]() {
+    double r = std::numeric_limits<double>::infinity();
+    for(int q = 0; q < Q.n; ++q)
+      if(ch.q_region[q] && Q.kind[q] != Fixed && std::abs(ch.q_position[q]) > 0)
+        r = (std::min)(r, std::abs(ch.q_position[q]));
+    return r;
+  };
+  for(int sweep = 0; sweep < 3 && left.count > 0 && rounds < max_chart_rounds * 8; ++sweep) {
+    double hi = 0;
     for(std::size_t f = 0; f < Q.faces.size(); ++f)
       if(left.flag[f])
         for(int q : Q.faces[f])
-          region[owner(q)] = 1;
-    for(int ring = 0; ring < 2; ++ring) {
-      std::vector<char> grown = region;
-      for(const auto& f : Q.faces)
-        if(region[owner(f[0])] || region[owner(f[1])] || region[owner(f[2])])
-          for(int q : f)
-            grown[owner(q)] = 1;
-      region.swap(grown);
+          hi = (std::max)(hi, std::abs(ch.q_position[q]));
+    for(double top = 10 * hi; rounds < max_chart_rounds * 8; top *= 1e-4) {
+      bool any = false;
+      for(int q = 0; q < Q.n; ++q) {
+        const double r = std::abs(ch.q_position[q]);
+        region[q] = ch.q_region[q] && r <= top && r >= 1e-7 * top;
+        any = any || (region[q] && Q.kind[q] != Fixed);
+      }
+      if(any)
+        solve("a band");
+      for(int q = 0; q < Q.n; ++q) // (the next band is chosen at the new positions)
+        ch.q_position[q] = position(Q, xq, q);
+      if(!(lowest() < 1e-7 * top))
+        break; // the band reached the deepest vertex
     }
-    for(int q = 0; q < Q.n; ++q)
-      region[q] = region[q] && ch.q_region[q];
+    check();
   }
+  if(options.verbose)
+    std::cerr << "  cone charts: " << rounds << " solves, " << left.count << " faces left" << std::endl;
   return left.count;
 }
 
@@ -311,7 +390,7 @@ bool solve_in_cone_charts(const Flat_problem& P, const Tile& tile, std::vector<s
   double radius = 0;
   std::vector<double> xq;
   if(flagged.count == 0 || !choose_cone_charts(P, tile, uv, flagged.flag, radius, ch) ||
-     !build_chart_problem(P, tile, uv, radius, ch, xq)) {
+     !build_chart_problem(P, tile, uv, assign_charts(P, uv, chart_origins(tile, ch), ch.chart_corner, radius), ch, xq)) {
     ch = Cone_charts();
     return false;
   }
