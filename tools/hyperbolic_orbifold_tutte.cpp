@@ -126,6 +126,7 @@ typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor SM_halfedge;
 typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
 
 typedef Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> UV_map;
+typedef Surface_mesh::Property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> > Chart_map;
 
 // a mesh file read for a job (as is, or prepared with --repair), its addressing by the file's
 // vertices, and the landmarks moved by --snap-landmarks
@@ -260,23 +261,25 @@ Embed_job parse_embed_options(int argc, char** argv)
 
 // the certified embedding of `m` with the job's options (the failure's reason otherwise)
 HOT::Embedding_statistics embed_mesh(const Embed_job& job, Surface_mesh& m, const std::vector<SM_vertex>& landmarks,
-                                     UV_map uv)
+                                     UV_map uv, Chart_map charts)
 {
   HOT::Embedding_statistics st;
   const HOT::Landmark_order order = job.request.order == "tsp" ? HOT::Tsp_order : HOT::Given_order;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     m, landmarks, uv,
-    HOT::parameters::recentring(
-      job.recentre,
-      HOT::parameters::embedding_statistics(
-        &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type))))));
+    HOT::parameters::chart_map(
+      charts,
+      HOT::parameters::recentring(
+        job.recentre,
+        HOT::parameters::embedding_statistics(
+          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type)))))));
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
   return st;
 }
 
 // OUT.obj, and the picture and the report when asked for
-void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_map& uv,
+void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_map& uv, const Chart_map& charts,
                          const std::vector<SM_vertex>& landmarks, const HOT::Embedding_statistics& st, const Input& in)
 {
   const HOT::Orbifold_type type = job.request.type;
@@ -286,7 +289,8 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
     tile = tile.transformed(st.frame); // the tile of the written coordinates
 
   Output_files files;
-  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr); });
+  const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
+  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr, &ch); });
   if(job.svg_path) {
     std::ostringstream title;
     title << (type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold, " << landmarks.size() << " cones, "
@@ -318,13 +322,16 @@ int run_embed(int argc, char** argv)
     job.request.snaps = &in.snaps;
 
   const UV_map uv = m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
-  const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv);
-  write_embed_outputs(job, m, uv, landmarks, st, in);
+  const Chart_map charts = m.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
+  const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts);
+  write_embed_outputs(job, m, uv, charts, landmarks, st, in);
   std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
             << (type == HOT::Sphere_type ? "sphere" : "disk") << " type) in "
             << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
             << st.iterations << " Newton iterations, certified bijective"
-            << (st.recentred ? " in a recentred frame (given in the report)" : "") << "; wrote " << job.out_path << std::endl;
+            << (st.recentred ? " in a recentred frame (given in the report)" : "")
+            << (st.charted_faces > 0 ? ", " + std::to_string(st.charted_faces) + " faces in charts around cone images" : std::string())
+            << "; wrote " << job.out_path << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -336,6 +343,7 @@ struct Embedded
   std::vector<SM_vertex> landmarks;                  // as read
   std::vector<SM_vertex> ordered;                    // in cone order
   UV_map uv;
+  Chart_map charts;                                  // (charts around cone images: see Chart_point)
   HOT::Embedding_statistics stats;
   Input in;                                          // the file's addressing (--repair)
 };
@@ -357,8 +365,10 @@ void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const st
   e.ordered.clear();
   for(std::size_t i : order) e.ordered.push_back(e.landmarks[i]);
   e.uv = e.mesh.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  e.charts = e.mesh.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
-    e.mesh, e.ordered, e.uv, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats)));
+    e.mesh, e.ordered, e.uv,
+    HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats))));
   if(ec != HOT::OK)
     throw Failure{ec, name + ": " + e.stats.message};
 }
@@ -407,8 +417,8 @@ int run_map(int argc, char** argv)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
                                               "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
-  const Locator locB(B.mesh, B.uv, B.type, k, HOT::Hyperboloid_linear);
-  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, locB);
+  const Locator locB(B.mesh, B.uv, B.charts, B.stats.charts, B.type, k, HOT::Hyperboloid_linear);
+  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
@@ -418,8 +428,8 @@ int run_map(int argc, char** argv)
     files.write(opt.get("prepared-target"), [&](std::ostream& os) { hot_tools::write_addressed_off(os, B.mesh, B.in.file); });
   if(opt.has("colors-out")) {
     // a smooth colouring of A, carried to B by f_BA
-    const Locator locA(A.mesh, A.uv, A.type, k, HOT::Hyperboloid_linear);
-    const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, locA);
+    const Locator locA(A.mesh, A.uv, A.charts, A.stats.charts, A.type, k, HOT::Hyperboloid_linear);
+    const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, B.charts, B.stats.charts, locA);
     files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g, addressing(B.in)); });
   }
   files.commit();
@@ -583,8 +593,12 @@ void write_collection_files(const std::string& dir, const Manifest& entries, Col
   if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
     throw std::runtime_error("cannot create the folder '" + dir + "'");
   Output_files files;
-  for(std::size_t i = 0; i < N; ++i)
-    files.write(dir + "/" + stem(i) + ".obj", [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i), addressed(i)); });
+  for(std::size_t i = 0; i < N; ++i) {
+    const hot_tools::Embedding_charts<Collection::Chart_map> ch{coll.chart_map(i), coll.statistics(i).charts,
+                                                                coll.statistics(i).chart_corners};
+    files.write(dir + "/" + stem(i) + ".obj",
+                [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i), addressed(i), &ch); });
+  }
   if(all_pairs)
     for(std::size_t a = 0; a < N; ++a)
       for(std::size_t b = 0; b < N; ++b) {

@@ -11,10 +11,13 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+
 #include <cstddef>
 #include "prepared_input.h"
 
 #include <ostream>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -48,24 +51,61 @@ void write_addressed_vertices(std::ostream& os, const CGAL::Surface_mesh<Point_3
       os << prefix << m.point(v) << "\n";
 }
 
+// The charts of an embedding written partly in charts around cone images (HOT::Chart_point):
+// the chart points of the corners and the charts' isometries.
+template <class HalfedgeChartMap>
+struct Embedding_charts
+{
+  HalfedgeChartMap map;
+  std::vector<CGAL::Hyperbolic_orbifold_Tutte::Hyperbolic_isometry_2<double> > charts;
+  std::vector<int> corners; // the tile corner at each chart's origin
+};
+
 // Writes an embedding as OBJ: v = input vertices, vt = one Poincare point per cut-mesh
 // vertex (corners of a vertex with equal points share their vt), f = input faces in input
 // order with their corners' vt. `uv` maps each halfedge to the point of its target corner.
 // With `in` (a prepared mesh, see prepared_input.h), the vertices are addressed as the file's:
 // v lines = the file's vertices in file order, then the vertices the repair added; f lines =
 // the prepared mesh's faces.
-template <class Point_3, class HalfedgeUVMap>
+// With `charts` (not empty), the chart table and the chart point of every vt written in a
+// chart follow the vt lines, as comments (any OBJ reader skips them):
+//   # hot chart I AR AI BR BI C   chart I maps a tile point z to (a z + b) / (conj(b) z + conj(a)),
+//                                 a = AR + i AI, b = BR + i BI; its origin is tile corner C
+//   # hot vtc K I X Y             vt K (1-based) is the point (X, Y) of chart I; its vt line
+//                                 holds its tile point rounded to double
+// A face is written in the chart of any of its vt that has one (at most one chart per face);
+// its other corners are the chart applied to their tile points (HOT::chart_coordinates()).
+template <class Point_3, class HalfedgeUVMap, class HalfedgeChartMap = std::nullptr_t>
 void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const HalfedgeUVMap& uv,
-                         const Input_mesh* in = nullptr)
+                         const Input_mesh* in = nullptr, const Embedding_charts<HalfedgeChartMap>* charts = nullptr)
 {
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
-  std::vector<std::vector<std::pair<Point_2, std::size_t> > > vts(num_vertices(m));
-  std::vector<Point_2> vt_points;
+  // a corner's key: its tile point, and its chart point (chart -1: none)
+  struct Key
+  {
+    Point_2 p;
+    int chart;
+    Point_2 q;
+    bool operator==(const Key& o) const { return p == o.p && chart == o.chart && (chart < 0 || q == o.q); }
+  };
+  const bool with_charts = charts != nullptr && !charts->charts.empty();
+  auto key = [&](typename Mesh::Halfedge_index h) {
+    Key k{get(uv, h), -1, Point_2(0, 0)};
+    if constexpr(!std::is_same<HalfedgeChartMap, std::nullptr_t>::value)
+      if(with_charts) {
+        const auto cp = get(charts->map, h);
+        k.chart = cp.chart;
+        k.q = Point_2(cp.point.x(), cp.point.y());
+      }
+    return k;
+  };
+  std::vector<std::vector<std::pair<Key, std::size_t> > > vts(num_vertices(m));
+  std::vector<Key> vt_points;
   std::vector<std::size_t> corner_vt(num_halfedges(m), 0);
   for(typename Mesh::Face_index f : faces(m))
     for(typename Mesh::Halfedge_index h : halfedges_around_face(halfedge(f, m), m)) {
-      const Point_2 p = get(uv, h);
+      const Key p = key(h);
       auto& list = vts[target(h, m).idx()];
       std::size_t id = std::size_t(-1);
       for(const auto& e : list)
@@ -81,7 +121,18 @@ void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
   os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
   write_addressed_vertices(os, m, in, "v ");
   for(const auto& p : vt_points)
-    os << "vt " << p.x() << " " << p.y() << "\n";
+    os << "vt " << p.p.x() << " " << p.p.y() << "\n";
+  if(with_charts) {
+    os << "# charts around cone images: faces written in a chart use its coordinates (see the manual)\n";
+    for(std::size_t i = 0; i < charts->charts.size(); ++i) {
+      const auto& c = charts->charts[i];
+      os << "# hot chart " << i << " " << c.a().real() << " " << c.a().imag() << " " << c.b().real() << " " << c.b().imag() << " "
+         << (i < charts->corners.size() ? charts->corners[i] : -1) << "\n";
+    }
+    for(std::size_t k = 0; k < vt_points.size(); ++k)
+      if(vt_points[k].chart >= 0)
+        os << "# hot vtc " << k + 1 << " " << vt_points[k].chart << " " << vt_points[k].q.x() << " " << vt_points[k].q.y() << "\n";
+  }
   for(typename Mesh::Face_index f : faces(m)) {
     os << "f";
     // read_mesh() builds face f with source(halfedge(f)) = the file's first vertex of the face

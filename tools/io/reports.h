@@ -126,6 +126,12 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
      << "  \"recentred\": " << (st.recentred ? "true" : "false") << ",\n  \"frame\": {\"a\": ["
      << st.frame.a().real() << ", " << st.frame.a().imag() << "], \"b\": [" << st.frame.b().real() << ", " << st.frame.b().imag()
      << "]},\n"
+     << "  \"charted_faces\": " << st.charted_faces << ",\n  \"charts\": [";
+  for(std::size_t i = 0; i < st.charts.size(); ++i)
+    os << (i ? ", " : "") << "{\"a\": [" << st.charts[i].a().real() << ", " << st.charts[i].a().imag() << "], \"b\": ["
+       << st.charts[i].b().real() << ", " << st.charts[i].b().imag() << "], \"tile_corner\": "
+       << (i < st.chart_corners.size() ? st.chart_corners[i] : -1) << "}";
+  os << "],\n"
      << "  \"certificate\": {\"bijective\": " << (c.is_bijective() ? "true" : "false")
      << ", \"faces\": " << c.number_of_faces << ", \"points_outside_disk\": " << c.points_outside_disk
      << ", \"flipped_faces\": " << c.flipped_faces << ", \"degenerate_faces\": " << c.degenerate_faces

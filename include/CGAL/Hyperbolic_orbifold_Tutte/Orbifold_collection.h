@@ -80,6 +80,8 @@ public:
   typedef typename Kernel::Point_2 Point_2;
   /// the per-corner Poincar&eacute; map of each mesh (a dynamic halfedge property map of the mesh)
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<Point_2> >::type UV_map;
+  /// the per-corner chart points of each mesh (a dynamic halfedge property map; see `Chart_point`)
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<Chart_point<Point_2> > >::type Chart_map;
   /// the locator of each embedding
   typedef Embedding_locator<TriangleMesh, UV_map> Locator;
   /// a location on a mesh
@@ -130,6 +132,9 @@ public:
   const std::vector<vertex_descriptor>& landmarks(std::size_t i) const { return items_[i].landmarks; }
   /// the embedding of mesh `i` (valid after `embed()` returned `OK`)
   const UV_map& uv_map(std::size_t i) const { return items_[i].uv; }
+  /// the chart points of the embedding of mesh `i` (\ref HOT_Charts; `chart` -1 everywhere unless
+  /// `statistics(i).charted_faces` is not 0, the charts being `statistics(i).charts`)
+  const Chart_map& chart_map(std::size_t i) const { return items_[i].charts; }
   /// the statistics and certificate of the embedding of mesh `i`, with its timings
   const Embedding_statistics& statistics(std::size_t i) const { return items_[i].stats; }
   /// the cone order used: landmark `order()[c]` of every mesh is at cone `c`
@@ -178,7 +183,7 @@ public:
     if(it == maps_.end()) {
       const Locator& lb = locator(b);
       const Clock::time_point t0 = Clock::now();
-      it = maps_.emplace(ab, map_vertices(*items_[a].mesh, items_[a].uv, lb)).first;
+      it = maps_.emplace(ab, map_vertices(*items_[a].mesh, items_[a].uv, items_[a].charts, items_[a].stats.charts, lb)).first;
       map_seconds_[ab] = seconds_since(t0);
       Reporter report(progress_, 1);
       report(Progress::Pair_mapped, a, b, map_seconds_[ab], OK);
@@ -210,8 +215,8 @@ public:
     Reporter report(progress_, pairs.size());
     auto run = [&](std::size_t p) {
       const Clock::time_point t0 = Clock::now();
-      results[p] = map_vertices(*items_[pairs[p].first].mesh, items_[pairs[p].first].uv,
-                                *locators_.find(pairs[p].second)->second);
+      const Item& a = items_[pairs[p].first];
+      results[p] = map_vertices(*a.mesh, a.uv, a.charts, a.stats.charts, *locators_.find(pairs[p].second)->second);
       seconds[p] = seconds_since(t0);
       report(Progress::Pair_mapped, pairs[p].first, pairs[p].second, seconds[p], OK);
     };
@@ -266,7 +271,8 @@ private:
   {
     std::unique_ptr<TriangleMesh> mesh;
     std::vector<vertex_descriptor> landmarks;
-    UV_map uv; // destroyed before the mesh that holds it
+    UV_map uv;         // destroyed before the mesh that holds it
+    Chart_map charts;  // (likewise)
     Embedding_statistics stats;
   };
 
@@ -310,7 +316,8 @@ private:
 
   std::unique_ptr<Locator> new_locator(std::size_t i) const
   {
-    return std::unique_ptr<Locator>(new Locator(*items_[i].mesh, items_[i].uv, type_, static_cast<int>(order_.size())));
+    const Item& it = items_[i];
+    return std::unique_ptr<Locator>(new Locator(*it.mesh, it.uv, it.charts, it.stats.charts, type_, static_cast<int>(order_.size())));
   }
 
   // the locators of the pairs' targets that are not built yet, in parallel
@@ -371,11 +378,15 @@ private:
       std::vector<vertex_descriptor> ordered;
       for(std::size_t c : order_) ordered.push_back(it.landmarks[c]);
       it.uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), *it.mesh);
-      for(halfedge_descriptor h : halfedges(*it.mesh)) // every key present: reads never insert
+      it.charts = get(CGAL::dynamic_halfedge_property_t<Chart_point<Point_2> >(), *it.mesh);
+      for(halfedge_descriptor h : halfedges(*it.mesh)) { // every key present: reads never insert
         put(it.uv, h, Point_2(0, 0));
+        put(it.charts, h, Chart_point<Point_2>());
+      }
       const Clock::time_point t0 = Clock::now();
-      codes[i] = hyperbolic_orbifold_Tutte_embedding(*it.mesh, ordered, it.uv,
-                                                     parameters::orbifold_type(type_, parameters::embedding_statistics(&it.stats)));
+      codes[i] = hyperbolic_orbifold_Tutte_embedding(
+        *it.mesh, ordered, it.uv,
+        parameters::chart_map(it.charts, parameters::orbifold_type(type_, parameters::embedding_statistics(&it.stats))));
       report(Progress::Mesh_embedded, i, i, seconds_since(t0), codes[i]);
     };
     for_each_index(N, run);
