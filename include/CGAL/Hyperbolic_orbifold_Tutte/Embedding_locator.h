@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -172,33 +173,54 @@ public:
   Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, HalfedgeChartMap chart_map,
                     const std::vector<Isometry>& charts, Orbifold_type type, int k,
                     Interpolation_model model = Hyperboloid_linear)
-    : Embedding_locator(tm, uv, type, k, model)
   {
-    if(!lt_.valid || charts.empty())
+    lt_.model = model;
+    Tile tile;
+    if(make_orbifold_tile(type, k, tile) != OK) {
+      lt_.fail("the orbifold with " + std::to_string(k) + " cones is not hyperbolic");
       return;
+    }
+    if(charts.empty()) {
+      build(tm, uv, tile);
+      return;
+    }
+    // the faces in charts (faces(tm) order), with their corners in their charts
     ch_.charts = charts;
-    ch_.face_chart.assign(faces_.size(), -1);
-    ch_.z.resize(faces_.size());
-    for(std::size_t i = 0; i < faces_.size(); ++i) {
-      const halfedge_descriptor h0 = halfedge(faces_[i], tm);
+    for(const Isometry& m : charts) { // the tile corner at each chart's origin: the nearest one
+      const C o = m.inverse().apply(C(0, 0));
+      int best = 0;
+      for(int i = 1; i < tile.number_of_corners(); ++i)
+        if(internal::hyperbolic_proximity(o, lt_.to_c(tile.corner(i))) < internal::hyperbolic_proximity(o, lt_.to_c(tile.corner(best))))
+          best = i;
+      ch_.chart_corner.push_back(best);
+    }
+    for(face_descriptor f : faces(tm)) {
+      const halfedge_descriptor h0 = halfedge(f, tm);
       const halfedge_descriptor hs[3] = {h0, next(h0, tm), next(next(h0, tm), tm)};
+      int c = -1;
       for(int j = 0; j < 3; ++j) {
         const auto cp = get(chart_map, hs[j]);
         if(cp.chart < -1 || cp.chart >= static_cast<int>(charts.size())) {
           lt_.fail("a corner's chart is not one of the charts");
           return;
         }
-        if(cp.chart >= 0)
-          ch_.face_chart[i] = cp.chart;
+        c = cp.chart >= 0 ? cp.chart : c;
       }
-      const int c = ch_.face_chart[i];
+      std::array<C, 3> z;
       if(c >= 0)
         for(int j = 0; j < 3; ++j) {
           const auto p = chart_coordinates(charts, c, get(chart_map, hs[j]), get(uv, hs[j]));
-          ch_.z[i][j] = C(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+          z[j] = C(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
         }
+      ch_.face_chart.push_back(c);
+      ch_.z.push_back(z);
     }
-    ch_.build(lt_.tile);
+    ch_.build(tile);
+    // (the faces in charts stay in the tile's walk: their rounded corners there are far from
+    // the points located in the tile, which the charts answer near their origins)
+    build(tm, uv, tile);
+    if(!lt_.valid)
+      return;
     // inverted faces: those of the tile's coordinates, and those of the charts in theirs
     lt_.n_inverted = 0;
     for(std::size_t i = 0; i < faces_.size(); ++i) {
@@ -357,15 +379,28 @@ private:
   bool locate_in_chart(int c, const C& w, Location& loc) const
   {
     auto orient = [&](const C& a, const C& b, const C& p) { return lt_.orient(a, b, p); };
-    int f = ch_.find(c, w, orient), d = c;
+    int nearest = -1, nearest_chart = -1;
+    double nearest_min = -std::numeric_limits<double>::infinity();
+    Isometry nearest_rot;
+    int f = -1, d = c;
     Isometry rot;
-    for(std::size_t i = 0; f < 0 && i < ch_.across[c].size(); ++i) {
-      d = ch_.across[c][i].first;
-      rot = ch_.across[c][i].second;
-      f = ch_.find(d, rot.apply(w), orient);
+    for(std::size_t i = 0; f < 0 && i <= ch_.across[c].size(); ++i) {
+      d = i == 0 ? c : ch_.across[c][i - 1].first;
+      rot = i == 0 ? Isometry() : ch_.across[c][i - 1].second;
+      const double before = nearest_min;
+      f = ch_.find(d, rot.apply(w), orient, &nearest, &nearest_min);
+      if(nearest_min > before) {
+        nearest_chart = d;
+        nearest_rot = rot;
+      }
     }
-    if(f < 0)
-      return false;
+    if(f < 0) { // just outside every face (rounding): the nearest one, if within rounding
+      if(nearest < 0 || !(nearest_min > -1e-9))
+        return false;
+      f = nearest;
+      d = nearest_chart;
+      rot = nearest_rot;
+    }
     loc = Location();
     loc.face_index = static_cast<std::size_t>(f);
     loc.barycentric = ch_.barycentric(f, rot.apply(w), lt_.model, loc.min_raw_barycentric);

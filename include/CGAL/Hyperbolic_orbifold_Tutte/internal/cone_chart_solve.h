@@ -350,13 +350,9 @@ std::size_t solve_chart_problem(Cone_charts& ch, std::vector<double>& xq, const 
         r = (std::min)(r, std::abs(ch.q_position[q]));
     return r;
   };
-  for(int sweep = 0; sweep < 3 && left.count > 0 && rounds < max_chart_rounds * 8; ++sweep) {
-    double hi = 0;
-    for(std::size_t f = 0; f < Q.faces.size(); ++f)
-      if(left.flag[f])
-        for(int q : Q.faces[f])
-          hi = (std::max)(hi, std::abs(ch.q_position[q]));
-    for(double top = 10 * hi; rounds < max_chart_rounds * 8; top *= 1e-4) {
+  // bands from `top` down to the deepest vertex
+  auto sweep_from = [&](double top) {
+    for(; rounds < max_chart_rounds * 8; top *= 1e-4) {
       bool any = false;
       for(int q = 0; q < Q.n; ++q) {
         const double r = std::abs(ch.q_position[q]);
@@ -370,6 +366,24 @@ std::size_t solve_chart_problem(Cone_charts& ch, std::vector<double>& xq, const 
       if(!(lowest() < 1e-7 * top))
         break; // the band reached the deepest vertex
     }
+  };
+  // the whole region's solve is accurate over 6 orders of magnitude or so below its
+  // farthest vertex (positive faces deeper down are not yet harmonic): the rest in bands
+  double farthest = 0;
+  for(int q = 0; q < Q.n; ++q)
+    if(ch.q_region[q] && Q.kind[q] != Fixed)
+      farthest = (std::max)(farthest, std::abs(ch.q_position[q]));
+  if(lowest() < 1e-6 * farthest) {
+    sweep_from(1e-3 * farthest);
+    check();
+  }
+  for(int sweep = 0; sweep < 3 && left.count > 0 && rounds < max_chart_rounds * 8; ++sweep) {
+    double hi = 0;
+    for(std::size_t f = 0; f < Q.faces.size(); ++f)
+      if(left.flag[f])
+        for(int q : Q.faces[f])
+          hi = (std::max)(hi, std::abs(ch.q_position[q]));
+    sweep_from(10 * hi);
     check();
   }
   if(options.verbose)

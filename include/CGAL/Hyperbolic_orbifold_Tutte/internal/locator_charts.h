@@ -34,6 +34,7 @@ struct Chart_faces
   typedef Hyperbolic_isometry_2<double> Isometry;
 
   std::vector<Isometry> charts;
+  std::vector<int> chart_corner;               // per chart: the tile corner at its origin
   std::vector<int> face_chart;                 // per face: its chart, or -1
   std::vector<std::array<C, 3> > z;            // per face: its corners in its chart
   std::vector<double> reach;                   // per chart: the farthest corner (hyperbolic distance to the origin)
@@ -84,31 +85,57 @@ struct Chart_faces
       for(int b = std::ilogb(low); b <= std::ilogb(rmax[f]); ++b)
         buckets[c][b].push_back(static_cast<int>(f));
     }
-    // across the sides at each chart's corner: the side pairings, as maps between charts
+    // around each chart's cone: its rotations about the origin (2 pi j / p for a cone of
+    // order p: the embedding's faces around the cone need not fill the tile's corner, only
+    // the cone's angle with the other corners of the cone), and the side pairings into the
+    // charts of its other corners, after them
     across.assign(nch, std::vector<std::pair<int, Isometry> >());
-    for(int c = 0; c < nch; ++c)
+    for(int c = 0; c < nch; ++c) {
+      const int corner = chart_corner.empty() ? -1 : chart_corner[c];
+      const int p = corner < 0 ? 1 : tile.signature().order(tile.corner_cone(corner));
+      std::vector<Isometry> turns;
+      for(int j = 0; j < p; ++j)
+        turns.push_back(Isometry(std::polar(1.0, CGAL_PI * j / p), C(0, 0)));
+      for(int j = 1; j < p; ++j)
+        across[c].emplace_back(c, turns[j]);
       for(int s = 0; s < tile.number_of_sides(); ++s)
         for(const Isometry& g : {tile.side_pairing(s), tile.side_pairing(s).inverse()})
           for(int d = 0; d < nch; ++d) {
+            if(d == c)
+              continue;
             Isometry m = charts[d] * g * charts[c].inverse();
             if(!(std::abs(m.apply(C(0, 0))) < 1e-8))
               continue; // g does not take c's corner to d's
             m = Isometry(m.a() / std::abs(m.a()), C(0, 0)); // exact rotation (as the solver's seam twins)
-            across[c].emplace_back(d, m);
+            for(const Isometry& t : turns)
+              across[c].emplace_back(d, m * t);
           }
+    }
   }
 
   // the face of chart c containing w (exact test in the chart's coordinates), or -1; `orient`
-  // is the exact orientation of three points (positive: 1)
+  // is the exact orientation of three points (positive: 1). `nearest`: the candidate whose
+  // smallest barycentric coordinate of w is the largest, and that coordinate (for a point
+  // just outside every face, by rounding)
   template <class Orient>
-  int find(int c, const C& w, const Orient& orient) const
+  int find(int c, const C& w, const Orient& orient, int* nearest = nullptr, double* nearest_min = nullptr) const
   {
     // (a geodesic triangle's points are no farther from the origin than its farthest corner:
     // the faces nearer the origin than w are not tested)
     const double r = std::abs(w) * (1 - 1e-12);
     auto inside = [&](int f) {
       const auto& t = z[f];
-      return !(r > rmax[f]) && orient(t[0], t[1], w) >= 0 && orient(t[1], t[2], w) >= 0 && orient(t[2], t[0], w) >= 0;
+      if(r > rmax[f])
+        return false;
+      if(nearest) {
+        const std::array<double, 3> l = klein_barycentric(t[0], t[1], t[2], w);
+        const double m = (std::min)(l[0], (std::min)(l[1], l[2]));
+        if(m == m && m > *nearest_min) {
+          *nearest_min = m;
+          *nearest = f;
+        }
+      }
+      return orient(t[0], t[1], w) >= 0 && orient(t[1], t[2], w) >= 0 && orient(t[2], t[0], w) >= 0;
     };
     if(!(w == C(0, 0))) {
       const auto it = buckets[c].find(std::ilogb(std::abs(w)));
@@ -141,6 +168,14 @@ struct Chart_faces
       }
       for(int j = 0; j < 3; ++j)
         l[j] /= t;
+    }
+    if(!(l[0] == l[0] && l[1] == l[1] && l[2] == l[2])) { // (a needle too thin for double: its nearest corner)
+      int best = 0;
+      for(int j = 1; j < 3; ++j)
+        if(std::abs(z[f][j] - w) < std::abs(z[f][best] - w))
+          best = j;
+      l = {{0.0, 0.0, 0.0}};
+      l[best] = 1.0;
     }
     min_raw = (std::min)(l[0], (std::min)(l[1], l[2]));
     double s = 0;
