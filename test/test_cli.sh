@@ -155,6 +155,74 @@ case "$case_name" in
     expect_error "$tmp/x.map" map --source "$data/meshes/hand.off" --source-cones "$tmp/hand.cones" \
       --target "$data/meshes/hand.off" --target-cones "$tmp/six" --out "$tmp/x.map"
     echo ok ;;
+  map_report)
+    # honest maps: a capsule (tube of radius 1, length 20, hemispherical caps, five landmarks on
+    # the bottom cap) onto a copy bent by bend.awk (same triangulation and vertex order: vertex
+    # i corresponds to vertex i). Without a landmark at the far tip the map sends most of the
+    # tube far off; the report lists the unreliable source vertices and stderr warns once.
+    here="$(dirname "${BASH_SOURCE[0]}")"
+    awk -v L=20 -v S=24 -f "$here/capsule.awk" > "$tmp/c.off" 2> "$tmp/c.cones"
+    awk -v R=20 -f "$here/bend.awk" "$tmp/c.off" > "$tmp/b.off"
+    nv=$(sed -n 2p "$tmp/c.off" | awk '{print $1}')
+    [ "$(sed -n 2p "$tmp/b.off" | awk '{print $1}')" -eq "$nv" ] || fail "bend.awk changed the number of vertices"
+    cmp -s <(awk -v n="$nv" 'NR > 2 + n' "$tmp/c.off") <(awk -v n="$nv" 'NR > 2 + n' "$tmp/b.off") || fail "bend.awk changed the faces"
+    "$prog" map --source "$tmp/c.off" --source-cones "$tmp/c.cones" --target "$tmp/b.off" --target-cones "$tmp/c.cones" \
+      --out "$tmp/m.txt" --report "$tmp/r.json" >"$tmp/stdout" 2>"$tmp/stderr" || fail "map failed: $(cat "$tmp/stderr")"
+    if command -v python3 >/dev/null; then
+      python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$tmp/r.json" || fail "the report is not JSON"
+    fi
+    # the list, one index per line
+    list() { sed -n 's/.*"unreliable_vertices": \[\([^]]*\)\].*/\1/p' "$1" | tr -d ' ' | tr ',' '\n' | sed '/^$/d'; }
+    count=$(sed -n 's/.*"unreliable_vertex_count": \([0-9]*\).*/\1/p' "$tmp/r.json")
+    list "$tmp/r.json" > "$tmp/flagged"
+    [ -n "$count" ] && [ "$count" -gt 0 ] || fail "no unreliable vertices reported"
+    [ "$(wc -l < "$tmp/flagged")" -eq "$count" ] || fail "unreliable_vertex_count $count, $(wc -l < "$tmp/flagged") listed"
+    [ "$count" -lt "$nv" ] || fail "the whole mesh is flagged"
+    grep -q "\"source_vertices\": $nv," "$tmp/r.json" || fail "report: source_vertices"
+    grep -q '"source": ".*c.off"' "$tmp/r.json" && grep -q '"target": ".*b.off"' "$tmp/r.json" || fail "report: source, target"
+    # one warning line on stderr, with the count and the hint
+    [ "$(wc -l < "$tmp/stderr")" -eq 1 ] || fail "stderr is not one line: $(cat "$tmp/stderr")"
+    grep -q "^warning: .* $count of the $nv source vertices" "$tmp/stderr" || fail "the warning does not give the count: $(cat "$tmp/stderr")"
+    grep -q "put a landmark at the tip" "$tmp/stderr" || fail "the warning has no hint: $(cat "$tmp/stderr")"
+    # ground truth: every vertex whose image is more than 5% of the diagonal off is listed, no
+    # vertex of the landmark cap (z <= 0) is
+    awk -v n="$nv" 'FILENAME == ARGV[1] { if(FNR > 2 && FNR <= 2 + n) z[FNR - 3] = $3; next }
+      FILENAME == ARGV[2] { if(FNR > 2 && FNR <= 2 + n) { k = FNR - 3; P[k, 0] = $1; P[k, 1] = $2; P[k, 2] = $3
+                              for(d = 0; d < 3; d++) { if(k == 0 || $(d + 1) < lo[d]) lo[d] = $(d + 1); if(k == 0 || $(d + 1) > hi[d]) hi[d] = $(d + 1) } }
+                            else if(FNR > 2 + n) { f = FNR - 3 - n; F[f, 0] = $2; F[f, 1] = $3; F[f, 2] = $4 } next }
+      FILENAME == ARGV[3] { flagged[$1] = 1; next }
+      { i = FNR - 1; e2 = 0
+        for(d = 0; d < 3; d++) { x = $2 * P[F[$1, 0], d] + $3 * P[F[$1, 1], d] + $4 * P[F[$1, 2], d]; e2 += (x - P[i, d])^2 }
+        diag = sqrt((hi[0] - lo[0])^2 + (hi[1] - lo[1])^2 + (hi[2] - lo[2])^2)
+        if(sqrt(e2) > 0.05 * diag) { off++; if(!(i in flagged)) missed++ }
+        if(z[i] <= 0 && (i in flagged)) cap++ }
+      END { printf "%d off by more than 5%%, %d of them not listed, %d listed on the landmark cap\n", off, missed, cap
+            exit !(off > 0 && missed == 0 && cap == 0) }' "$tmp/c.off" "$tmp/b.off" "$tmp/flagged" "$tmp/m.txt" \
+      || fail "the list does not hold every vertex off by more than 5%, or holds vertices of the landmark cap"
+    # with a landmark at the tip (the last vertex) the map is good: nothing listed, no warning
+    (tr '\n' ' ' < "$tmp/c.cones"; echo "$((nv - 1))") > "$tmp/t.cones"
+    "$prog" map --source "$tmp/c.off" --source-cones "$tmp/t.cones" --target "$tmp/b.off" --target-cones "$tmp/t.cones" \
+      --out "$tmp/mt.txt" --report "$tmp/rt.json" >"$tmp/stdout" 2>"$tmp/stderr" || fail "map with a tip landmark failed"
+    [ ! -s "$tmp/stderr" ] || fail "a warning with a tip landmark: $(cat "$tmp/stderr")"
+    grep -q '"unreliable_vertex_count": 0,' "$tmp/rt.json" && grep -q '"unreliable_vertices": \[\]' "$tmp/rt.json" || fail "report with a tip landmark"
+    # --repair: the indices are those of the input file (a vertex on no face put first shifts
+    # every index by one; the repair drops it, MAP.txt gives it '-1 0 0 0')
+    shift_off() { awk -v n="$nv" 'NR == 1 { print; next } NR == 2 { print $1 + 1, $2, $3; print "7 7 7"; next }
+                   NR <= 2 + n { print; next } { print $1, $2 + 1, $3 + 1, $4 + 1 }' "$1"; }
+    shift_off "$tmp/c.off" > "$tmp/c1.off"; shift_off "$tmp/b.off" > "$tmp/b1.off"
+    tr ' ' '\n' < "$tmp/c.cones" | sed '/^$/d' | awk '{ printf "%d ", $1 + 1 } END { print "" }' > "$tmp/c1.cones"
+    "$prog" map --repair --source "$tmp/c1.off" --source-cones "$tmp/c1.cones" --target "$tmp/b1.off" --target-cones "$tmp/c1.cones" \
+      --out "$tmp/m1.txt" --report "$tmp/r1.json" >"$tmp/stdout" 2>"$tmp/stderr" || fail "map --repair failed: $(cat "$tmp/stderr")"
+    [ "$(head -1 "$tmp/m1.txt")" = "-1 0 0 0" ] || fail "--repair: the vertex on no face is mapped"
+    list "$tmp/r1.json" > "$tmp/flagged1"
+    cmp -s "$tmp/flagged1" <(awk '{ print $1 + 1 }' "$tmp/flagged") || fail "--repair: the indices are not the input file's"
+    grep -q '"source_repair": ' "$tmp/r1.json" || fail "--repair: no repair in the report"
+    grep -q "^warning: .* $count of the $nv source vertices" "$tmp/stderr" || fail "--repair: warning $(cat "$tmp/stderr")"
+    # no folder for the report: exit 1, one line, neither MAP.txt nor the report left behind
+    expect_error "$tmp/nodir/r.json" map --source "$tmp/c.off" --source-cones "$tmp/c.cones" --target "$tmp/b.off" \
+      --target-cones "$tmp/c.cones" --out "$tmp/m2.txt" --report "$tmp/nodir/r.json"
+    [ ! -e "$tmp/m2.txt" ] || fail "MAP.txt left behind when the report cannot be written"
+    echo "ok ($count of $nv source vertices listed)" ;;
   collection)
     # hand.off and two smooth deformations of it (same triangulation, same landmarks)
     src="$data/meshes/hand.off"

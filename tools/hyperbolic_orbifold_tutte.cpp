@@ -18,6 +18,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
@@ -32,8 +33,10 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -64,11 +67,16 @@ const char* const usage_text =
   "      --recentre: a part too squeezed for double in the tile (a long protrusion without\n"
   "      landmarks) may be solved in a moved frame; the report then gives the frame.\n"
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
-  "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off] [REPAIR]\n"
+  "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off]\n"
+  "      [--report REPORT.json] [REPAIR]\n"
   "      maps every vertex of A onto B through the common orbifold (landmark i of CA to\n"
   "      landmark i of CB); MAP.txt: one line 'face b0 b1 b2' per vertex of A (with --repair:\n"
   "      per vertex of A's file, then per vertex the repair added; '-1 0 0 0' for a vertex on\n"
-  "      no face; faces are those of the repaired B, written by --prepared-target)\n"
+  "      no face; faces are those of the repaired B, written by --prepared-target).\n"
+  "      Vertices of A the map cannot resolve (in a protrusion without a landmark, squeezed by\n"
+  "      both embeddings below their disagreement) get a one-line warning on stderr;\n"
+  "      REPORT.json lists them (\"unreliable_vertices\", numbered as MAP.txt's lines), with\n"
+  "      the squeezed regions, the sizes and the times\n"
   "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [REPAIR]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
   "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt)\n"
@@ -400,9 +408,39 @@ std::vector<std::size_t> map_cone_order(const Embedded& A)
   return order;
 }
 
+// what `map` reports: sizes, times and the unreliable vertices, numbered as in the files
+hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A, const Embedded& B, int k, const HOT::Map_reliability& r)
+{
+  hot_tools::Map_summary m;
+  m.source_path = opt.get("source");
+  m.target_path = opt.get("target");
+  m.source_vertices = num_vertices(A.mesh);
+  m.target_vertices = num_vertices(B.mesh);
+  m.type = A.type;
+  m.landmarks = static_cast<std::size_t>(k);
+  auto seconds = [](const HOT::Embedding_statistics& st) {
+    return st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate;
+  };
+  m.seconds_source = seconds(A.stats);
+  m.seconds_target = seconds(B.stats);
+  m.source_input = addressing(A.in);
+  m.target_input = addressing(B.in);
+  const std::vector<SM_vertex> va(vertices(A.mesh).begin(), vertices(A.mesh).end());
+  const std::vector<SM_vertex> vb(vertices(B.mesh).begin(), vertices(B.mesh).end());
+  for(std::size_t i : r.unreliable_vertices)
+    m.unreliable.push_back(hot_tools::output_vertex(va[i], m.source_input));
+  std::sort(m.unreliable.begin(), m.unreliable.end());
+  m.regions = r.regions;
+  for(const HOT::Squeezed_region& g : r.regions)
+    m.region_vertices.emplace_back(hot_tools::output_vertex(va[g.source_vertex], m.source_input),
+                                   hot_tools::output_vertex(vb[g.target_vertex], m.target_input));
+  return m;
+}
+
 int run_map(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "max-hole"},
+  const Options opt(argc, argv, 2,
+                    {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole"},
                     repair_flags());
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
@@ -417,13 +455,21 @@ int run_map(int argc, char** argv)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
                                               "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
+  const auto t0 = std::chrono::steady_clock::now();
   const Locator locB(B.mesh, B.uv, B.charts, B.stats.charts, B.type, k, HOT::Hyperboloid_linear);
   const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
+  const auto t1 = std::chrono::steady_clock::now();
+  const HOT::Map_reliability reliability = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
+  hot_tools::Map_summary summary = map_summary(opt, A, B, k, reliability);
+  summary.seconds_map = std::chrono::duration<double>(t1 - t0).count();
+  summary.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   Output_files files;
   files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, addressing(A.in)); });
+  if(opt.has("report"))
+    files.write(opt.get("report"), [&](std::ostream& os) { hot_tools::write_map_report(os, summary); });
   if(opt.has("prepared-target"))
     files.write(opt.get("prepared-target"), [&](std::ostream& os) { hot_tools::write_addressed_off(os, B.mesh, B.in.file); });
   if(opt.has("colors-out")) {
@@ -435,6 +481,11 @@ int run_map(int argc, char** argv)
   files.commit();
   std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << opt.get("source") << " onto "
             << opt.get("target") << "; wrote " << out << std::endl;
+  if(!summary.unreliable.empty())
+    std::cerr << "warning: the map cannot resolve the images of " << summary.unreliable.size() << " of the "
+              << num_vertices(A.mesh) << " source vertices (a protrusion without a landmark, squeezed by both embeddings "
+              << "below their disagreement" << (opt.has("report") ? ", listed in " + opt.get("report") : std::string(", --report lists them"))
+              << "): put a landmark at the tip of such a protrusion" << std::endl;
   return EXIT_SUCCESS;
 }
 

@@ -5,11 +5,12 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_REPORTS_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_REPORTS_H
 
-// The JSON reports of the `embed` and `collection` commands.
+// The JSON reports of the `embed`, `map` and `collection` commands.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
+#include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 
 #include <cstddef>
 #include "prepared_input.h"
@@ -139,6 +140,60 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
      << ", \"twin_failures\": " << c.twin_failures << ", \"cone_failures\": " << c.cone_failures
      << ", \"border_failures\": " << c.border_failures << ", \"total_area\": " << c.total_area
      << ", \"expected_area\": " << c.expected_area << "}\n}\n";
+}
+
+// what `map` did, as its report gives it: the files, the sizes, the landmarks, the times, and
+// the vertices whose image cannot be trusted (map_reliability()); vertex numbers are those of
+// the files (with --repair: the input file's vertices, then the added ones, as MAP.txt)
+struct Map_summary
+{
+  std::string source_path, target_path;
+  std::size_t source_vertices = 0, target_vertices = 0;
+  HOT::Orbifold_type type = HOT::Sphere_type;
+  std::size_t landmarks = 0;
+  double seconds_source = 0, seconds_target = 0, seconds_map = 0, seconds_reliability = 0;
+  const Input_mesh* source_input = nullptr;  // with --repair: the preparations (reported)
+  const Input_mesh* target_input = nullptr;
+  std::vector<std::size_t> unreliable;       // file numbers of the source's vertices, increasing
+  // per squeezed region of the source: its report, with its collapse vertices as file numbers
+  std::vector<HOT::Squeezed_region> regions;
+  std::vector<std::pair<std::size_t, std::size_t> > region_vertices;
+};
+
+// Writes the report of `map`.
+inline void write_map_report(std::ostream& os, const Map_summary& m)
+{
+  os.precision(17);
+  os << "{\n  \"source\": \"" << json_escape(m.source_path) << "\",\n  \"target\": \"" << json_escape(m.target_path) << "\",\n"
+     << "  \"source_vertices\": " << m.source_vertices << ",\n  \"target_vertices\": " << m.target_vertices << ",\n"
+     << "  \"orbifold\": \"" << (m.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"landmarks\": " << m.landmarks << ",\n";
+  if(m.source_input && m.source_input->repaired) {
+    os << "  \"source_repair\": ";
+    write_repair_json(os, m.source_input->prep, "  ");
+    os << ",\n";
+  }
+  if(m.target_input && m.target_input->repaired) {
+    os << "  \"target_repair\": ";
+    write_repair_json(os, m.target_input->prep, "  ");
+    os << ",\n";
+  }
+  os << "  \"time_seconds\": {\"embedding_source\": " << m.seconds_source << ", \"embedding_target\": " << m.seconds_target
+     << ", \"map\": " << m.seconds_map << ", \"reliability\": " << m.seconds_reliability << "},\n"
+     << "  \"squeezed_regions\": [";
+  for(std::size_t i = 0; i < m.regions.size(); ++i) {
+    const HOT::Squeezed_region& r = m.regions[i];
+    os << (i ? "," : "") << "\n    {\"vertices\": " << r.number_of_vertices << ", \"source_vertex\": " << m.region_vertices[i].first
+       << ", \"at_landmark\": " << (r.at_landmark ? "true" : "false");
+    if(!r.at_landmark)
+      os << ", \"target_vertex\": " << m.region_vertices[i].second << ", \"discrepancy\": " << r.discrepancy
+         << ", \"source_size\": " << r.source_size << ", \"target_size\": " << r.target_size
+         << ", \"unresolved\": " << (r.unresolved ? "true" : "false");
+    os << ", \"unreliable_vertices\": " << r.unreliable_vertices << "}";
+  }
+  os << (m.regions.empty() ? "" : "\n  ") << "],\n  \"unreliable_vertex_count\": " << m.unreliable.size() << ",\n  \"unreliable_vertices\": [";
+  for(std::size_t i = 0; i < m.unreliable.size(); ++i)
+    os << (i ? ", " : "") << m.unreliable[i];
+  os << "]\n}\n";
 }
 
 // the maps the `collection` command computed, and the cycle consistency: f_bc(f_ab(x)) against
