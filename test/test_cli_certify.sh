@@ -111,6 +111,9 @@ case "$case_name" in
     grep -q '"message": "face 20 ' "$tmp/r.json" || fail "the repeated face is face 20"
     awk '/^f / && ++n == 1 { print "f " $2 " " $4 " " $3; next } { print }' "$tmp/b.obj" > "$tmp/rev.obj"
     expect_rejected mesh_faces "$bear" "$tmp/rev.obj" "$tmp/bear.cones"
+    awk '/^f / && ++n == 1 { print "f " $2 " " $2 " " $4; next } { print }' "$tmp/b.obj" > "$tmp/degenerate.obj"
+    expect_rejected mesh_faces "$bear" "$tmp/degenerate.obj" "$tmp/bear.cones"
+    grep -q "repeats a vertex" "$tmp/stderr" || fail "the face with a repeated vertex is not named so"
     # every coordinate squared, and everything shrunk: the cones leave the tile's corners
     awk '/^vt / { printf "vt %.17g %.17g\n", $2 * $2 - $3 * $3, 2 * $2 * $3; next } { print }' "$tmp/b.obj" > "$tmp/sq.obj"
     expect_rejected cones "$bear" "$tmp/sq.obj" "$tmp/bear.cones"
@@ -137,6 +140,10 @@ case "$case_name" in
     r="$tmp/r.json"
     expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/none.obj" --cones "$tmp/bear.cones" --report "$r"
     expect_error 3 "$r" certify --mesh "$tmp/none.off" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --report "$r"
+    : > "$tmp/empty.obj"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/empty.obj" --cones "$tmp/bear.cones" --report "$r"
+    head -c 3000 "$bear" | tr 'a-z0-9' '#@!$%^&*()_+=-[]{}|;:,.<>?~' > "$tmp/junk.obj"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/junk.obj" --cones "$tmp/bear.cones" --report "$r"
     # an OBJ face without point indices, a quad, a point index beyond the vt lines
     awk '/^f / && ++n == 3 { split($2, a, "/"); split($3, b, "/"); split($4, c, "/"); print "f " a[1] " " b[1] " " c[1]; next } { print }' \
       "$tmp/b.obj" > "$tmp/novt.obj"
