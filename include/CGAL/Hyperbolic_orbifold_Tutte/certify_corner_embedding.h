@@ -71,11 +71,12 @@ face positive and the seams glued by the group, an angle sum can only be its exp
 plus a multiple of \f$\pi\f$, and the area only a multiple of the orbifold's: the checks
 accept a certified enclosure within \f$\pi/2\f$, and within half the orbifold's area, of the
 expected value, which decides them (`Corner_embedding_certificate::max_angle_sum_deviation`
-reports the actual deviations, about \f$10^{-13}\f$ for the package's embeddings). Positions
-(cones at corners, boundary points on sides, a seam copy against its twin's image by the side
-pairing) are compared with a tolerance of \f$10^{-9}\f$ in disk coordinates, or \f$10^{-6}\f$
-of the shortest edge at the vertex (of the seam edge) when that is smaller: far above the
-rounding of coordinates in `double` (\f$10^{-16}\f$), far below the size of the triangles a
+reports the actual deviations, \f$10^{-15}\f$ to \f$3\cdot10^{-7}\f$ for the package's
+embeddings). Positions (cones at corners, boundary points on sides, a seam copy against its
+twin's image by the side pairing) are compared with a tolerance of \f$10^{-9}\f$ in disk
+coordinates, or \f$10^{-6}\f$ of the shortest edge at the vertex (of the seam edge) when that
+is smaller: far above the rounding of coordinates in `double` (\f$10^{-16}\f$; the package's
+embeddings are within \f$6\cdot10^{-13}\f$), far below the size of the triangles a
 misplacement has to be compared with.
 
 \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `HalfedgeListGraph`
