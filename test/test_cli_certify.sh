@@ -97,6 +97,22 @@ case "$case_name" in
     expect_error 2 "$tmp/r2.json" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --frame 1,0,2 --report "$tmp/r2.json"
     expect_error 2 "$tmp/r2.json" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --frame 0,0,1,0 --report "$tmp/r2.json"
     echo "ok (frame $frame)" ;;
+  charts)
+    # a capsule whose tip is a landmark: embed solves the protrusion in a chart around the cone
+    # image and writes those points as '# hot vtc' comments, the vt lines holding their tile
+    # points rounded to double, where the faces near the cone are folded. certify checks the vt
+    # lines: it refuses the file, and says that the chart points were not read
+    awk -v L=100 -v S=24 -f "$(dirname "${BASH_SOURCE[0]}")/capsule.awk" > "$tmp/tube.off" 2> "$tmp/ring.cones"
+    nv=$(sed -n 2p "$tmp/tube.off" | awk '{print $1}')
+    tr ' ' '\n' < "$tmp/ring.cones" | awk -v tip=$((nv - 1)) 'NF { print ($1 == 0 ? tip : $1) }' > "$tmp/tube.cones"
+    "$prog" embed --mesh "$tmp/tube.off" --cones "$tmp/tube.cones" --out "$tmp/t.obj" >/dev/null || fail "embed"
+    nc=$(grep -c '^# hot vtc ' "$tmp/t.obj")
+    [ "$nc" -gt 0 ] || fail "no chart points written (the case no longer tests charts)"
+    "$prog" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --report "$tmp/r.json" 2>"$tmp/stderr"
+    [ $? -eq 4 ] || fail "exit status"
+    grep -q "the file also has $nc points in charts around cone images" "$tmp/stderr" || fail "no note on the chart points: $(cat "$tmp/stderr")"
+    grep -q "\"chart_points_not_read\": $nc," "$tmp/r.json" || fail "report chart points"
+    echo "ok: $(cat "$tmp/stderr")" ;;
   wrong)
     "$prog" landmarks --mesh "$bear" --count 7 --out "$tmp/bear.cones" >/dev/null || fail "landmarks"
     "$prog" embed --mesh "$bear" --cones "$tmp/bear.cones" --out "$tmp/b.obj" >/dev/null || fail "embed"

@@ -32,6 +32,7 @@ struct Certify_request
   std::vector<std::size_t> cones;   // 0-based vertex indices, as given
   std::vector<int> cone_orders;     // as given (all 2), or empty
   double time_read = 0, time_certify = 0; // seconds
+  std::size_t chart_points = 0;     // '# hot vtc' lines of the file (points in charts, not read)
 };
 
 namespace io_impl {
@@ -81,7 +82,7 @@ inline void write_certificate_report(std::ostream& os, const Certify_request& q,
   os << ",\n  \"summary\": \"" << json_escape(c.summary()) << "\",\n"
      << "  \"vertices\": " << c.number_of_vertices << ",\n  \"faces\": " << c.number_of_faces << ",\n  \"points\": "
      << c.number_of_points << ",\n  \"seam_edges\": " << c.number_of_seam_edges << ",\n  \"border_vertices\": "
-     << c.number_of_border_vertices << ",\n  \"cone_order\": [";
+     << c.number_of_border_vertices << ",\n  \"chart_points_not_read\": " << q.chart_points << ",\n  \"cone_order\": [";
   for(std::size_t i = 0; i < c.cone_order.size(); ++i) os << (i ? ", " : "") << c.cone_order[i];
   os << "],\n  \"seam_edges_per_side\": [";
   for(std::size_t i = 0; i < c.seam_edges_per_side.size(); ++i) os << (i ? ", " : "") << c.seam_edges_per_side[i];

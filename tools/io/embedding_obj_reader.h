@@ -59,9 +59,11 @@ groups, materials and the other statements of the format are skipped. Errors
 (ERROR_READ_FAILED, the message starting with the file name and the line): a missing or
 unreadable file, a malformed number or index, a face that is not a triangle or a corner
 without its `vt` index, an index beyond the file's `v` or `vt` lines, an unknown statement.
+`chart_points` (if not null) receives the number of `# hot vtc` comment lines: points that
+`embed` wrote in charts around cone images (tools/io/embedding_obj.h), which are not read.
 */
 inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embedding& embedding,
-                                      std::size_t& number_of_vertices)
+                                      std::size_t& number_of_vertices, std::size_t* chart_points = nullptr)
 {
   using namespace io_impl;
   embedding.clear();
@@ -74,6 +76,13 @@ inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embed
     embedding.clear();
     return read_fail(path + ": " + at_line(line) + m);
   };
+  if(chart_points) {
+    *chart_points = 0;
+    const std::string tag = "# hot vtc ";
+    for(std::size_t at = data.find(tag); at != std::string::npos; at = data.find(tag, at + tag.size()))
+      if(at == 0 || data[at - 1] == '\n')
+        ++*chart_points;
+  }
   std::vector<std::size_t> face_lines;
   Cursor cur(data.data(), data.data() + data.size());
   std::vector<std::string_view> fields;
