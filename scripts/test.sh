@@ -21,7 +21,7 @@ jobs="${HOT_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 labels='^(unit|input|cut|maps|cli|embedding)$'
 exclude='^test_input_checks\.performance$'
 targets=(test_hyperbolic_kernel test_orbifold_tiles test_traits_archetype test_input_checks test_prepare_mesh test_cut_graph
-         test_parameterizer test_maps test_cgal_drop_in hyperbolic_orbifold_tutte)
+         test_parameterizer test_maps test_cgal_drop_in test_certify hyperbolic_orbifold_tutte)
 asan="${HOT_ASAN_BUILD_DIR:-$build-asan}"
 t0=$SECONDS
 echo "== sanitizer stage (address, undefined) in $asan"

@@ -3,7 +3,7 @@
 //
 // hyperbolic_orbifold_tutte: the package's main jobs from the command line.
 //
-//   hyperbolic_orbifold_tutte embed|map|collection|landmarks|cut|tile ... (--help lists them)
+//   hyperbolic_orbifold_tutte embed|map|collection|landmarks|cut|tile|certify ... (--help lists them)
 //
 // Every error ends the program with a non-zero status and one line on stderr;
 // output files are written to a temporary name and renamed only when complete
@@ -24,6 +24,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 
 #include "command_line.h"
+#include "certify_command.h"
 #include "io/embedding_obj.h"
 #include "io/map_files.h"
 #include "io/read_and_check.h"
@@ -87,6 +88,17 @@ const char* const usage_text =
   "      given one by default, or the paper's tour) and writes it as CGAL's selection file:\n"
   "      line 1 the cones in that order, line 2 empty, line 3 the seam edges 's0 t0 s1 t1 ...'\n"
   "      (for Seam_mesh::add_seams() and Surface_mesh_parameterization::locate_cones())\n"
+  "  hyperbolic_orbifold_tutte certify --mesh IN --embedding E.obj --cones CONES [--orbifold sphere|disk]\n"
+  "      [--cone-orders 2,2,...] [--frame A_RE,A_IM,B_RE,B_IM] [--report REPORT.json]\n"
+  "      checks that E.obj (v, vt and 'f v/vt v/vt v/vt' lines, from embed or any other program)\n"
+  "      is a bijection of IN onto the orbifold whose cones are CONES (in any order), from the\n"
+  "      file alone and independently of the solver: faces are IN's faces, points finite and in\n"
+  "      the disk, cones at tile corners (the cone order is found), a disk's boundary on its\n"
+  "      sides' segments, faces positively oriented (exact), angle sums (certified), seams glued\n"
+  "      by the tile's side pairings, total area. Exit 0 when certified, 4 otherwise, with one\n"
+  "      line naming the first failed check and where (0-based face, vertex or edge); the\n"
+  "      report (written in both cases) has every count. --cone-orders: all 2 (the only tiles built).\n"
+  "      --frame: the frame of a recentred embedding (embed's report), z -> (az + b)/(conj(b) z + conj(a))\n"
   "  REPAIR (embed, map, collection, landmarks):\n"
   "      --repair: prepares the mesh first (merges duplicated border vertices, orients, removes\n"
   "      invalid, duplicated and degenerate faces, splits non-manifold vertices, triangulates\n"
@@ -797,6 +809,8 @@ int main(int argc, char** argv)
       return run_collection(argc, argv);
     if(command == "cut")
       return run_cut(argc, argv);
+    if(command == "certify")
+      return run_certify(argc, argv);
     throw Usage_error{"unknown command '" + command + "'"};
   } catch(const Failure& e) {
     std::cerr << "hyperbolic_orbifold_tutte: " << HOT::error_message(e.code) << ": " << e.message << std::endl;

@@ -28,6 +28,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/read_cones.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/certify_corner_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>

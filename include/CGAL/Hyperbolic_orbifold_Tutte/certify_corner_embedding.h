@@ -1,0 +1,208 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_CERTIFY_CORNER_EMBEDDING_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_CERTIFY_CORNER_EMBEDDING_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_topology.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+/// \file certify_corner_embedding.h
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+certifies that a map of a mesh into the Poincar&eacute; disk, given per face corner
+(`Corner_embedding`: an OBJ file's `vt` points and `f v/vt` faces), is a bijection of the mesh
+onto the hyperbolic orbifold whose cones are `cones`, deciding it from the map alone. It
+shares no code with the solver beyond the traits (`Poincare_disk_traits_2`), the isometries
+(`Hyperbolic_isometry_2`) and the tile (`make_orbifold_tile()`): not the cut, nor the seam
+mesh, nor the solver's certificate. The checks, in the order of `Corner_embedding_check` (the
+first failure is the one reported):
+
+- *repeated_face*, *mesh_faces*: the embedding's faces are the mesh's faces, with their
+  orientation, each one once (in any order, each from any of its corners);
+- *finite*, *inside_disk*: every point is finite and strictly inside the unit disk (exact);
+- *cones*: every point of every cone is at a corner of the tile (`make_orbifold_tile()` for
+  the orbifold type and the number of cones), and all of a cone's points at corners of the
+  same tile cone, each tile cone taken once: this gives the cone order
+  (`Corner_embedding_certificate::cone_order`), found rather than assumed; on a disk, the
+  cones that follow each other counterclockwise along the boundary are at consecutive corners;
+- *border* (disk type): every other boundary vertex is on the segment of the tile side between
+  the corners of the cones before and after it (not only on the side's geodesic line);
+- *degenerate_face*, *orientation*: every face is positively oriented, decided exactly;
+- *angle_sum*: per mesh vertex, the hyperbolic angles of all its corners (in every face, across
+  seams) add up to \f$2\pi\f$, to \f$\pi\f$ at a sphere-type cone and along a disk's
+  boundary, and to \f$\pi/2\f$ at a disk's corner;
+- *seams*: every edge whose two faces give different points to one of its ends is a seam; the
+  orientation-preserving isometry relating its two sides is computed from the copies, and must
+  be one of the tile's side pairings (a disk-type map has no seams: its tile's pairings are
+  reflections);
+- *area*: the total hyperbolic area of the faces is the orbifold's (Gauss-Bonnet).
+
+Together (paper, section 4 and Appendix B): the map to the orbifold is continuous across
+seams, a local homeomorphism at every point, hence a covering, and of degree one by the area:
+a bijection.
+
+Exactness and tolerances. Orientation and the unit disk are decided exactly on the given
+coordinates. Angles are computed with certified error bounds (interval arithmetic); with every
+face positive and the seams glued by the group, an angle sum can only be its expected value
+plus a multiple of \f$\pi\f$, and the area only a multiple of the orbifold's: the checks
+accept a certified enclosure within \f$\pi/2\f$, and within half the orbifold's area, of the
+expected value, which decides them (`Corner_embedding_certificate::max_angle_sum_deviation`
+reports the actual deviations, \f$10^{-15}\f$ to \f$3\cdot10^{-7}\f$ for the package's
+embeddings). Positions (cones at corners, boundary points on sides, a seam copy against its
+twin's image by the side pairing) are compared with a tolerance of \f$10^{-9}\f$ in disk
+coordinates, or \f$10^{-6}\f$ of the shortest edge at the vertex (of the seam edge) when that
+is smaller: far above the rounding of coordinates in `double` (\f$10^{-16}\f$; the package's
+embeddings are within \f$6\cdot10^{-13}\f$), far below the size of the triangles a
+misplacement has to be compared with.
+
+\tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `HalfedgeListGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the mesh: a triangulated closed genus-0 surface or disk (checked)
+\param cones the vertices at the orbifold's cones (sphere type) or corners (disk type), in any
+       order: at least 5, distinct, on the boundary for a disk
+\param embedding the map; its vertex indices are those of `vertices(tm)` in order
+\param certificate receives the verdict, every count and the first failure of each check
+\param message if not null, receives one line: the error, or `certificate.summary()`
+\param np optional named parameters: `orbifold_type` (default: from the mesh's boundary) and
+       `frame` (a `Hyperbolic_isometry_2<double>`, default the identity: the map fills the tile
+       moved by it, as a recentred embedding does; `Embedding_statistics::frame`)
+
+\pre `cones` are vertices of `tm`
+\return `OK` when the map was checked (read `certificate.is_certified()`); otherwise the input
+error: the mesh is not a triangulated sphere or disk (`ERROR_NON_TRIANGULAR_MESH`,
+`ERROR_NON_MANIFOLD`, `ERROR_SEVERAL_COMPONENTS`, `ERROR_WRONG_TOPOLOGY`, `ERROR_EMPTY_MESH`),
+the cones are too few, repeated or off a disk's boundary, the frame reverses orientation, or
+`embedding` refers to points it does not have (`ERROR_WRONG_PARAMETER`).
+*/
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code certify_corner_embedding(const TriangleMesh& tm,
+                                    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& cones,
+                                    const Corner_embedding& embedding,
+                                    Corner_embedding_certificate& certificate,
+                                    std::string* message = nullptr,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  namespace cc = internal::corner_certificate;
+  typedef Orbifold_tile<Poincare_disk_traits_2<> > Tile;
+  certificate = Corner_embedding_certificate();
+  std::string local;
+  std::string& msg = message ? *message : local;
+  auto fail = [&](const Status& s) {
+    msg = s.message;
+    return s.code;
+  };
+
+  // the mesh and the orbifold
+  std::optional<Orbifold_type> required;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value)
+    required = CGAL::parameters::get_parameter(np, internal_np::orbifold_type);
+  cc::Indexed_mesh<TriangleMesh> M(tm);
+  Orbifold_type type = Sphere_type;
+  const Status topology = cc::index_and_check_mesh(M, required, type);
+  if(!topology)
+    return fail(topology);
+  const int k = static_cast<int>(cones.size());
+  if(k < 5)
+    return fail(Status::failure(ERROR_TOO_FEW_LANDMARKS, "the orbifold needs at least 5 cones, " + std::to_string(k) + " given"));
+  std::vector<std::size_t> cone_index;
+  std::vector<char> is_cone(M.number_of_vertices(), 0), on_border(M.number_of_vertices(), 0);
+  for(std::size_t v : M.border_loop)
+    on_border[v] = 1;
+  for(int i = 0; i < k; ++i) {
+    const std::size_t v = M.index(cones[i]);
+    if(is_cone[v])
+      return fail(Status::failure(ERROR_DUPLICATE_LANDMARK, "vertex " + std::to_string(v) + " is given twice as a cone"));
+    if(type == Disk_type && !on_border[v])
+      return fail(Status::failure(ERROR_LANDMARK_NOT_ON_BORDER, "cone " + std::to_string(i) + " (vertex " + std::to_string(v) +
+                                                                 ") is not on the boundary: a disk's cones are corners of its boundary"));
+    is_cone[v] = 1;
+    cone_index.push_back(v);
+  }
+  Tile tile;
+  if(make_orbifold_tile(type, k, tile) != OK)
+    return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "no tile for " + std::to_string(k) + " cones"));
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value) {
+    const Hyperbolic_isometry_2<double> frame = CGAL::parameters::get_parameter(np, internal_np::frame);
+    if(!frame.is_orientation_preserving())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the frame must be an orientation-preserving isometry"));
+    tile = tile.transformed(frame);
+  }
+
+  // the embedding's arrays
+  if(embedding.face_points.size() != embedding.face_vertices.size())
+    return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.face_vertices.size()) +
+                                                        " faces but points for " + std::to_string(embedding.face_points.size())));
+  for(std::size_t e = 0; e < embedding.number_of_faces(); ++e)
+    for(int c = 0; c < 3; ++c)
+      if(embedding.face_points[e][c] >= embedding.points.size())
+        return fail(Status::failure(ERROR_WRONG_PARAMETER, "corner " + std::to_string(c) + " of face " + std::to_string(e) +
+                                                            " refers to point " + std::to_string(embedding.face_points[e][c]) +
+                                                            ", but the embedding has " + std::to_string(embedding.points.size())));
+
+  certificate.type = type;
+  certificate.number_of_cones = k;
+  certificate.number_of_faces = embedding.number_of_faces();
+  certificate.number_of_vertices = M.number_of_vertices();
+  certificate.number_of_points = embedding.points.size();
+  certificate.number_of_border_vertices = M.border_loop.size();
+  certificate.expected_area = tile.area();
+  certificate.absolute_tolerance = cc::absolute_tolerance;
+  certificate.relative_tolerance = cc::relative_tolerance;
+  certificate.cone_order.assign(k, -1);
+
+  cc::Certification<TriangleMesh> S(M, embedding, tile, certificate);
+  S.is_cone = is_cone;
+  S.on_border = on_border;
+  std::vector<int> rotation;
+  if(cc::match_faces(M, embedding, certificate, S.efface, rotation)) {
+    S.pid.resize(M.number_of_faces());
+    for(std::size_t f = 0; f < M.number_of_faces(); ++f)
+      for(int c = 0; c < 3; ++c)
+        S.pid[f][c] = embedding.face_points[S.efface[f]][(c + rotation[f]) % 3];
+    cc::check_points(S);
+    cc::compute_tolerances(S);
+    const std::vector<std::vector<std::size_t> > points_of = cc::points_of_vertices(S);
+    const bool order_known = cc::check_cones(S, cone_index, points_of);
+    if(type == Sphere_type)
+      certificate.checks[Border_check].run = true; // nothing to check: no boundary
+    else if(order_known)
+      cc::check_border(S, cone_index, points_of);
+    cc::check_faces(S);
+    cc::check_angle_sums_and_area(S, cone_index);
+    cc::check_seams(S);
+  }
+  msg = certificate.summary();
+  return OK;
+}
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_CERTIFY_CORNER_EMBEDDING_H

@@ -1,0 +1,504 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CORNER_EMBEDDING_CHECKS_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CORNER_EMBEDDING_CHECKS_H
+
+// The checks of certify_corner_embedding(), one function each, on the corner points of the
+// mesh's faces: points (finite, in the disk), cones at tile corners (the cone order), disk
+// boundary vertices on their sides' segments, faces (exact orientation), angle sums and area
+// (certified enclosures), seams (side pairings). Written for the certificate alone: it shares
+// the traits, the isometries and the tile with the solver, nothing else.
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_geometry.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+
+namespace internal {
+namespace corner_certificate {
+
+// the tolerances of the positions (see certify_corner_embedding()'s documentation)
+constexpr double absolute_tolerance = 1e-9;
+constexpr double relative_tolerance = 1e-6;
+
+inline std::string point_string(const C& z)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "(" << z.real() << ", " << z.imag() << ")";
+  return os.str();
+}
+
+inline std::string number_string(double x)
+{
+  std::ostringstream os;
+  os.precision(3);
+  os << x;
+  return os.str();
+}
+
+// The state of one certification: the mesh, the tile, and the corner points per mesh face.
+template <class TriangleMesh>
+struct Certification
+{
+  typedef Corner_embedding_certificate Cert;
+  typedef Orbifold_tile<Poincare_disk_traits_2<> > Tile;
+
+  const Indexed_mesh<TriangleMesh>& M;
+  const Corner_embedding& E;
+  const Tile& tile;
+  Cert& cert;
+  std::vector<std::size_t> efface;           // per mesh face, its embedding face
+  std::vector<std::array<std::size_t, 3> > pid; // per mesh face and corner, its point
+  std::vector<char> valid;                   // per point: finite and strictly inside the disk
+  std::vector<double> tolerance;             // per vertex: min(absolute, relative x shortest incident edge)
+  std::vector<char> is_cone;                 // per vertex
+  std::vector<char> on_border;               // per vertex
+  std::vector<char> face_ok;                 // per mesh face: valid points, positively oriented
+
+  Certification(const Indexed_mesh<TriangleMesh>& m, const Corner_embedding& e, const Tile& t, Cert& c)
+    : M(m), E(e), tile(t), cert(c) {}
+
+  C point(std::size_t p) const { return C(E.points[p][0], E.points[p][1]); }
+  C corner(std::size_t f, int c) const { return point(pid[f][c]); }
+  C tile_corner(int i) const { return C(CGAL::to_double(tile.corner(i).x()), CGAL::to_double(tile.corner(i).y())); }
+  std::string face_name(std::size_t f) const { return "face " + std::to_string(efface[f]); }
+  bool face_points_valid(std::size_t f) const { return valid[pid[f][0]] && valid[pid[f][1]] && valid[pid[f][2]]; }
+};
+
+// finite and inside_disk, per point used by a face
+template <class TM>
+void check_points(Certification<TM>& S)
+{
+  typedef Corner_embedding_certificate Cert;
+  const std::size_t F = S.M.number_of_faces();
+  S.valid.assign(S.E.points.size(), 0);
+  std::vector<char> seen(S.E.points.size(), 0);
+  S.cert.checks[Finite_coordinates_check].run = S.cert.checks[Inside_disk_check].run = true;
+  // in the embedding's face order, so that the first failure is the first in the file
+  std::vector<std::size_t> mesh_face_of(S.E.number_of_faces());
+  for(std::size_t f = 0; f < F; ++f)
+    mesh_face_of[S.efface[f]] = f;
+  for(std::size_t e = 0; e < S.E.number_of_faces(); ++e) {
+    const std::size_t f = mesh_face_of[e];
+    for(int c = 0; c < 3; ++c) {
+      const std::size_t p = S.pid[f][c];
+      if(seen[p])
+        continue;
+      seen[p] = 1;
+      const C z = S.point(p);
+      const std::size_t v = S.M.face_vertices[f][c];
+      ++S.cert.checks[Finite_coordinates_check].checked;
+      if(!std::isfinite(z.real()) || !std::isfinite(z.imag())) {
+        record(S.cert, Finite_coordinates_check, Cert::Vertex, v, 0, "vertex " + std::to_string(v) + " (in face " +
+               std::to_string(e) + ") is at " + point_string(z) + ": not a finite point");
+        continue;
+      }
+      ++S.cert.checks[Inside_disk_check].checked;
+      if(!strictly_inside_unit_disk(z.real(), z.imag())) {
+        record(S.cert, Inside_disk_check, Cert::Vertex, v, 0, "vertex " + std::to_string(v) + " (in face " +
+               std::to_string(e) + ") is at " + point_string(z) + ", not strictly inside the unit disk");
+        continue;
+      }
+      S.valid[p] = 1;
+    }
+  }
+}
+
+// the tolerance of each vertex's positions: absolute, or relative to its shortest incident
+// edge (in any of its faces' points) when that is smaller
+template <class TM>
+void compute_tolerances(Certification<TM>& S)
+{
+  const std::size_t V = S.M.number_of_vertices();
+  std::vector<double> shortest(V, std::numeric_limits<double>::infinity());
+  for(std::size_t f = 0; f < S.M.number_of_faces(); ++f) {
+    if(!S.face_points_valid(f))
+      continue;
+    for(int c = 0; c < 3; ++c) {
+      const double l = std::abs(S.corner(f, c) - S.corner(f, (c + 1) % 3));
+      for(int d : {c, (c + 1) % 3}) {
+        double& s = shortest[S.M.face_vertices[f][d]];
+        s = (std::min)(s, l);
+      }
+    }
+  }
+  S.tolerance.assign(V, absolute_tolerance);
+  for(std::size_t v = 0; v < V; ++v)
+    S.tolerance[v] = (std::min)(absolute_tolerance, relative_tolerance * shortest[v]);
+}
+
+// the distinct points of a vertex's corners (a short list: one per side of a cut)
+template <class TM>
+std::vector<std::vector<std::size_t> > points_of_vertices(const Certification<TM>& S)
+{
+  std::vector<std::vector<std::size_t> > r(S.M.number_of_vertices());
+  for(std::size_t f = 0; f < S.M.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c) {
+      std::vector<std::size_t>& l = r[S.M.face_vertices[f][c]];
+      const std::size_t p = S.pid[f][c];
+      bool found = false;
+      for(std::size_t q : l)
+        if(q == p || S.E.points[q] == S.E.points[p]) { found = true; break; }
+      if(!found)
+        l.push_back(p);
+    }
+  return r;
+}
+
+// cones: each at a corner of the tile, all its points at corners of one tile cone, each tile
+// cone once (which gives the cone order); on a disk, consecutive along the boundary loop
+// (counterclockwise) at consecutive tile corners. Returns true when the cone order is known.
+template <class TM>
+bool check_cones(Certification<TM>& S, const std::vector<std::size_t>& cones,
+                 const std::vector<std::vector<std::size_t> >& points_of)
+{
+  typedef Corner_embedding_certificate Cert;
+  const int k = static_cast<int>(cones.size());
+  Cert::Check_result& R = S.cert.checks[Cone_check];
+  R.run = true;
+  S.cert.cone_order.assign(k, -1);
+  std::vector<int> owner(k, -1);
+  for(int i = 0; i < k; ++i) {
+    const std::size_t v = cones[i];
+    ++R.checked;
+    const std::string who = "cone " + std::to_string(i) + " (vertex " + std::to_string(v) + ")";
+    int cone = -1;
+    bool ok = true;
+    for(std::size_t p : points_of[v]) {
+      if(!S.valid[p]) { ok = false; break; }
+      const C z = S.point(p);
+      int best = 0;
+      double best_d = std::numeric_limits<double>::infinity();
+      for(int t = 0; t < S.tile.number_of_corners(); ++t) {
+        const double d = std::abs(z - S.tile_corner(t));
+        if(d < best_d) { best_d = d; best = t; }
+      }
+      if(!(best_d <= S.tolerance[v])) {
+        record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " is at " + point_string(z) +
+               ", at no corner of the tile (the nearest, a corner of tile cone " + std::to_string(S.tile.corner_cone(best)) +
+               ", is " + number_string(best_d) + " away; tolerance " + number_string(S.tolerance[v]) + ")");
+        ok = false;
+        break;
+      }
+      S.cert.max_cone_distance = (std::max)(S.cert.max_cone_distance, best_d);
+      const int c = S.tile.corner_cone(best);
+      if(cone >= 0 && c != cone) {
+        record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " has copies at corners of two tile cones, " +
+               std::to_string(cone) + " and " + std::to_string(c));
+        ok = false;
+        break;
+      }
+      cone = c;
+    }
+    if(!ok || cone < 0)
+      continue;
+    if(owner[cone] >= 0) {
+      record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " is at a corner of tile cone " + std::to_string(cone) +
+             ", like cone " + std::to_string(owner[cone]) + " (vertex " + std::to_string(cones[owner[cone]]) + ")");
+      continue;
+    }
+    owner[cone] = i;
+    S.cert.cone_order[i] = cone;
+  }
+  if(R.failures > 0)
+    return false;
+  if(S.tile.type() == Disk_type) {
+    // counterclockwise along the boundary, the corners must follow the tile's corners
+    const std::vector<std::size_t>& loop = S.M.border_loop;
+    std::vector<int> cone_at(S.M.number_of_vertices(), -1);
+    for(int i = 0; i < k; ++i)
+      cone_at[cones[i]] = i;
+    std::vector<int> along; // the cones in counterclockwise order along the boundary
+    for(std::size_t v : loop)
+      if(cone_at[v] >= 0)
+        along.push_back(cone_at[v]);
+    // (the step from the last back to the first then follows: the tile cones are a permutation)
+    for(std::size_t j = 1; j < along.size(); ++j) {
+      const int i = along[j], previous = along[j - 1];
+      if(S.cert.cone_order[i] != (S.cert.cone_order[previous] + 1) % k) {
+        record(S.cert, Cone_check, Cert::Vertex, cones[i], 0, "cone " + std::to_string(i) + " (vertex " +
+               std::to_string(cones[i]) + ") follows cone " + std::to_string(previous) + " counterclockwise along the boundary, but is at tile corner " +
+               std::to_string(S.cert.cone_order[i]) + ", not " + std::to_string((S.cert.cone_order[previous] + 1) % k));
+        return false;
+      }
+    }
+  }
+  return R.failures == 0;
+}
+
+// disk type: every boundary vertex that is not a corner on the segment of its side (the side
+// from the corner before it to the corner after it, counterclockwise)
+template <class TM>
+void check_border(Certification<TM>& S, const std::vector<std::size_t>& cones,
+                  const std::vector<std::vector<std::size_t> >& points_of)
+{
+  typedef Corner_embedding_certificate Cert;
+  Cert::Check_result& R = S.cert.checks[Border_check];
+  R.run = true;
+  const std::vector<std::size_t>& loop = S.M.border_loop;
+  std::vector<int> cone_at(S.M.number_of_vertices(), -1);
+  for(std::size_t i = 0; i < cones.size(); ++i)
+    cone_at[cones[i]] = static_cast<int>(i);
+  std::size_t start = 0;
+  while(cone_at[loop[start]] < 0)
+    ++start;
+  int side = -1;
+  for(std::size_t j = 0; j < loop.size(); ++j) {
+    const std::size_t v = loop[(start + j) % loop.size()];
+    if(cone_at[v] >= 0) {
+      side = S.cert.cone_order[cone_at[v]]; // side i runs from tile corner i to corner i + 1
+      continue;
+    }
+    const C c0 = S.tile_corner(S.tile.side_source(side)), c1 = S.tile_corner(S.tile.side_target(side));
+    for(std::size_t p : points_of[v]) {
+      if(!S.valid[p])
+        continue;
+      ++R.checked;
+      const C z = S.point(p);
+      const double off = distance_to_geodesic(z, c0, c1), beyond = distance_beyond_segment(z, c0, c1);
+      S.cert.max_border_distance = (std::max)(S.cert.max_border_distance, (std::max)(off, beyond));
+      const std::string who = "boundary vertex " + std::to_string(v) + " at " + point_string(z);
+      if(!(off <= S.tolerance[v]))
+        record(S.cert, Border_check, Cert::Vertex, v, 0, who + " is off its tile side " + std::to_string(side) + " by " +
+               number_string(off) + " (tolerance " + number_string(S.tolerance[v]) + ")");
+      else if(!(beyond <= S.tolerance[v]))
+        record(S.cert, Border_check, Cert::Vertex, v, 0, who + " is on the line of its tile side " + std::to_string(side) +
+               " but beyond the side's segment, by " + number_string(beyond) + " (tolerance " + number_string(S.tolerance[v]) + ")");
+    }
+  }
+}
+
+// degenerate_face and orientation, exact
+template <class TM>
+void check_faces(Certification<TM>& S)
+{
+  typedef Corner_embedding_certificate Cert;
+  const std::size_t F = S.M.number_of_faces();
+  S.face_ok.assign(F, 0);
+  S.cert.checks[Degenerate_face_check].run = S.cert.checks[Orientation_check].run = true;
+  const auto orient = S.tile.traits().hyperbolic_orientation_2_object();
+  typedef typename Poincare_disk_traits_2<>::Point_2 Point_2;
+  std::vector<std::size_t> mesh_face_of(S.E.number_of_faces());
+  for(std::size_t f = 0; f < F; ++f)
+    mesh_face_of[S.efface[f]] = f;
+  for(std::size_t e = 0; e < S.E.number_of_faces(); ++e) {
+    const std::size_t f = mesh_face_of[e];
+    if(!S.face_points_valid(f))
+      continue;
+    ++S.cert.checks[Degenerate_face_check].checked;
+    ++S.cert.checks[Orientation_check].checked;
+    const C a = S.corner(f, 0), b = S.corner(f, 1), c = S.corner(f, 2);
+    const Orientation o = orient(Point_2(a.real(), a.imag()), Point_2(b.real(), b.imag()), Point_2(c.real(), c.imag()));
+    if(o == POSITIVE) {
+      S.face_ok[f] = 1;
+      continue;
+    }
+    const std::string t = "face " + std::to_string(e) + " " + triangle_string(S.M.face_vertices[f]);
+    if(o == ZERO)
+      record(S.cert, Degenerate_face_check, Cert::Face, e, 0, t + " is degenerate: its three points are on one geodesic" +
+             std::string(a == b || b == c || a == c ? " (two of them coincide)" : ""));
+    else
+      record(S.cert, Orientation_check, Cert::Face, e, 0, t + " is negatively oriented (flipped)");
+  }
+}
+
+// angle_sum and area. Every angle of a positively oriented face is enclosed with certified
+// bounds; per vertex whose faces are all positive, the enclosure of its angle sum must lie
+// within pi/2 of its cone angle, and with every face positive, the area's enclosure within half
+// the orbifold's area of it (see certify_corner_embedding(): the possible values are apart by
+// pi and by the orbifold's area, so these decide them).
+template <class TM>
+void check_angle_sums_and_area(Certification<TM>& S, const std::vector<std::size_t>& cones)
+{
+  typedef Corner_embedding_certificate Cert;
+  const std::size_t V = S.M.number_of_vertices(), F = S.M.number_of_faces();
+  const bool disk = S.tile.type() == Disk_type;
+  std::vector<double> expected(V, 2 * CGAL_PI);
+  if(disk)
+    for(std::size_t v : S.M.border_loop)
+      expected[v] = CGAL_PI;
+  for(std::size_t i = 0; i < cones.size(); ++i) {
+    const int j = S.cert.cone_order[i] >= 0 ? S.cert.cone_order[i] : static_cast<int>(i);
+    expected[cones[i]] = S.tile.signature().cone_angle(j); // 2 pi / order on a sphere, pi / order at a disk's corner
+  }
+  std::vector<Enclosure> sum(V);
+  std::vector<unsigned int> terms(V, 0); // the degree of each vertex
+  std::vector<char> skip(V, 0);
+  const double pi_down = CGAL_PI, pi_up = std::nextafter(CGAL_PI, 4.0); // the double below and above pi
+  Enclosure area;
+  double area_magnitude = 0; // the sum of the terms' magnitudes, for the rounding bound
+  bool all_faces = true;
+  for(std::size_t f = 0; f < F; ++f)
+    if(!S.face_ok[f]) {
+      all_faces = false;
+      for(int c = 0; c < 3; ++c)
+        skip[S.M.face_vertices[f][c]] = 1;
+    }
+  // by blocks of faces: the angles of a block's positive faces at once (triangle_angles())
+  const std::size_t block = 4096;
+  std::vector<std::array<C, 3> > triangles;
+  std::vector<std::array<Enclosure, 3> > angles;
+  for(std::size_t begin = 0; begin < F; begin += block) {
+    const std::size_t end = (std::min)(F, begin + block);
+    triangles.clear();
+    for(std::size_t f = begin; f < end; ++f)
+      if(S.face_ok[f])
+        triangles.push_back({{S.corner(f, 0), S.corner(f, 1), S.corner(f, 2)}});
+    triangle_angles(triangles, angles);
+    std::size_t i = 0;
+    for(std::size_t f = begin; f < end; ++f) {
+      if(!S.face_ok[f])
+        continue;
+      const std::array<Enclosure, 3>& a = angles[i++];
+      for(int c = 0; c < 3; ++c) {
+        const std::size_t v = S.M.face_vertices[f][c];
+        add(sum[v], a[c]);
+        ++terms[v];
+      }
+      // the face's area is pi minus its angles
+      const Enclosure t{pi_down - (a[0].hi + a[1].hi + a[2].hi), pi_up - (a[0].lo + a[1].lo + a[2].lo)};
+      add(area, t);
+      area_magnitude += (std::max)(std::abs(t.lo), std::abs(t.hi));
+    }
+  }
+  Cert::Check_result& R = S.cert.checks[Angle_sum_check];
+  R.run = true;
+  for(std::size_t v = 0; v < V; ++v) {
+    if(skip[v])
+      continue;
+    ++R.checked;
+    const Enclosure s = widen_sum(sum[v], terms[v], sum[v].hi);
+    const double e = expected[v];
+    S.cert.max_angle_sum_deviation = (std::max)(S.cert.max_angle_sum_deviation, std::abs(0.5 * (s.lo + s.hi) - e));
+    S.cert.max_angle_sum_uncertainty = (std::max)(S.cert.max_angle_sum_uncertainty, s.hi - s.lo);
+    if(s.lo > e - 0.5 * CGAL_PI && s.hi < e + 0.5 * CGAL_PI)
+      continue;
+    std::ostringstream os;
+    os.precision(6);
+    os << "vertex " << v << (S.is_cone[v] ? " (a cone)" : (S.on_border[v] ? " (on the boundary)" : ""))
+       << " has an angle sum of " << 0.5 * (s.lo + s.hi) << " (certified in [" << s.lo << ", " << s.hi
+       << "]), expected " << e << " = " << e / CGAL_PI << " pi";
+    if(s.lo <= e + 0.5 * CGAL_PI && s.hi >= e - 0.5 * CGAL_PI)
+      os << ": too uncertain to decide";
+    else if(s.lo > e)
+      os << ": its faces wind around it " << (0.5 * (s.lo + s.hi)) / e << " times";
+    record(S.cert, Angle_sum_check, Cert::Vertex, v, 0, os.str());
+  }
+  S.cert.checks[Area_check].run = all_faces;
+  if(!all_faces)
+    return;
+  ++S.cert.checks[Area_check].checked;
+  // the sum's rounding, and each term's own (three sums of angles up to pi: 9 pi u at most)
+  Enclosure A = widen_sum(area, F, area_magnitude);
+  A.lo -= static_cast<double>(F) * 10 * CGAL_PI * 1.12e-16;
+  A.hi += static_cast<double>(F) * 10 * CGAL_PI * 1.12e-16;
+  S.cert.area_lower = A.lo;
+  S.cert.area_upper = A.hi;
+  const double want = S.cert.expected_area;
+  if(!(A.lo > 0.5 * want && A.hi < 1.5 * want)) {
+    std::ostringstream os;
+    os.precision(9);
+    os << "the total hyperbolic area is " << 0.5 * (A.lo + A.hi) << " (certified in [" << A.lo << ", " << A.hi
+       << "]), but the orbifold's is " << want << " (" << want / CGAL_PI << " pi): the faces cover it "
+       << 0.5 * (A.lo + A.hi) / want << " times";
+    record(S.cert, Area_check, Cert::No_element, 0, 0, os.str());
+  }
+}
+
+// seams: every mesh edge whose two faces give different points to an end; the
+// orientation-preserving isometry that maps the first side's copy to the second's is computed
+// from them, and must be a side pairing of the tile: the pairing that maps both copies best
+// must place them within the tolerance of the edge
+template <class TM>
+void check_seams(Certification<TM>& S)
+{
+  typedef Corner_embedding_certificate Cert;
+  typedef Hyperbolic_isometry_2<long double> Iso;
+  const TM& tm = S.M.tm;
+  Cert::Check_result& R = S.cert.checks[Seam_check];
+  R.run = true;
+  std::vector<std::pair<int, Iso> > generators;
+  for(int i = 0; i < S.tile.number_of_sides(); ++i)
+    if(S.tile.side_pairing(i).is_orientation_preserving())
+      generators.emplace_back(i, Iso(S.tile.side_pairing(i)));
+  S.cert.seam_edges_per_side.assign(S.tile.number_of_sides(), 0);
+  auto same = [&](std::size_t p, std::size_t q) { return p == q || S.E.points[p] == S.E.points[q]; };
+  for(std::size_t f = 0; f < S.M.number_of_faces(); ++f) {
+    for(int c = 0; c < 3; ++c) {
+      const auto h = S.M.face_halfedges[f][c];
+      const auto o = opposite(h, tm);
+      if(is_border(o, tm))
+        continue;
+      const std::size_t g = S.M.index(face(o, tm));
+      if(g < f)
+        continue; // each edge once
+      // h runs from corner (c + 2) % 3 (vertex u) to corner c (vertex w) of f
+      const std::size_t u = S.M.face_vertices[f][(c + 2) % 3], w = S.M.face_vertices[f][c];
+      int cu = 0, cw = 0;
+      while(S.M.face_vertices[g][cu] != u) ++cu;
+      while(S.M.face_vertices[g][cw] != w) ++cw;
+      const std::size_t pa1 = S.pid[f][(c + 2) % 3], pb1 = S.pid[f][c], pa2 = S.pid[g][cu], pb2 = S.pid[g][cw];
+      if(same(pa1, pa2) && same(pb1, pb2))
+        continue;
+      ++S.cert.number_of_seam_edges;
+      if(!(S.valid[pa1] && S.valid[pb1] && S.valid[pa2] && S.valid[pb2]))
+        continue;
+      ++R.checked;
+      const C a1 = S.point(pa1), b1 = S.point(pb1), a2 = S.point(pa2), b2 = S.point(pb2);
+      const std::string where = "edge (" + std::to_string(u) + ", " + std::to_string(w) + ") between faces " +
+                                std::to_string(S.efface[f]) + " and " + std::to_string(S.efface[g]);
+      if(generators.empty()) {
+        record(S.cert, Seam_check, Cert::Edge, u, w, where + " is a seam (its faces give vertex " +
+               std::to_string(same(pa1, pa2) ? w : u) + " two points), but a disk-type embedding has none: the tile's side pairings are reflections");
+        continue;
+      }
+      int best = -1;
+      double best_m = std::numeric_limits<double>::infinity();
+      for(std::size_t i = 0; i < generators.size(); ++i) {
+        const double m = (std::max)(image_distance(generators[i].second, a1, a2), image_distance(generators[i].second, b1, b2));
+        if(m < best_m) { best_m = m; best = static_cast<int>(i); }
+      }
+      const double length = (std::min)(std::abs(a1 - b1), std::abs(a2 - b2));
+      const double tol = (std::min)(absolute_tolerance, relative_tolerance * length);
+      const Iso h_iso = isometry_from_copies(a1, b1, a2, b2);
+      if(!(best_m <= tol)) {
+        std::ostringstream os;
+        os.precision(6);
+        os << where << ": its two sides are related by no side pairing of the tile (the isometry computed from them is "
+           << Hyperbolic_isometry_2<double>(h_iso) << "; the nearest, side " << generators[best].first
+           << "'s pairing, misplaces a copy by " << best_m << ", tolerance " << tol << ")";
+        record(S.cert, Seam_check, Cert::Edge, u, w, os.str());
+        continue;
+      }
+      ++S.cert.seam_edges_per_side[generators[best].first];
+      S.cert.max_seam_mismatch = (std::max)(S.cert.max_seam_mismatch, best_m);
+      S.cert.max_relative_seam_mismatch = (std::max)(S.cert.max_relative_seam_mismatch, best_m / length);
+      S.cert.max_seam_isometry_deviation =
+        (std::max)(S.cert.max_seam_isometry_deviation, coefficient_distance(h_iso, generators[best].second));
+    }
+  }
+}
+
+} // namespace corner_certificate
+} // namespace internal
+
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CORNER_EMBEDDING_CHECKS_H

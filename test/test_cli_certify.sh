@@ -1,0 +1,195 @@
+#!/usr/bin/env bash
+# The `certify` command: test_cli_certify.sh PROGRAM CASE DATA. Embeddings written by `embed`
+# are certified (exit 0, a report with every count), files edited into wrong embeddings are
+# refused by the check that names their fault (exit 4, one line, the report says the same),
+# and bad input is an error (2: usage, 3: data, 1: files) with one line and no report left.
+set -u
+prog="$1"; case_name="$2"; data="${3:-}"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+expect_error() { # expect_error STATUS OUTFILE ARGS...: that exit status, one line on stderr, no output file
+  local want="$1" outfile="$2"; shift 2
+  "$prog" "$@" >"$tmp/stdout" 2>"$tmp/stderr"; local rc=$?
+  [ $rc -eq "$want" ] || fail "exit $rc (expected $want) for: $* -- $(cat "$tmp/stderr")"
+  [ "$(wc -l <"$tmp/stderr")" -eq 1 ] || fail "stderr is not one line for: $* -- $(cat "$tmp/stderr")"
+  [ ! -e "$outfile" ] || fail "output file left behind for: $*"
+  [ ! -e "$outfile.tmp" ] || fail "temporary file left behind for: $*"
+  echo "ok (exit $rc): $(cat "$tmp/stderr")"
+}
+
+expect_rejected() { # expect_rejected CHECK MESH OBJ CONES: exit 4, one line naming CHECK, the report saying so
+  local check="$1" mesh="$2" obj="$3" cones="$4"
+  rm -f "$tmp/r.json"
+  "$prog" certify --mesh "$mesh" --embedding "$obj" --cones "$cones" --report "$tmp/r.json" >"$tmp/stdout" 2>"$tmp/stderr"; local rc=$?
+  [ $rc -eq 4 ] || fail "exit $rc (expected 4) for $obj -- $(cat "$tmp/stderr")"
+  [ "$(wc -l <"$tmp/stderr")" -eq 1 ] || fail "stderr is not one line for $obj -- $(cat "$tmp/stderr")"
+  grep -q "not certified: $check: " "$tmp/stderr" || fail "$obj: expected check $check -- $(cat "$tmp/stderr")"
+  grep -q '"certified": false' "$tmp/r.json" || fail "$obj: report verdict"
+  grep -q "\"first_failed_check\": \"$check\"" "$tmp/r.json" || fail "$obj: report's first failed check"
+  echo "ok (exit 4): $(cat "$tmp/stderr")"
+}
+
+json_ok() { # the report is JSON (when python3 is there)
+  if command -v python3 >/dev/null; then python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$1" || fail "$1 is not JSON"; fi
+}
+
+# the number of vertices on a boundary of an OFF triangle mesh: edges in one face only
+boundary_vertices() {
+  awk 'NR == 2 { n = $1 } NR > 2 + n && NF >= 4 {
+         for(i = 0; i < 3; i++) { a = $(2 + i); b = $(2 + (i + 1) % 3); k = (a < b) ? a " " b : b " " a; e[k]++ } }
+       END { for(k in e) if(e[k] == 1) { split(k, v, " "); bv[v[1]]; bv[v[2]] } c = 0; for(x in bv) c++; print c }' "$1"
+}
+
+bear="$data/meshes/bear.off"
+mushroom="$data/meshes/mushroom.off"
+
+case "$case_name" in
+  sphere)
+    "$prog" landmarks --mesh "$bear" --count 7 --out "$tmp/bear.cones" >/dev/null || fail "landmarks"
+    "$prog" embed --mesh "$bear" --cones "$tmp/bear.cones" --out "$tmp/b.obj" >/dev/null || fail "embed"
+    "$prog" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --report "$tmp/b.json" >"$tmp/out" \
+      || fail "certify refused embed's own output: $(cat "$tmp/out")"
+    grep -q "^certified: " "$tmp/out" || fail "stdout: $(cat "$tmp/out")"
+    json_ok "$tmp/b.json"
+    grep -q '"certified": true' "$tmp/b.json" || fail "report verdict"
+    grep -q '"first_failed_check": null' "$tmp/b.json" || fail "report first failed check"
+    grep -q '"orbifold": "sphere"' "$tmp/b.json" || fail "report orbifold"
+    nv=$(grep -c '^v ' "$tmp/b.obj"); nvt=$(grep -c '^vt ' "$tmp/b.obj"); nf=$(grep -c '^f ' "$tmp/b.obj")
+    grep -q "\"faces\": $nf," "$tmp/b.json" || fail "report faces"
+    # the cut is a simple path through the cones: its inner vertices have two points each
+    grep -q "\"seam_edges\": $((nvt - nv + 1))," "$tmp/b.json" || fail "report seam edges ($((nvt - nv + 1)) expected)"
+    for c in repeated_face mesh_faces finite inside_disk cones border degenerate_face orientation angle_sum seams area; do
+      grep -q "\"$c\": {\"run\": true, \"checked\": [0-9]*, \"failures\": 0, \"first_failure\": null}" "$tmp/b.json" || fail "report check $c"
+    done
+    # the cones in another order: the order is found, not assumed
+    tac "$tmp/bear.cones" > "$tmp/bear.rev"
+    "$prog" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.rev" >/dev/null || fail "cones in another order"
+    # --cone-orders of 2 are the default; --orbifold sphere is what the mesh is
+    "$prog" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders 2,2,2,2,2,2,2 --orbifold sphere \
+      >/dev/null || fail "--cone-orders 2,...,2"
+    echo ok ;;
+  disk)
+    echo "1166 1785 147 932 2251 139" > "$tmp/m.cones"
+    "$prog" embed --mesh "$mushroom" --cones "$tmp/m.cones" --out "$tmp/m.obj" >/dev/null || fail "embed"
+    "$prog" certify --mesh "$mushroom" --embedding "$tmp/m.obj" --cones "$tmp/m.cones" --report "$tmp/m.json" >/dev/null \
+      || fail "certify refused embed's own output"
+    json_ok "$tmp/m.json"
+    grep -q '"certified": true' "$tmp/m.json" || fail "report verdict"
+    grep -q '"orbifold": "disk"' "$tmp/m.json" || fail "report orbifold"
+    grep -q '"seam_edges": 0,' "$tmp/m.json" || fail "a disk has no seam"
+    nb=$(boundary_vertices "$mushroom")
+    grep -q "\"border_vertices\": $nb," "$tmp/m.json" || fail "report boundary vertices ($nb expected)"
+    grep -q "\"border\": {\"run\": true, \"checked\": $((nb - 6)), \"failures\": 0" "$tmp/m.json" || fail "report border check"
+    echo ok ;;
+  recentred)
+    # a capsule whose far end is too squeezed for the tile (test_cli.sh, embed_recentre): embed
+    # --recentre writes it in a moved frame, which certify needs (--frame, from the report)
+    awk -v L=50 -v S=24 -f "$(dirname "${BASH_SOURCE[0]}")/capsule.awk" > "$tmp/tube.off" 2> "$tmp/tube.cones"
+    "$prog" embed --mesh "$tmp/tube.off" --cones "$tmp/tube.cones" --out "$tmp/t.obj" --report "$tmp/t.json" --recentre >/dev/null \
+      || fail "embed --recentre"
+    grep -q '"recentred": true' "$tmp/t.json" || fail "not recentred"
+    frame=$(sed -n 's/.*"frame": {"a": \[\([^]]*\)\], "b": \[\([^]]*\)\]}.*/\1,\2/p' "$tmp/t.json" | tr -d ' ')
+    [ -n "$frame" ] || fail "no frame in the report"
+    "$prog" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --frame "$frame" >"$tmp/out" \
+      || fail "certify --frame $frame refused embed's recentred output: $(cat "$tmp/out")"
+    expect_rejected cones "$tmp/tube.off" "$tmp/t.obj" "$tmp/tube.cones"
+    expect_error 2 "$tmp/r2.json" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --frame 1,0,2 --report "$tmp/r2.json"
+    expect_error 2 "$tmp/r2.json" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --frame 0,0,1,0 --report "$tmp/r2.json"
+    echo "ok (frame $frame)" ;;
+  charts)
+    # a capsule whose tip is a landmark: embed solves the protrusion in a chart around the cone
+    # image and writes those points as '# hot vtc' comments, the vt lines holding their tile
+    # points rounded to double, where the faces near the cone are folded. certify checks the vt
+    # lines: it refuses the file, and says that the chart points were not read
+    awk -v L=100 -v S=24 -f "$(dirname "${BASH_SOURCE[0]}")/capsule.awk" > "$tmp/tube.off" 2> "$tmp/ring.cones"
+    nv=$(sed -n 2p "$tmp/tube.off" | awk '{print $1}')
+    tr ' ' '\n' < "$tmp/ring.cones" | awk -v tip=$((nv - 1)) 'NF { print ($1 == 0 ? tip : $1) }' > "$tmp/tube.cones"
+    "$prog" embed --mesh "$tmp/tube.off" --cones "$tmp/tube.cones" --out "$tmp/t.obj" >/dev/null || fail "embed"
+    nc=$(grep -c '^# hot vtc ' "$tmp/t.obj")
+    [ "$nc" -gt 0 ] || fail "no chart points written (the case no longer tests charts)"
+    "$prog" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --report "$tmp/r.json" 2>"$tmp/stderr"
+    [ $? -eq 4 ] || fail "exit status"
+    grep -q "the file also has $nc points in charts around cone images" "$tmp/stderr" || fail "no note on the chart points: $(cat "$tmp/stderr")"
+    grep -q "\"chart_points_not_read\": $nc," "$tmp/r.json" || fail "report chart points"
+    echo "ok: $(cat "$tmp/stderr")" ;;
+  wrong)
+    "$prog" landmarks --mesh "$bear" --count 7 --out "$tmp/bear.cones" >/dev/null || fail "landmarks"
+    "$prog" embed --mesh "$bear" --cones "$tmp/bear.cones" --out "$tmp/b.obj" >/dev/null || fail "embed"
+    # a NaN and a point on the unit circle (vt line 100)
+    awk '/^vt / && ++n == 100 { print "vt nan " $3; next } { print }' "$tmp/b.obj" > "$tmp/nan.obj"
+    expect_rejected finite "$bear" "$tmp/nan.obj" "$tmp/bear.cones"
+    awk '/^vt / && ++n == 100 { print "vt 1 0"; next } { print }' "$tmp/b.obj" > "$tmp/out.obj"
+    expect_rejected inside_disk "$bear" "$tmp/out.obj" "$tmp/bear.cones"
+    # face 20 given twice; face 0 reversed
+    awk '{ print } /^f / && ++n == 20 { print }' "$tmp/b.obj" > "$tmp/rep.obj"
+    expect_rejected repeated_face "$bear" "$tmp/rep.obj" "$tmp/bear.cones"
+    grep -q '"message": "face 20 ' "$tmp/r.json" || fail "the repeated face is face 20"
+    awk '/^f / && ++n == 1 { print "f " $2 " " $4 " " $3; next } { print }' "$tmp/b.obj" > "$tmp/rev.obj"
+    expect_rejected mesh_faces "$bear" "$tmp/rev.obj" "$tmp/bear.cones"
+    awk '/^f / && ++n == 1 { print "f " $2 " " $2 " " $4; next } { print }' "$tmp/b.obj" > "$tmp/degenerate.obj"
+    expect_rejected mesh_faces "$bear" "$tmp/degenerate.obj" "$tmp/bear.cones"
+    grep -q "repeats a vertex" "$tmp/stderr" || fail "the face with a repeated vertex is not named so"
+    # every coordinate squared, and everything shrunk: the cones leave the tile's corners
+    awk '/^vt / { printf "vt %.17g %.17g\n", $2 * $2 - $3 * $3, 2 * $2 * $3; next } { print }' "$tmp/b.obj" > "$tmp/sq.obj"
+    expect_rejected cones "$bear" "$tmp/sq.obj" "$tmp/bear.cones"
+    awk '/^vt / { printf "vt %.17g %.17g\n", 0.9 * $2, 0.9 * $3; next } { print }' "$tmp/b.obj" > "$tmp/shrunk.obj"
+    expect_rejected cones "$bear" "$tmp/shrunk.obj" "$tmp/bear.cones"
+    # two neighbours' points swapped: the first face from the 5000th on whose first two vertices
+    # are not cones and have one point each (off the cut) turns over
+    awk -v cones="$(cat "$tmp/bear.cones" | tr '\n' ' ')" '
+      BEGIN { split(cones, c, " "); for(i in c) cone[c[i]] = 1 }
+      NR == FNR { if($1 == "f") for(i = 2; i <= 4; i++) { split($i, a, "/"); if(!((a[1] " " a[2]) in seen)) { seen[a[1] " " a[2]]; nvt[a[1]]++ } } next }
+      FNR == 1 { nf = 0; nt = 0 }
+      $1 == "f" && !done && ++nf >= 5000 { split($2, a, "/"); split($3, b, "/");
+        if(nvt[a[1]] == 1 && nvt[b[1]] == 1 && !((a[1] - 1) in cone) && !((b[1] - 1) in cone)) { ta = a[2]; tb = b[2]; done = 1 } }
+      { line[FNR] = $0; if($1 == "vt") vt[++nt] = FNR }
+      END { l1 = line[vt[ta]]; line[vt[ta]] = line[vt[tb]]; line[vt[tb]] = l1; for(i = 1; i <= FNR; i++) print line[i] }' \
+      "$tmp/b.obj" "$tmp/b.obj" > "$tmp/swap.obj"
+    [ "$(grep -c '' "$tmp/swap.obj")" -eq "$(grep -c '' "$tmp/b.obj")" ] || fail "swap.obj"
+    ! cmp -s "$tmp/swap.obj" "$tmp/b.obj" || fail "nothing swapped"
+    expect_rejected orientation "$bear" "$tmp/swap.obj" "$tmp/bear.cones"
+    echo ok ;;
+  errors)
+    "$prog" landmarks --mesh "$bear" --count 7 --out "$tmp/bear.cones" >/dev/null || fail "landmarks"
+    "$prog" embed --mesh "$bear" --cones "$tmp/bear.cones" --out "$tmp/b.obj" >/dev/null || fail "embed"
+    r="$tmp/r.json"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/none.obj" --cones "$tmp/bear.cones" --report "$r"
+    expect_error 3 "$r" certify --mesh "$tmp/none.off" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --report "$r"
+    : > "$tmp/empty.obj"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/empty.obj" --cones "$tmp/bear.cones" --report "$r"
+    head -c 3000 "$bear" | tr 'a-z0-9' '#@!$%^&*()_+=-[]{}|;:,.<>?~' > "$tmp/junk.obj"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/junk.obj" --cones "$tmp/bear.cones" --report "$r"
+    # an OBJ face without point indices, a quad, a point index beyond the vt lines
+    awk '/^f / && ++n == 3 { split($2, a, "/"); split($3, b, "/"); split($4, c, "/"); print "f " a[1] " " b[1] " " c[1]; next } { print }' \
+      "$tmp/b.obj" > "$tmp/novt.obj"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/novt.obj" --cones "$tmp/bear.cones" --report "$r"
+    grep -q "no point (vt) index" "$tmp/stderr" || fail "the reason is not the missing vt index"
+    awk '/^f / && ++n == 3 { print $0 " " $2; next } { print }' "$tmp/b.obj" > "$tmp/quad.obj"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/quad.obj" --cones "$tmp/bear.cones" --report "$r"
+    awk '/^f / && ++n == 3 { print "f 1/999999 2/1 3/1"; next } { print }' "$tmp/b.obj" > "$tmp/range.obj"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/range.obj" --cones "$tmp/bear.cones" --report "$r"
+    # the embedding of another mesh
+    echo "1166 1785 147 932 2251 139" > "$tmp/m.cones"
+    expect_error 3 "$r" certify --mesh "$mushroom" --embedding "$tmp/b.obj" --cones "$tmp/m.cones" --report "$r"
+    grep -q "not an embedding of this mesh" "$tmp/stderr" || fail "the reason is not the other mesh"
+    # cones: too few, repeated, beyond the mesh
+    echo "1 2 3 4" > "$tmp/four.cones"; echo "1 2 3 4 4" > "$tmp/dup.cones"; echo "1 2 3 4 99999999" > "$tmp/range.cones"
+    for c in four dup range; do
+      expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/$c.cones" --report "$r"
+    done
+    # --cone-orders: only 2 (the tiles of other orders are not built), one per cone
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders 3,2,2,2,2,2,2 --report "$r"
+    grep -q "only order 2" "$tmp/stderr" || fail "the refusal of order 3 does not say why"
+    expect_error 2 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders 2,2 --report "$r"
+    expect_error 2 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders two --report "$r"
+    # the orbifold type the mesh is not; usage
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --orbifold disk --report "$r"
+    expect_error 2 "$r" certify --mesh "$bear" --cones "$tmp/bear.cones" --report "$r"
+    expect_error 2 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --bogus 1
+    # the report cannot be written: a file error, nothing left
+    expect_error 1 "$tmp/nodir/r.json" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --report "$tmp/nodir/r.json"
+    echo ok ;;
+  *)
+    fail "unknown case $case_name" ;;
+esac

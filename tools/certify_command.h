@@ -1,0 +1,173 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CERTIFY_COMMAND_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CERTIFY_COMMAND_H
+
+// The `certify` command: reads a mesh, its cones and an embedding as OBJ (from `embed` or
+// from anywhere), and runs certify_corner_embedding() on them. Exit status 0 when the
+// embedding is certified a bijection onto the orbifold, 4 when a check fails (one line on
+// stderr: the first failed check, where and why), and the program's other statuses for bad
+// input (2 usage, 3 data, 1 files). The report, when asked for, is written in both cases.
+// A recentred embedding (embed --recentre) is checked in its frame (--frame, from its report).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/certify_corner_embedding.h>
+
+#include "command_line.h"
+#include "io/certificate_report.h"
+#include "io/embedding_obj_reader.h"
+#include "io/landmarks.h"
+#include "io/read_and_check.h" // read_mesh()
+
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstdlib>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hot_cli {
+
+// the exit status of `certify` when the embedding is read but not certified
+constexpr int not_certified_status = 4;
+
+// --cone-orders: orders separated by commas or spaces, one per cone
+inline std::vector<int> parse_cone_orders(const std::string& s)
+{
+  std::vector<int> orders;
+  std::string t = s;
+  for(char& ch : t)
+    if(ch == ',')
+      ch = ' ';
+  std::istringstream in(t);
+  for(std::string tok; in >> tok;) {
+    char* end = nullptr;
+    const long v = std::strtol(tok.c_str(), &end, 10);
+    if(tok.empty() || *end != '\0' || v < 2 || v > 1000000)
+      throw Usage_error{"--cone-orders must list integers of at least 2 (e.g. 2,2,2,2,2), got '" + tok + "'"};
+    orders.push_back(static_cast<int>(v));
+  }
+  if(orders.empty())
+    throw Usage_error{"--cone-orders lists no order"};
+  return orders;
+}
+
+// --frame A_RE,A_IM,B_RE,B_IM: the Mobius map z -> (az + b) / (conj(b) z + conj(a)) of a
+// recentred embedding (embed's report: "frame": {"a": [re, im], "b": [re, im]})
+inline HOT::Hyperbolic_isometry_2<double> parse_frame(const std::string& s)
+{
+  std::string t = s;
+  for(char& ch : t)
+    if(ch == ',')
+      ch = ' ';
+  std::istringstream in(t);
+  std::vector<double> x;
+  for(std::string tok; in >> tok;) {
+    char* end = nullptr;
+    const double v = std::strtod(tok.c_str(), &end);
+    if(tok.empty() || *end != '\0' || !std::isfinite(v))
+      throw Usage_error{"--frame must be four numbers A_RE,A_IM,B_RE,B_IM, got '" + tok + "'"};
+    x.push_back(v);
+  }
+  if(x.size() != 4)
+    throw Usage_error{"--frame must be four numbers A_RE,A_IM,B_RE,B_IM (embed's report: \"frame\"), got " + std::to_string(x.size())};
+  const std::complex<double> a(x[0], x[1]), b(x[2], x[3]);
+  if(!(std::norm(a) > std::norm(b)))
+    throw Usage_error{"--frame: |a| must exceed |b| (a Mobius map of the disk)"};
+  return HOT::Hyperbolic_isometry_2<double>(a, b);
+}
+
+inline int run_certify(int argc, char** argv)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+  typedef std::chrono::steady_clock Clock;
+  auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+
+  const Options opt(argc, argv, 2, {"mesh", "embedding", "cones", "orbifold", "cone-orders", "frame", "report"});
+  hot_tools::Certify_request q;
+  q.mesh_path = opt.get("mesh");
+  q.embedding_path = opt.get("embedding");
+  q.cones_path = opt.get("cones");
+  std::optional<HOT::Orbifold_type> type;
+  if(opt.has("orbifold"))
+    type = parse_orbifold(opt.get("orbifold"));
+  if(opt.has("cone-orders"))
+    q.cone_orders = parse_cone_orders(opt.get("cone-orders"));
+  const std::optional<std::string> report = opt.has("report") ? std::optional<std::string>(opt.get("report")) : std::nullopt;
+  const HOT::Hyperbolic_isometry_2<double> frame = opt.has("frame") ? parse_frame(opt.get("frame")) : HOT::Hyperbolic_isometry_2<double>();
+
+  const Clock::time_point t0 = Clock::now();
+  Mesh m;
+  require(hot_tools::read_mesh(q.mesh_path, m));
+  require(hot_tools::read_landmarks(q.cones_path, q.cones));
+  if(!q.cone_orders.empty()) {
+    if(q.cone_orders.size() != q.cones.size())
+      throw Usage_error{"--cone-orders lists " + std::to_string(q.cone_orders.size()) + " orders for " +
+                        std::to_string(q.cones.size()) + " cones"};
+    for(std::size_t i = 0; i < q.cone_orders.size(); ++i)
+      if(q.cone_orders[i] != 2)
+        throw Failure{HOT::ERROR_WRONG_PARAMETER, "--cone-orders: cone " + std::to_string(i) + " has order " +
+                                                    std::to_string(q.cone_orders[i]) +
+                                                    "; only order 2 (cone angle pi on a sphere, corner angle pi/2 on a disk) is supported, the tiles of other orders are not built yet"};
+  }
+  std::vector<Mesh::Vertex_index> cones;
+  for(std::size_t v : q.cones) {
+    if(v >= num_vertices(m))
+      throw Failure{HOT::ERROR_LANDMARK_OUT_OF_RANGE, q.cones_path + ": vertex index " + std::to_string(v) +
+                                                        " is not a vertex of the mesh (it has " + std::to_string(num_vertices(m)) + ")"};
+    cones.push_back(Mesh::Vertex_index(static_cast<Mesh::size_type>(v)));
+  }
+  HOT::Corner_embedding embedding;
+  std::size_t obj_vertices = 0;
+  require(hot_tools::read_embedding_obj(q.embedding_path, embedding, obj_vertices, &q.chart_points));
+  if(obj_vertices != num_vertices(m))
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, q.embedding_path + ": the embedding has " + std::to_string(obj_vertices) +
+                                                " vertices (v lines) but the mesh " + std::to_string(num_vertices(m)) +
+                                                ": it is not an embedding of this mesh"};
+  const Clock::time_point t1 = Clock::now();
+
+  HOT::Corner_embedding_certificate cert;
+  std::string why;
+  const HOT::Error_code ec =
+    type ? HOT::certify_corner_embedding(m, cones, embedding, cert, &why,
+                                         HOT::parameters::frame(frame, HOT::parameters::orbifold_type(*type)))
+         : HOT::certify_corner_embedding(m, cones, embedding, cert, &why, HOT::parameters::frame(frame));
+  if(ec != HOT::OK)
+    throw Failure{ec, (ec == HOT::ERROR_DUPLICATE_LANDMARK || ec == HOT::ERROR_LANDMARK_NOT_ON_BORDER || ec == HOT::ERROR_TOO_FEW_LANDMARKS
+                         ? q.cones_path : q.mesh_path) + ": " + why};
+  q.time_read = seconds(t0, t1);
+  q.time_certify = seconds(t1, Clock::now());
+  if(report)
+    write_file_atomically(*report, [&](std::ostream& os) { hot_tools::write_certificate_report(os, q, cert); });
+
+  if(!cert.is_certified()) {
+    // embed writes the faces it solved in charts around cone images with '# hot vtc' points,
+    // their vt lines only rounded tile points: say that these were not read
+    std::cerr << "hyperbolic_orbifold_tutte: not certified: " << cert.summary()
+              << (q.chart_points > 0 ? " (the file also has " + std::to_string(q.chart_points) +
+                                         " points in charts around cone images, '# hot vtc' lines, which certify does not read: it checks the vt lines)"
+                                     : std::string())
+              << std::endl;
+    return not_certified_status;
+  }
+  std::cout << "certified: " << q.embedding_path << " is a bijection of " << q.mesh_path << " onto the "
+            << (cert.type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold with " << cert.number_of_cones
+            << " cones (" << cert.number_of_faces << " faces, " << cert.number_of_seam_edges << " seam edges; cone order";
+  for(int j : cert.cone_order)
+    std::cout << " " << j;
+  std::cout << "; largest seam mismatch " << cert.max_seam_mismatch << ", angle-sum deviation " << cert.max_angle_sum_deviation
+            << "; read in " << q.time_read << " s, certified in " << q.time_certify << " s)" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+} // namespace hot_cli
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CERTIFY_COMMAND_H
