@@ -195,7 +195,7 @@ bool build_chart_problem(const Flat_problem& P, const Tile& tile, const std::vec
       return false;
     const int c = chart_of[a] >= 0 ? chart_of[a] : chart_of[b];
     Q.edges.push_back({q_of(a, c), q_of(b, c)});
-    Q.edge_weight.push_back(P.edge_weight[e]);
+    Q.edge_weight.push_back(e < P.edge_weight.size() ? P.edge_weight[e] : 1.0); // (the certifier has no weights)
   }
   // the region's vertices in their charts: variables for the owners, then the seam copies
   xq.clear();
