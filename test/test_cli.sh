@@ -96,6 +96,49 @@ case "$case_name" in
     grep -q '"frame": {"a": \[' "$tmp/t.json" || fail "report: no frame"
     [ "$(grep -c '^vt ' "$tmp/t.obj")" -gt 0 ] || fail "no coordinates written"
     echo ok ;;
+  charts)
+    # a capsule of length 80 with a landmark at its far tip: the tube converges onto the tip
+    # cone's image, below what double resolves in the tile (e^-40); embed writes that part in a
+    # chart centred at the cone's tile corner ('# hot chart' and '# hot vtc' comment lines)
+    d="$(dirname "${BASH_SOURCE[0]}")"
+    awk -v L=80 -v S=24 -f "$d/capsule.awk" > "$tmp/c.off" 2> "$tmp/c.cones0"
+    nv=$(sed -n 2p "$tmp/c.off" | cut -d' ' -f1)
+    echo "$(cat "$tmp/c.cones0") $((nv - 1))" > "$tmp/c.cones"
+    awk -v R=40 -f "$d/bend.awk" "$tmp/c.off" > "$tmp/b.off"
+    "$prog" embed --mesh "$tmp/c.off" --cones "$tmp/c.cones" --out "$tmp/e.obj" --report "$tmp/e.json" > "$tmp/stdout" \
+      || fail "embed failed"
+    grep -q '"bijective": true' "$tmp/e.json" || fail "report verdict"
+    grep -q '"charted_faces": [1-9]' "$tmp/e.json" || fail "report: no charted faces"
+    grep -q 'faces in charts around cone images' "$tmp/stdout" || fail "stdout does not say charts were used"
+    [ "$(grep -c '^# hot chart ' "$tmp/e.obj")" -ge 1 ] || fail "no chart table"
+    [ "$(grep -c '^# hot vtc ' "$tmp/e.obj")" -gt 1000 ] || fail "too few chart points"
+    # the format: a vt in a chart is the chart's inverse applied to its chart point, rounded
+    # (z = (conj(a) w - b) / (a - conj(b) w)), and the deepest chart points are far below what
+    # the vt lines resolve
+    awk '/^vt / { n++; x[n] = $2; y[n] = $3 }
+         /^# hot chart / { ar[$4] = $5; ai[$4] = $6; br[$4] = $7; bi[$4] = $8 }
+         /^# hot vtc / { k = $4; c = $5; u = $6; v = $7; m++
+           nr = ar[c] * u + ai[c] * v - br[c]; ni = ar[c] * v - ai[c] * u - bi[c]
+           dr = ar[c] - (br[c] * u + bi[c] * v); di = ai[c] - (br[c] * v - bi[c] * u)
+           q = dr * dr + di * di; zr = (nr * dr + ni * di) / q; zi = (ni * dr - nr * di) / q
+           e = sqrt((zr - x[k])^2 + (zi - y[k])^2); if(e > worst) worst = e
+           r = sqrt(u * u + v * v); if(m == 1 || r < deepest) deepest = r }
+         END { if(m == 0 || worst > 1e-12 || deepest > 1e-17) { print "chart points: " m ", worst " worst ", deepest " deepest; exit 1 } }' \
+      "$tmp/e.obj" || fail "chart points do not match their vt lines"
+    # maps both ways onto the bent copy (vertex i <-> vertex i) within 1% of the diagonal
+    "$prog" map --source "$tmp/c.off" --source-cones "$tmp/c.cones" --target "$tmp/b.off" --target-cones "$tmp/c.cones" \
+      --out "$tmp/ab.txt" > /dev/null || fail "map failed"
+    "$prog" map --source "$tmp/b.off" --source-cones "$tmp/c.cones" --target "$tmp/c.off" --target-cones "$tmp/c.cones" \
+      --out "$tmp/ba.txt" > /dev/null || fail "map back failed"
+    awk -f "$d/map_error.awk" "$tmp/ab.txt" "$tmp/b.off" "$tmp/b.off" | awk '{ if(!($4 == 0 && $6 < 0.01)) exit 1 }' \
+      || fail "map error: $(awk -f "$d/map_error.awk" "$tmp/ab.txt" "$tmp/b.off" "$tmp/b.off")"
+    awk -f "$d/round_trip.awk" "$tmp/ab.txt" "$tmp/ba.txt" "$tmp/c.off" "$tmp/b.off" | awk '{ if(!($4 < 0.01)) exit 1 }' \
+      || fail "round trip: $(awk -f "$d/round_trip.awk" "$tmp/ab.txt" "$tmp/ba.txt" "$tmp/c.off" "$tmp/b.off")"
+    # the collection writes the charts too
+    printf '%s %s\n%s %s\n' "$tmp/c.off" "$tmp/c.cones" "$tmp/b.off" "$tmp/c.cones" > "$tmp/list.txt"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/coll" > /dev/null 2>&1 || fail "collection failed"
+    [ "$(grep -c '^# hot vtc ' "$tmp/coll/1_b.obj")" -gt 1000 ] || fail "collection: no chart points"
+    echo ok ;;
   embed_errors)
     echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/bear.cones"
     echo "1 2 3 4" > "$tmp/four.cones"
