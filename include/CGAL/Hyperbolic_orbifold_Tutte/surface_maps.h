@@ -141,9 +141,16 @@ isometry (a chart centred at the same tile corner) at its own scale, where `B` h
 `Embedding_locator::locate(const Point_2&, const Isometry&)`). `locB` is built with `B`'s
 charts when `B` has some.
 
+\tparam TriangleMeshA a model of `FaceGraph`
+\tparam HalfedgeUVMapA a model of `ReadablePropertyMap` from the halfedges of `A` to a point type with `x()` and `y()`
 \tparam HalfedgeChartMapA a model of `ReadablePropertyMap` from the halfedges of `A` to `Chart_point`
+\tparam Locator an `Embedding_locator` of `B`
+\param A the mesh whose vertices are mapped
+\param uvA the embedding of `A` (its tile points)
 \param chart_mapA the chart points of `A`'s corners
 \param chartsA the charts of `A` (`Embedding_statistics::charts`)
+\param locB the locator of the embedding of `B`
+\return one `Locator::Location` per vertex of `A`
 */
 template <class TriangleMeshA, class HalfedgeUVMapA, class HalfedgeChartMapA, class Locator>
 std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, HalfedgeUVMapA uvA, HalfedgeChartMapA chart_mapA,
