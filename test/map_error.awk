@@ -1,22 +1,9 @@
 # Error of a map against the identity correspondence (source vertex i <-> truth vertex i):
-#   awk -f map_error.awk MAP.txt TARGET.off TRUTH.off
+#   awk -f off_reader.awk -f map_error.awk MAP.txt TARGET.off TRUTH.off
 # MAP.txt: one line 'face b0 b1 b2' per source vertex ('-1 ...': no image, counted apart);
 # TARGET.off: the mesh whose faces MAP.txt refers to; TRUTH.off: the mesh whose vertex i is the
 # true image of source vertex i. Prints "mapped N unmapped U max E mean M" with E and M
 # relative to the bounding box diagonal of TRUTH.off.
-function read_off(file, P, F,    line, stage, k, m, t, nv) {
-  stage = 0; k = 0; m = 0
-  while((getline line < file) > 0) {
-    if(line ~ /^[ \t]*#/ || line ~ /^[ \t]*$/) continue
-    split(line, t, " ")
-    if(stage == 0) { stage = 1; if(t[1] == "OFF" && length(t) == 1) continue; sub(/^OFF[ \t]*/, "", line); split(line, t, " ") }
-    if(stage == 1) { nv = t[1]; stage = 2; continue }
-    if(stage == 2) { P[k, 0] = t[1]; P[k, 1] = t[2]; P[k, 2] = t[3]; k++; if(k == nv) stage = 3; continue }
-    F[m, 0] = t[2]; F[m, 1] = t[3]; F[m, 2] = t[4]; m++
-  }
-  close(file)
-  return k
-}
 BEGIN {
   map = ARGV[1]; target = ARGV[2]; truth = ARGV[3]; ARGC = 1
   read_off(target, TP, TF)

@@ -1,22 +1,9 @@
 # Round trip of two maps between meshes A and B against the identity on A:
-#   awk -f round_trip.awk A_to_B.map.txt B_to_A.map.txt A.off B.off
+#   awk -f off_reader.awk -f round_trip.awk A_to_B.map.txt B_to_A.map.txt A.off B.off
 # A_to_B: one line 'face b0 b1 b2' per vertex of A, faces of B; B_to_A likewise per vertex of B.
 # Each vertex v of A goes to the point sum_j b_j B[c_j] of B; that point comes back as the same
 # combination of the images on A of B's corners c_j; prints "round trip max E mean M" relative
 # to A's bounding box diagonal (a map and its inverse: 0 up to interpolation).
-function read_off(file, P, F,    line, stage, k, m, t, nv) {
-  stage = 0; k = 0; m = 0
-  while((getline line < file) > 0) {
-    if(line ~ /^[ \t]*#/ || line ~ /^[ \t]*$/) continue
-    split(line, t, " ")
-    if(stage == 0) { stage = 1; if(t[1] == "OFF" && length(t) == 1) continue; sub(/^OFF[ \t]*/, "", line); split(line, t, " ") }
-    if(stage == 1) { nv = t[1]; stage = 2; continue }
-    if(stage == 2) { P[k, 0] = t[1]; P[k, 1] = t[2]; P[k, 2] = t[3]; k++; if(k == nv) stage = 3; continue }
-    F[m, 0] = t[2]; F[m, 1] = t[3]; F[m, 2] = t[4]; m++
-  }
-  close(file)
-  return k
-}
 function read_map(file, M,    line, t, i) {
   i = 0
   while((getline line < file) > 0) { split(line, t, " "); M[i, 0] = t[1]; M[i, 1] = t[2]; M[i, 2] = t[3]; M[i, 3] = t[4]; i++ }

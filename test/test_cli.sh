@@ -130,10 +130,10 @@ case "$case_name" in
       --out "$tmp/ab.txt" > /dev/null || fail "map failed"
     "$prog" map --source "$tmp/b.off" --source-cones "$tmp/c.cones" --target "$tmp/c.off" --target-cones "$tmp/c.cones" \
       --out "$tmp/ba.txt" > /dev/null || fail "map back failed"
-    awk -f "$d/map_error.awk" "$tmp/ab.txt" "$tmp/b.off" "$tmp/b.off" | awk '{ if(!($4 == 0 && $6 < 0.01)) exit 1 }' \
-      || fail "map error: $(awk -f "$d/map_error.awk" "$tmp/ab.txt" "$tmp/b.off" "$tmp/b.off")"
-    awk -f "$d/round_trip.awk" "$tmp/ab.txt" "$tmp/ba.txt" "$tmp/c.off" "$tmp/b.off" | awk '{ if(!($4 < 0.01)) exit 1 }' \
-      || fail "round trip: $(awk -f "$d/round_trip.awk" "$tmp/ab.txt" "$tmp/ba.txt" "$tmp/c.off" "$tmp/b.off")"
+    awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/ab.txt" "$tmp/b.off" "$tmp/b.off" | awk '{ if(!($4 == 0 && $6 < 0.01)) exit 1 }' \
+      || fail "map error: $(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/ab.txt" "$tmp/b.off" "$tmp/b.off")"
+    awk -f "$d/off_reader.awk" -f "$d/round_trip.awk" "$tmp/ab.txt" "$tmp/ba.txt" "$tmp/c.off" "$tmp/b.off" | awk '{ if(!($4 < 0.01)) exit 1 }' \
+      || fail "round trip: $(awk -f "$d/off_reader.awk" -f "$d/round_trip.awk" "$tmp/ab.txt" "$tmp/ba.txt" "$tmp/c.off" "$tmp/b.off")"
     # the collection writes the charts too
     printf '%s %s\n%s %s\n' "$tmp/c.off" "$tmp/c.cones" "$tmp/b.off" "$tmp/c.cones" > "$tmp/list.txt"
     "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/coll" > /dev/null 2>&1 || fail "collection failed"

@@ -97,7 +97,7 @@ case "$case_name" in
     isolated=$(awk -v nv="$nv" 'NR > 2 + nv && NF >= 4 { for(i = 2; i <= 4; ++i) used[$i] = 1 } END { for(v = 0; v < nv; ++v) if(!(v in used)) n++; print n }' "$tmp/holes.off")
     [ "$(head -n "$nv" "$tmp/m.txt" | grep -c '^-1 ')" -eq "$isolated" ] || fail "the $isolated vertices on no face must have no image"
     cmp -s <(off_counts "$tmp/t.off") <(off_counts "$M/bear.off") || fail "bear needs no repair: the prepared target is bear"
-    read -r mapped unmapped max mean <<<"$(awk -f "$here/map_error.awk" "$tmp/m.txt" "$tmp/t.off" "$M/bear.off" | awk '{print $2, $4, $6, $8}')"
+    read -r mapped unmapped max mean <<<"$(awk -f "$here/off_reader.awk" -f "$here/map_error.awk" "$tmp/m.txt" "$tmp/t.off" "$M/bear.off" | awk '{print $2, $4, $6, $8}')"
     echo "holes -> bear: $mapped mapped, $unmapped unmapped, error max $max mean $mean (diagonals)"
     [ "$unmapped" -eq "$isolated" ] || fail "unmapped"
     awk -v x="$max" 'BEGIN { exit !(x < 0.02) }' || fail "error against the identity: max $max of the diagonal"
@@ -110,7 +110,7 @@ case "$case_name" in
     [ "$(grep -m1 '^element vertex' "$tmp/c.ply" | awk '{print $3}')" -eq "$tv" ] || fail "the coloured target is addressed as the prepared target"
     [ "$(grep -m1 '^element face' "$tmp/c.ply" | awk '{print $3}')" -eq "$tf" ] || fail "the coloured target has the prepared target's faces"
     cmp -s <(awk '/^3 / && NF == 4' "$tmp/c.ply") <(awk -v nv="$tv" 'NR > 2 + nv && NF >= 4' "$tmp/t2.off") || fail "the coloured target's faces are the prepared target's"
-    read -r mapped unmapped max mean <<<"$(awk -f "$here/map_error.awk" "$tmp/m2.txt" "$tmp/t2.off" "$M/bear.off" | awk '{print $2, $4, $6, $8}')"
+    read -r mapped unmapped max mean <<<"$(awk -f "$here/off_reader.awk" -f "$here/map_error.awk" "$tmp/m2.txt" "$tmp/t2.off" "$M/bear.off" | awk '{print $2, $4, $6, $8}')"
     echo "bear -> holes: error max $max mean $mean"
     awk -v m="$mean" 'BEGIN { exit !(m < 0.02) }' || fail "error against the identity: mean $mean"
     echo ok ;;
