@@ -5,6 +5,8 @@
 # OFF mesh on standard output; on standard error, 18 landmarks: every tentacle's base (a
 # vertex of its first ring) and tip, and the two poles.
 #   awk -v L=25 -f octopus.awk > octopus.off 2> octopus.cones
+# With -v FINE=f (an integer, default 1), the same shape with f times as many vertices along
+# every grid line and around every tentacle (f^2 times as many vertices in all).
 # With -v TWIRL=b, every point is turned about the z axis by b times its distance to the axis
 # (the same triangulation and vertex order: a bent copy, whose vertex i corresponds to vertex i).
 # Used by test_cli.sh (map_octopus) and test_maps.cpp.
@@ -26,7 +28,8 @@ function oriented(a, b, c, cx, cy, cz,    ux, uy, uz, vx, vy, vz, nx, ny, nz) {
 function tri(a, b, c, cx, cy, cz) { if(oriented(a, b, c, cx, cy, cz)) face(a, b, c); else face(a, c, b) }
 BEGIN {
   if(L == "") L = 25
-  pi = atan2(0, -1); NLON = 48; NLAT = 24; A = 4; NV = 0; NF = 0
+  if(FINE == "") FINE = 1
+  pi = atan2(0, -1); NLON = 48 * FINE; NLAT = 24 * FINE; A = 4 * FINE; NV = 0; NF = 0
   # grid points (untwirled copies in QX, QY, QZ for the orientation tests)
   north = NV; QX[NV] = 0; QY[NV] = 0; QZ[NV] = 1; emit(0, 0, 1)
   for(i = 1; i < NLAT; i++) for(j = 0; j < NLON; j++) {
@@ -37,7 +40,7 @@ BEGIN {
   # the blocks: rows i0 (cells i0..i0+A-1), columns j0
   nt = 0
   for(r = 0; r < 2; r++) for(q = 0; q < 4; q++) {
-    I0[nt] = (r == 0) ? 6 : 14; J0[nt] = 12 * q + 6 * r; LEN[nt] = L * (0.5 + 0.5 * ((3 * nt) % 8) / 7); nt++
+    I0[nt] = FINE * ((r == 0) ? 6 : 14); J0[nt] = FINE * (12 * q + 6 * r); LEN[nt] = L * (0.5 + 0.5 * ((3 * nt) % 8) / 7); nt++
   }
   for(t = 0; t < nt; t++) for(i = I0[t]; i < I0[t] + A; i++) for(j = J0[t]; j < J0[t] + A; j++) HOLE[i, (j + NLON) % NLON] = 1
   # the sphere's faces: polar fans and grid cells, minus the blocks

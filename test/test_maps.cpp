@@ -1531,9 +1531,14 @@ TEST_CASE(heavy_charts_capsule_300)
 }
 
 // An octopus-like shape (test/octopus.awk: eight tentacles of lengths 12.5 to 25 and radius
-// about 0.3, 18 landmarks at their bases and tips and the poles) and a copy twirled about the
-// z axis (same triangulation): both embed with charts at the tips, every vertex is located
-// both ways, the landmarks go onto the landmarks, and the round trip comes back close.
+// about 0.3, 18 landmarks at their bases and tips and the poles; FINE=2: 32 vertices around a
+// tentacle, 93K in all) and a copy twirled about the z axis (same triangulation): both embed
+// with charts at the tips, every vertex is located both ways, the landmarks go onto the
+// landmarks, and the round trip (the map and its inverse, each piecewise linear) comes back
+// within the issue's 1% of the diagonal. (Near a tip the two harmonic maps are affine in the
+// chart with different eccentricities, up to 6:1 in the twirled copy: a face there spans a
+// wide angle around the cone, and interpolating across it costs accuracy that a coarser
+// tentacle does not have: with 16 vertices around, FINE=1, the round trip reaches 1.2%.)
 TEST_CASE(heavy_charts_octopus_round_trip)
 {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hot_test_octopus_" + std::to_string(::getpid()));
@@ -1541,8 +1546,8 @@ TEST_CASE(heavy_charts_octopus_round_trip)
   const std::string src = HOT_SOURCE_DIR "/test/";
   const std::string a_off = (dir / "a.off").string(), b_off = (dir / "b.off").string(), cones = (dir / "a.cones").string();
   Mesh a, b;
-  const bool ok = run("awk -v L=25 -f '" + src + "octopus.awk' > '" + a_off + "' 2> '" + cones + "'") &&
-                  run("awk -v L=25 -v TWIRL=0.05 -f '" + src + "octopus.awk' > '" + b_off + "' 2> /dev/null") &&
+  const bool ok = run("awk -v FINE=2 -v L=25 -f '" + src + "octopus.awk' > '" + a_off + "' 2> '" + cones + "'") &&
+                  run("awk -v FINE=2 -v L=25 -v TWIRL=0.05 -f '" + src + "octopus.awk' > '" + b_off + "' 2> /dev/null") &&
                   CGAL::IO::read_polygon_mesh(a_off, a) && CGAL::IO::read_polygon_mesh(b_off, b);
   std::vector<vertex_descriptor> given;
   std::ifstream in(cones);
@@ -1569,6 +1574,5 @@ TEST_CASE(heavy_charts_octopus_round_trip)
   std::cout << "  octopus (" << num_vertices(a) << " vertices): " << ea.st.charted_faces << " faces in " << ea.st.charts.size()
             << " charts; the twirled copy is not isometric (no identity to compare with): max distance to vertex i "
             << 100 * e.first << "%, round trip max " << 100 * e.second << "% of the diagonal" << std::endl;
-  // measured: round trip max 1.2% (the issue asks for 1%: not met; see the manual's limitations)
-  CHECK_MSG(e.second < 0.02, "round trip " << e.second);
+  CHECK_MSG(e.second < 0.01, "round trip " << e.second); // the issue's bound
 }

@@ -306,9 +306,12 @@ public:
     if(lt_.corner_hit(q, r.element, loc) && face_chart(loc.face_index) < 0)
       return with_face(loc);
     loc = Location();
-    // near a chart's origin: among its faces, in its coordinates
+    // near a chart's origin: among its faces, in its coordinates (a cone's tile corner is its
+    // chart's origin exactly: applying the chart to it would leave rounding noise, far larger
+    // than the faces around the cone there)
     for(std::size_t c = 0; c < ch_.charts.size(); ++c) {
-      const C w = ch_.charts[c].apply(q);
+      const Point_2& corner = lt_.tile.corner(ch_.chart_corner[c]);
+      const C w = (q == C(CGAL::to_double(corner.x()), CGAL::to_double(corner.y()))) ? C(0, 0) : ch_.charts[c].apply(q);
       if(2 * std::atanh((std::min)(std::abs(w), 1 - 1e-16)) <= ch_.reach[c] && locate_in_chart(static_cast<int>(c), w, loc)) {
         loc.element = loc.element * r.element;
         return with_face(loc);
@@ -346,7 +349,13 @@ public:
     const int c = ch_.chart_of(chart);
     if(c >= 0 && locate_in_chart(c, w0, loc))
       return with_face(loc);
-    const C z = chart.inverse().apply(w0);
+    C z = chart.inverse().apply(w0);
+    if(w0 == C(0, 0)) // a cone: its tile corner exactly (this embedding holds the cone there)
+      for(const Point_2& corner : lt_.tile.corners()) {
+        const C k(CGAL::to_double(corner.x()), CGAL::to_double(corner.y()));
+        if(std::abs(k - z) < 1e-12)
+          z = k;
+      }
     return locate(Point_2(z.real(), z.imag()));
   }
 
