@@ -314,6 +314,111 @@ private:
   Traits traits_;
 };
 
+namespace internal {
+
+// The sphere-type tile of the paper's Appendix C from a convex k-gon p (counterclockwise, in
+// Poincare coordinates) with interior angles alpha: the polygon moved so that the geodesic
+// midpoint of p_k and p_1 is the origin (p_1 on the positive real axis, the polygon in the
+// upper half-disk), united with its mirror image q_j = conj(p_j). Corners p_1 .. p_k,
+// q_{k-1} .. q_2; p_j and q_j are copies of cone j-1, with angles 2 alpha at p_1 and p_k and
+// alpha at the others (their two copies together: 2 alpha, the cone angle 2 pi / n when
+// alpha = pi / n). Side p_j p_{j+1} is glued to side q_j q_{j+1} by "reflect in the geodesic
+// p_j p_{j+1}, then conjugate" (orientation-preserving; it moves a point beyond a side closer
+// to the origin, since the origin is inside the tile).
+template <class Traits>
+Error_code double_polygon_into_sphere_tile(const Orbifold_signature& signature, const std::vector<std::complex<double> >& p,
+                                           const std::vector<double>& alpha, Orbifold_tile<Traits>& tile, const Traits& traits)
+{
+  typedef Orbifold_tile<Traits> Tile;
+  typedef typename Tile::Isometry Isometry;
+  typedef typename Isometry::Complex C;
+  typedef typename Tile::Point_2 Point_2;
+  typedef typename Tile::FT FT;
+  const int k = static_cast<int>(p.size());
+  auto to_point = [](const C& z) { return Point_2(FT(z.real()), FT(z.imag())); };
+
+  // Sphere type: move the geodesic midpoint of p_k and p_1 to the origin, p_1 to the positive real axis.
+  const Point_2 mid = traits.construct_hyperbolic_midpoint_2_object()(to_point(p[k - 1]), to_point(p[0]));
+  const Isometry to0 = Isometry::translation_to_origin(C(CGAL::to_double(mid.x()), CGAL::to_double(mid.y())));
+  const Isometry place = Isometry::rotation(-std::arg(to0.apply(p[0]))) * to0;
+  std::vector<C> P(k);
+  for(int j = 0; j < k; ++j)
+    P[j] = place.apply(p[j]);
+  // p_1 and p_k are on the real axis by construction; remove the rounding noise so that
+  // the shared side is exactly the real diameter and q_1 = p_1, q_k = p_k exactly.
+  const double x = 0.5 * (P[0].real() - P[k - 1].real());
+  P[0] = C(x, 0.0);
+  P[k - 1] = C(-x, 0.0);
+
+  std::vector<Point_2> corners;
+  std::vector<int> cones;
+  std::vector<double> angles;
+  for(int j = 0; j < k; ++j) { // p_1 .. p_k
+    corners.push_back(to_point(P[j]));
+    cones.push_back(j);
+    angles.push_back((j == 0 || j == k - 1) ? 2 * alpha[j] : alpha[j]);
+  }
+  for(int j = k - 2; j >= 1; --j) { // q_{k-1} .. q_2
+    corners.push_back(to_point(std::conj(P[j])));
+    cones.push_back(j);
+    angles.push_back(alpha[j]);
+  }
+  const int n = 2 * k - 2;
+  std::vector<int> paired(n);
+  std::vector<Isometry> pairings(n);
+  const Isometry conj = Isometry::complex_conjugation();
+  for(int j = 1; j <= k - 1; ++j) {
+    // side j-1 is p_j p_{j+1}; side 2k-2-j is q_{j+1} q_j.
+    const Isometry m = conj * Isometry::reflection_in_geodesic(P[j - 1], P[j]);
+    paired[j - 1] = 2 * k - 2 - j;
+    paired[2 * k - 2 - j] = j - 1;
+    pairings[j - 1] = m;
+    pairings[2 * k - 2 - j] = m.inverse();
+  }
+  tile = Tile(signature, corners, cones, angles, paired, pairings, traits);
+  return OK;
+}
+
+
+// The convex k-gon with interior angles alpha_j (sum below (k - 2) pi) whose sides touch the
+// circle of hyperbolic radius r about the origin (a tangential polygon; it exists for any such
+// angles, and is the regular one for equal angles). In the right triangle (origin, corner j,
+// touching point) the angle at the origin theta_j satisfies cos(alpha_j / 2) = cosh(r)
+// sin(theta_j), and the corner's distance d_j to the origin cosh(d_j) = cot(alpha_j / 2)
+// cot(theta_j); r is where the angles theta_j, each counted twice, go once around the origin.
+// Corner 1 at angle theta_1 (the side from corner k to corner 1 touches the circle at angle 0).
+inline std::vector<std::complex<double> > tangential_polygon(const std::vector<double>& alpha)
+{
+  const int k = static_cast<int>(alpha.size());
+  auto theta = [&](int j, double cosh_r) { return std::asin((std::min)(1.0, std::cos(alpha[j] / 2) / cosh_r)); };
+  auto turn = [&](double cosh_r) {
+    double t = 0;
+    for(int j = 0; j < k; ++j)
+      t += 2 * theta(j, cosh_r);
+    return t;
+  };
+  // turn() decreases from sum(pi - alpha_j) > 2 pi at r = 0 to 0 as r grows
+  double lo = 1.0, hi = 2.0;
+  while(turn(hi) > 2 * CGAL_PI)
+    hi *= 2;
+  for(int it = 0; it < 200 && hi - lo > 1e-16 * hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (turn(mid) > 2 * CGAL_PI ? lo : hi) = mid;
+  }
+  const double cosh_r = 0.5 * (lo + hi);
+  std::vector<std::complex<double> > p(k);
+  double phi = 0;
+  for(int j = 0; j < k; ++j) {
+    const double t = theta(j, cosh_r);
+    phi += (j == 0) ? t : theta(j - 1, cosh_r) + t;
+    const double cosh_d = 1.0 / (std::tan(alpha[j] / 2) * std::tan(t));
+    p[j] = std::polar(std::sqrt((cosh_d - 1.0) / (cosh_d + 1.0)), phi); // tanh(d / 2)
+  }
+  return p;
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
@@ -380,46 +485,7 @@ Error_code make_orbifold_tile(Orbifold_type type, int k, Orbifold_tile<Traits>& 
     return OK;
   }
 
-  // Sphere type: move the geodesic midpoint of p_k and p_1 to the origin, p_1 to the positive real axis.
-  const Point_2 mid = traits.construct_hyperbolic_midpoint_2_object()(to_point(p[k - 1]), to_point(p[0]));
-  const Isometry to0 = Isometry::translation_to_origin(C(CGAL::to_double(mid.x()), CGAL::to_double(mid.y())));
-  const Isometry place = Isometry::rotation(-std::arg(to0.apply(p[0]))) * to0;
-  std::vector<C> P(k);
-  for(int j = 0; j < k; ++j)
-    P[j] = place.apply(p[j]);
-  // p_1 and p_k are on the real axis by construction; remove the rounding noise so that
-  // the shared side is exactly the real diameter and q_1 = p_1, q_k = p_k exactly.
-  const double x = 0.5 * (P[0].real() - P[k - 1].real());
-  P[0] = C(x, 0.0);
-  P[k - 1] = C(-x, 0.0);
-
-  std::vector<Point_2> corners;
-  std::vector<int> cones;
-  std::vector<double> angles;
-  for(int j = 0; j < k; ++j) { // p_1 .. p_k
-    corners.push_back(to_point(P[j]));
-    cones.push_back(j);
-    angles.push_back((j == 0 || j == k - 1) ? CGAL_PI : CGAL_PI / 2);
-  }
-  for(int j = k - 2; j >= 1; --j) { // q_{k-1} .. q_2
-    corners.push_back(to_point(std::conj(P[j])));
-    cones.push_back(j);
-    angles.push_back(CGAL_PI / 2);
-  }
-  const int n = 2 * k - 2;
-  std::vector<int> paired(n);
-  std::vector<Isometry> pairings(n);
-  const Isometry conj = Isometry::complex_conjugation();
-  for(int j = 1; j <= k - 1; ++j) {
-    // side j-1 is p_j p_{j+1}; side 2k-2-j is q_{j+1} q_j.
-    const Isometry m = conj * Isometry::reflection_in_geodesic(P[j - 1], P[j]);
-    paired[j - 1] = 2 * k - 2 - j;
-    paired[2 * k - 2 - j] = j - 1;
-    pairings[j - 1] = m;
-    pairings[2 * k - 2 - j] = m.inverse();
-  }
-  tile = Tile(signature, corners, cones, angles, paired, pairings, traits);
-  return OK;
+  return internal::double_polygon_into_sphere_tile(signature, p, std::vector<double>(k, CGAL_PI / 2), tile, traits);
 }
 
 /// \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
@@ -434,10 +500,23 @@ template <class Traits>
 Error_code make_orbifold_tile(const Orbifold_signature& signature, Orbifold_tile<Traits>& tile,
                               const Traits& traits = Traits())
 {
-  for(int i = 0; i < signature.number_of_cones(); ++i)
-    if(signature.order(i) != 2)
-      return ERROR_WRONG_PARAMETER; // not built yet: only cone angle pi (sphere) and pi/2 corners (disk)
-  return make_orbifold_tile(signature.type(), signature.number_of_cones(), tile, traits);
+  const int k = signature.number_of_cones();
+  bool all_two = true;
+  for(int i = 0; i < k; ++i) {
+    if(signature.order(i) < 2)
+      return ERROR_WRONG_PARAMETER;
+    all_two = all_two && signature.order(i) == 2;
+  }
+  if(all_two)
+    return make_orbifold_tile(signature.type(), k, tile, traits); // (the paper's regular tiles, as they always were)
+  if(signature.type() != Sphere_type)
+    return ERROR_WRONG_PARAMETER; // not built yet: disk corners other than right angles
+  if(k < 3 || !signature.is_hyperbolic())
+    return ERROR_NOT_HYPERBOLIC;
+  std::vector<double> alpha(k);
+  for(int i = 0; i < k; ++i)
+    alpha[i] = CGAL_PI / signature.order(i);
+  return internal::double_polygon_into_sphere_tile(signature, internal::tangential_polygon(alpha), alpha, tile, traits);
 }
 
 } // namespace Hyperbolic_orbifold_Tutte
