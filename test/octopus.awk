@@ -17,7 +17,7 @@ function emit(x, y, z,    r, t, c, s) {
   PZ[NV] = z
   return NV++
 }
-function face(a, b, c) { FA[NF] = a; FB[NF] = b; FC[NF] = c; NF++ }
+function face(a, b, c) { FA[NFACE] = a; FB[NFACE] = b; FC[NFACE] = c; NFACE++ }
 # a, b, c counterclockwise seen from outside when (b - a) x (c - a) . (a - centre) > 0
 function oriented(a, b, c, cx, cy, cz,    ux, uy, uz, vx, vy, vz, nx, ny, nz) {
   ux = QX[b] - QX[a]; uy = QY[b] - QY[a]; uz = QZ[b] - QZ[a]
@@ -29,7 +29,7 @@ function tri(a, b, c, cx, cy, cz) { if(oriented(a, b, c, cx, cy, cz)) face(a, b,
 BEGIN {
   if(L == "") L = 25
   if(FINE == "") FINE = 1
-  pi = atan2(0, -1); NLON = 48 * FINE; NLAT = 24 * FINE; A = 4 * FINE; NV = 0; NF = 0
+  pi = atan2(0, -1); NLON = 48 * FINE; NLAT = 24 * FINE; A = 4 * FINE; NV = 0; NFACE = 0
   # grid points (untwirled copies in QX, QY, QZ for the orientation tests)
   north = NV; QX[NV] = 0; QY[NV] = 0; QZ[NV] = 1; emit(0, 0, 1)
   for(i = 1; i < NLAT; i++) for(j = 0; j < NLON; j++) {
@@ -85,11 +85,11 @@ BEGIN {
     for(k = 0; k < n; k++) tri(tip[t], PREV[k], PREV[(k + 1) % n], ax * (1 + LEN[t]), ay * (1 + LEN[t]), az * (1 + LEN[t]))
   }
   # the grid vertices inside the blocks are on no face: numbered out
-  for(f = 0; f < NF; f++) { USED[FA[f]] = 1; USED[FB[f]] = 1; USED[FC[f]] = 1 }
+  for(f = 0; f < NFACE; f++) { USED[FA[f]] = 1; USED[FB[f]] = 1; USED[FC[f]] = 1 }
   m = 0; for(v = 0; v < NV; v++) if(USED[v]) NEW[v] = m++
-  print "OFF"; print m, NF, 0
+  print "OFF"; print m, NFACE, 0
   for(v = 0; v < NV; v++) if(USED[v]) printf "%.17g %.17g %.17g\n", PX[v], PY[v], PZ[v]
-  for(f = 0; f < NF; f++) print 3, NEW[FA[f]], NEW[FB[f]], NEW[FC[f]]
+  for(f = 0; f < NFACE; f++) print 3, NEW[FA[f]], NEW[FB[f]], NEW[FC[f]]
   line = NEW[north] " " NEW[south]; for(t = 0; t < nt; t++) line = line " " NEW[base[t]] " " NEW[tip[t]]
   print line > "/dev/stderr"
 }
