@@ -262,6 +262,75 @@ TEST_CASE(sphere_cow_nearly_flat_triangles)
 }
 
 TEST_CASE(sphere_bear) { check_sphere_mesh("bear", {7}, HOT::Cotangent); }
+
+// Cones of other orders p (angle 2 pi / p): 3, 4 and 5 landmarks, certified; measured on the
+// result, the angles of the faces around each cone add up to 2 pi / p, the areas to
+// 2 pi (sum(1 - 1/p) - 2) (Gauss-Bonnet), and every other vertex is the centre of mass of its
+// neighbours. Signatures that are not hyperbolic, or orders that do not match, are refused.
+static void check_cone_orders(const std::string& name, const std::vector<int>& orders)
+{
+  Mesh m;
+  CHECK_MSG(read_demo_mesh(name, m), "cannot read " << name);
+  if(num_vertices(m) == 0) return;
+  const int k = static_cast<int>(orders.size());
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, k, 11);
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+  HOT::Embedding_statistics st;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    m, lm, uv, HOT::parameters::cone_orders(orders, HOT::parameters::embedding_statistics(&st, HOT::parameters::landmark_order(HOT::Tsp_order))));
+  std::string sig;
+  for(int p : orders) sig += (sig.empty() ? "" : ",") + std::to_string(p);
+  CHECK_MSG(ec == HOT::OK && st.certificate.is_bijective(), name << " (" << sig << "): " << st.message);
+  if(ec != HOT::OK) return;
+  double area = -4 * CGAL_PI;
+  for(int p : orders) area += 2 * CGAL_PI * (1 - 1.0 / p);
+  CHECK_NEAR(st.certificate.total_area, area, 1e-6);
+  // the cone orders in the order of the cut: the given ones permuted as the landmarks
+  CHECK(st.cone_orders.size() == orders.size());
+  for(std::size_t i = 0; i < st.landmark_order.size() && i < st.cone_orders.size(); ++i)
+    CHECK(st.cone_orders[i] == orders[st.landmark_order[i]]);
+  const HOT::Poincare_disk_traits_2<K> tr;
+  auto angle = tr.compute_hyperbolic_angle_2_object();
+  for(int i = 0; i < k; ++i) {
+    double total = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(lm[i], m), m))
+      if(!is_border(h, m))
+        total += angle(get(uv, h), get(uv, prev(h, m)), get(uv, next(h, m)));
+    CHECK_MSG(std::abs(total - 2 * CGAL_PI / orders[i]) < 1e-7, name << " (" << sig << ") cone " << i << ": angle " << total << ", 2 pi / " << orders[i] << " = " << 2 * CGAL_PI / orders[i]);
+  }
+  const double defect = worst_centre_of_mass_defect(m, uv, HOT::Cotangent, lm);
+  CHECK_MSG(defect < 1, name << " (" << sig << ") centre-of-mass defect " << defect);
+  std::cout << "  " << name << " (" << sig << "): " << st.iterations << " iterations, area " << st.certificate.total_area << " = " << area << std::endl;
+}
+
+TEST_CASE(sphere_cones_of_any_order)
+{
+  for(const std::vector<int>& o : {std::vector<int>{2, 3, 7}, {3, 3, 4}, {2, 4, 5}})
+    check_cone_orders("bear", o);
+  check_cone_orders("hand", {2, 2, 2, 3});
+  check_cone_orders("homer", {2, 2, 3, 3, 4});
+  // refusals, each for its reason
+  Mesh m;
+  CHECK(read_demo_mesh("bear", m));
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 3, 11);
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(2, 2)).first;
+  auto code = [&](const std::vector<int>& orders, std::string& msg) {
+    HOT::Embedding_statistics st;
+    const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, uv, HOT::parameters::cone_orders(orders, HOT::parameters::embedding_statistics(&st)));
+    msg = st.message;
+    return ec;
+  };
+  std::string msg;
+  CHECK(code({2, 3, 6}, msg) == HOT::ERROR_NOT_HYPERBOLIC && msg.find("not hyperbolic") != std::string::npos); // Euclidean
+  CHECK(code({2, 3, 5}, msg) == HOT::ERROR_NOT_HYPERBOLIC);                                                   // spherical
+  CHECK(code({2, 3}, msg) == HOT::ERROR_WRONG_PARAMETER && msg.find("one per landmark") != std::string::npos);
+  CHECK(code({2, 3, 1}, msg) == HOT::ERROR_WRONG_PARAMETER);
+  CHECK(code({}, msg) == HOT::ERROR_TOO_FEW_LANDMARKS); // 3 cones of angle pi: at least 5 are needed
+  // every corner untouched by the refusals
+  bool untouched = true;
+  for(halfedge_descriptor h : halfedges(m)) untouched = untouched && get(uv, h) == Point_2(2, 2);
+  CHECK(untouched);
+}
 // larger meshes and up to 50 landmarks (the paper's Figure 6): label "heavy"
 TEST_CASE(heavy_sphere_armadillo) { check_sphere_mesh("armadillo", {7, 23, 50}, HOT::Cotangent); }
 TEST_CASE(heavy_sphere_bunny00) { check_sphere_mesh("bunny00", {7, 50}, HOT::Cotangent); }
@@ -765,7 +834,7 @@ struct Sphere_problem
   std::vector<K::Point_3> pts;
 };
 
-static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& S)
+static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& S, const std::vector<int>& orders = {})
 {
   if(!read_demo_mesh(name, S.m)) return false;
   Mesh& m = S.m;
@@ -779,7 +848,10 @@ static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& 
   if(!cut.ok || !HOT::add_cut_to_seam_mesh(sm, m, cut)) return false;
   boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
   for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
-  HOT::make_orbifold_tile(HOT::Sphere_type, k, S.tile);
+  if(orders.empty())
+    HOT::make_orbifold_tile(HOT::Sphere_type, k, S.tile);
+  else if(HOT::make_orbifold_tile(HOT::Orbifold_signature(HOT::Sphere_type, orders), S.tile) != HOT::OK)
+    return false;
   std::vector<vertex_descriptor> bv;
   std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
   std::string msg;
@@ -800,6 +872,16 @@ TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
     for(int v = 0; v < S.P.n; ++v) twins += (S.P.kind[v] == HOT::internal::Transformed);
     CHECK(twins > 10);
     check_energy_derivatives(S.P, S.x, "sphere");
+  }
+  // sphere type with cones of orders 2, 3, 7 (the seam twins are rotations by 2 pi / 3 and
+  // 2 pi / 7 about the middle cone, and the tile is no longer the regular one)
+  {
+    Sphere_problem S;
+    CHECK(make_sphere_problem("hand", 3, S, {2, 3, 7}));
+    int twins = 0;
+    for(int v = 0; v < S.P.n; ++v) twins += (S.P.kind[v] == HOT::internal::Transformed);
+    CHECK(twins > 10);
+    check_energy_derivatives(S.P, S.x, "sphere (2,3,7)");
   }
   // disk type: mushroom (boundary parameters)
   {

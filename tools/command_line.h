@@ -193,6 +193,37 @@ inline std::string parse_order(const Options& opt, const std::string& fallback)
   return s;
 }
 
+// --cone-orders p1,p2,...: one integer >= 2 per landmark (cone angle 2 pi / p); absent: empty
+// (2 for every cone). Whether the count matches the landmarks and the orbifold is hyperbolic
+// is the library's to say.
+inline std::vector<int> parse_cone_orders(const Options& opt)
+{
+  std::vector<int> orders;
+  if(!opt.has("cone-orders"))
+    return orders;
+  const std::string s = opt.get("cone-orders");
+  std::size_t pos = 0;
+  while(pos <= s.size()) {
+    const std::size_t comma = s.find(',', pos);
+    const std::string f = s.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    char* end = nullptr;
+    const long p = f.empty() ? 0 : std::strtol(f.c_str(), &end, 10);
+    if(f.empty() || end == nullptr || *end != '\0' || p < 2 || p > 1000000)
+      throw Usage_error{"--cone-orders must be integers of at least 2 separated by commas (one per landmark, e.g. 2,3,7), got '" + s + "'"};
+    orders.push_back(static_cast<int>(p));
+    if(comma == std::string::npos)
+      break;
+    pos = comma + 1;
+  }
+  return orders;
+}
+
+// the fewest landmarks a landmark file may hold: 5, or 3 with cone orders
+inline std::size_t minimum_landmarks(const std::vector<int>& orders)
+{
+  return orders.empty() ? HOT::minimum_number_of_landmarks : 3;
+}
+
 } // namespace hot_cli
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COMMAND_LINE_H

@@ -56,20 +56,24 @@ using namespace hot_cli;
 const char* const usage_text =
   "usage:\n"
   "  hyperbolic_orbifold_tutte tile --orbifold sphere|disk --cones K --svg FILE [--depth D]\n"
+  "  hyperbolic_orbifold_tutte tile --orbifold sphere --cone-orders P1,P2,... --svg FILE [--depth D]\n"
   "      draws the basic tile of the orbifold with K cones and its images under the group\n"
   "      (products of at most D side pairings, default 3) in the Poincare disk\n"
   "  hyperbolic_orbifold_tutte embed --mesh IN --cones CONES [--orbifold sphere|disk]\n"
   "      [--weights cotan|mvc|uniform] [--order given|tsp] --out OUT.obj [--svg PICTURE.svg]\n"
-  "      [--report REPORT.json] [--recentre] [REPAIR]\n"
+  "      [--report REPORT.json] [--recentre] [--cone-orders P1,P2,...] [REPAIR]\n"
   "      embeds the mesh into the hyperbolic orbifold whose cones are the landmarks CONES\n"
   "      (0-based vertex indices); OUT.obj holds the input vertices (v), one Poincare point\n"
   "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
   "      bijective or the program fails. --order defaults to tsp for sphere type.\n"
+  "      --cone-orders: the order p of every landmark's cone (angle 2 pi/p), in the order of\n"
+  "      CONES (default 2 for all: angle pi); sphere type; the orbifold must be hyperbolic,\n"
+  "      sum(1 - 1/p) > 2: 3 cones (2,3,7), (3,3,4), (2,4,5), 4 cones (2,2,2,3), 5 of any orders\n"
   "      --recentre: a part too squeezed for double in the tile (a long protrusion without\n"
   "      landmarks) may be solved in a moved frame; the report then gives the frame.\n"
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
   "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off]\n"
-  "      [--report REPORT.json] [REPAIR]\n"
+  "      [--report REPORT.json] [--cone-orders P1,P2,...] [REPAIR]\n"
   "      maps every vertex of A onto B through the common orbifold (landmark i of CA to\n"
   "      landmark i of CB); MAP.txt: one line 'face b0 b1 b2' per vertex of A (with --repair:\n"
   "      per vertex of A's file, then per vertex the repair added; '-1 0 0 0' for a vertex on\n"
@@ -78,7 +82,7 @@ const char* const usage_text =
   "      both embeddings below their disagreement) get a one-line warning on stderr;\n"
   "      REPORT.json lists them (\"unreliable_vertices\", numbered as MAP.txt's lines), with\n"
   "      the squeezed regions, the sizes and the times\n"
-  "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [REPAIR]\n"
+  "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [REPAIR]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
   "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt)\n"
   "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES [REPAIR]\n"
@@ -112,30 +116,42 @@ const char* const usage_text =
 
 int run_tile(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"orbifold", "cones", "svg", "depth"});
+  const Options opt(argc, argv, 2, {"orbifold", "cones", "svg", "depth", "cone-orders"});
   const HOT::Orbifold_type type = parse_orbifold(opt.get("orbifold"));
-  const long k = opt.get_int("cones", -1000000, 1000000);
+  const std::vector<int> orders = parse_cone_orders(opt);
+  const long k = orders.empty() || opt.has("cones") ? opt.get_int("cones", -1000000, 1000000) : static_cast<long>(orders.size());
   const int depth = opt.has("depth") ? static_cast<int>(opt.get_int("depth", 0, 6)) : 3;
   const std::string svg = opt.get("svg");
   if(k > 200)
     throw Usage_error{"--cones must be at most 200 for a picture, got " + std::to_string(k)};
 
   HOT::Orbifold_tile<> tile;
-  const HOT::Error_code ec = HOT::make_orbifold_tile(type, static_cast<int>(k), tile);
-  if(ec != HOT::OK)
-    throw std::runtime_error(std::string(HOT::error_message(ec)) + ": got " + std::to_string(k) + " cones");
+  if(!orders.empty()) {
+    require(HOT::internal::tile_of_cone_orders(type, orders, static_cast<int>(k), tile, HOT::Poincare_disk_traits_2<>()));
+  } else {
+    const HOT::Error_code ec = HOT::make_orbifold_tile(type, static_cast<int>(k), tile);
+    if(ec != HOT::OK)
+      throw std::runtime_error(std::string(HOT::error_message(ec)) + ": got " + std::to_string(k) + " cones");
+  }
 
   const std::string pi = "&#960;";
   const std::string multiple = (k == 5) ? std::string() : std::to_string(k - 4);
   std::ostringstream title;
-  if(type == HOT::Sphere_type)
+  if(!orders.empty()) {
+    std::string list;
+    for(int p : orders)
+      list += (list.empty() ? "" : ",") + std::to_string(p);
+    title.precision(4);
+    title << "sphere-type orbifold with cones of orders (" << list << "), tile with " << tile.number_of_corners() << " corners, area "
+          << tile.area() / CGAL_PI << pi;
+  } else if(type == HOT::Sphere_type)
     title << "sphere-type orbifold, " << k << " cones of angle " << pi << ", tile with " << tile.number_of_corners()
           << " corners, area " << multiple << pi;
   else
     title << "disk-type orbifold, " << k << " corners of angle " << pi << "/2, area " << multiple << pi << "/2";
   write_file_atomically(svg, [&](std::ostream& os) { hot_tools::write_tile_svg(os, tile, depth, title.str()); });
-  std::cout << "wrote " << svg << " (" << (type == HOT::Sphere_type ? "sphere" : "disk") << ", " << k
-            << " cones, depth " << depth << ")" << std::endl;
+  std::cout << "wrote " << svg << " (" << (type == HOT::Sphere_type ? "sphere" : "disk") << ", " << k << " cones"
+            << (orders.empty() ? std::string() : " of the given orders") << ", depth " << depth << ")" << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -161,11 +177,12 @@ struct Input
 HOT::Orbifold_type read_mesh_and_landmarks(const std::string& mesh_path, const std::string& cones_path,
                                            std::optional<HOT::Orbifold_type> required_type,
                                            const hot_tools::Repair_options& repair, Surface_mesh& m,
-                                           std::vector<SM_vertex>& landmarks, Input& in)
+                                           std::vector<SM_vertex>& landmarks, Input& in,
+                                           std::size_t minimum = HOT::minimum_number_of_landmarks)
 {
   HOT::Mesh_info info;
   require(hot_tools::read_input_mesh(mesh_path, required_type, repair, m, in.file, &info));
-  require(hot_tools::read_input_landmarks(cones_path, m, in.file, info.type, repair.snap_landmarks, landmarks, &in.snaps));
+  require(hot_tools::read_input_landmarks(cones_path, m, in.file, info.type, repair.snap_landmarks, landmarks, &in.snaps, minimum));
   return info.type;
 }
 
@@ -247,6 +264,7 @@ struct Embed_job
   std::optional<HOT::Orbifold_type> required_type;
   HOT::Weight_type weights = HOT::Cotangent;
   bool recentre = false;
+  std::vector<int> orders; // --cone-orders, per landmark of the file (empty: 2 for all)
   hot_tools::Repair_options repair;
 };
 
@@ -254,7 +272,7 @@ Embed_job parse_embed_options(int argc, char** argv)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("recentre");
-  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole"}, flags);
+  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole", "cone-orders"}, flags);
   Embed_job job;
   job.request.mesh_path = opt.get("mesh");
   job.cones_path = opt.get("cones");
@@ -275,6 +293,7 @@ Embed_job parse_embed_options(int argc, char** argv)
   if(opt.has("report"))
     job.report_path = opt.get("report");
   job.recentre = opt.has("recentre");
+  job.orders = parse_cone_orders(opt);
   job.repair = parse_repair_options(opt);
   return job;
 }
@@ -287,12 +306,12 @@ HOT::Embedding_statistics embed_mesh(const Embed_job& job, Surface_mesh& m, cons
   const HOT::Landmark_order order = job.request.order == "tsp" ? HOT::Tsp_order : HOT::Given_order;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     m, landmarks, uv,
-    HOT::parameters::chart_map(
+    HOT::parameters::cone_orders(job.orders, HOT::parameters::chart_map(
       charts,
       HOT::parameters::recentring(
         job.recentre,
         HOT::parameters::embedding_statistics(
-          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type)))))));
+          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type))))))));
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
   return st;
@@ -304,7 +323,7 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
 {
   const HOT::Orbifold_type type = job.request.type;
   HOT::Orbifold_tile<> tile;
-  HOT::make_orbifold_tile(type, static_cast<int>(landmarks.size()), tile);
+  HOT::make_orbifold_tile(HOT::Orbifold_signature(type, st.cone_orders), tile);
   if(st.recentred)
     tile = tile.transformed(st.frame); // the tile of the written coordinates
 
@@ -331,7 +350,7 @@ int run_embed(int argc, char** argv)
   std::vector<SM_vertex> landmarks;
   Input in;
   const HOT::Orbifold_type type =
-    read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, job.repair, m, landmarks, in);
+    read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, job.repair, m, landmarks, in, minimum_landmarks(job.orders));
   print_repair(job.request.mesh_path, in);
   job.request.type = type;
   if(job.request.order.empty())
@@ -368,9 +387,10 @@ struct Embedded
   Input in;                                          // the file's addressing (--repair)
 };
 
-void read_and_check(const std::string& mesh_path, const std::string& cones_path, const hot_tools::Repair_options& repair, Embedded& e)
+void read_and_check(const std::string& mesh_path, const std::string& cones_path, const hot_tools::Repair_options& repair, Embedded& e,
+                    std::size_t minimum = HOT::minimum_number_of_landmarks)
 {
-  e.type = read_mesh_and_landmarks(mesh_path, cones_path, std::nullopt, repair, e.mesh, e.landmarks, e.in);
+  e.type = read_mesh_and_landmarks(mesh_path, cones_path, std::nullopt, repair, e.mesh, e.landmarks, e.in, minimum);
   print_repair(mesh_path, e.in);
 }
 
@@ -380,15 +400,22 @@ const hot_tools::Input_mesh* addressing(const Input& in)
   return in.file.repaired ? &in.file : nullptr;
 }
 
-void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::string& name)
+void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::vector<int>& orders, const std::string& name)
 {
   e.ordered.clear();
+  std::vector<int> ordered_orders; // (empty: 2 for all)
   for(std::size_t i : order) e.ordered.push_back(e.landmarks[i]);
+  if(!orders.empty()) {
+    if(orders.size() != e.landmarks.size())
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " +
+                                                std::to_string(e.landmarks.size()) + " landmarks (one per landmark is needed)"};
+    for(std::size_t i : order) ordered_orders.push_back(orders[i]);
+  }
   e.uv = e.mesh.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
   e.charts = e.mesh.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     e.mesh, e.ordered, e.uv,
-    HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats))));
+    HOT::parameters::cone_orders(ordered_orders, HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats)))));
   if(ec != HOT::OK)
     throw Failure{ec, name + ": " + e.stats.message};
 }
@@ -452,23 +479,25 @@ hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A, const 
 int run_map(int argc, char** argv)
 {
   const Options opt(argc, argv, 2,
-                    {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole"},
+                    {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole",
+                     "cone-orders"},
                     repair_flags());
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
+  const std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
   Embedded A, B;
-  read_and_check(opt.get("source"), opt.get("source-cones"), repair, A);
-  read_and_check(opt.get("target"), opt.get("target-cones"), repair, B);
+  read_and_check(opt.get("source"), opt.get("source-cones"), repair, A, minimum_landmarks(orders));
+  read_and_check(opt.get("target"), opt.get("target-cones"), repair, B, minimum_landmarks(orders));
   check_map_pair(A, B);
   const std::vector<std::size_t> order = map_cone_order(A);
-  embed_in_order(A, order, "source");
-  embed_in_order(B, order, "target");
+  embed_in_order(A, order, orders, "source");
+  embed_in_order(B, order, orders, "target");
   if(A.stats.landmark_order_reversed != B.stats.landmark_order_reversed)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
                                               "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
   const auto t0 = std::chrono::steady_clock::now();
-  const Locator locB(B.mesh, B.uv, B.charts, B.stats.charts, B.type, k, HOT::Hyperboloid_linear);
+  const Locator locB(B.mesh, B.uv, B.charts, B.stats.charts, HOT::Orbifold_signature(B.type, B.stats.cone_orders), HOT::Hyperboloid_linear);
   const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
@@ -486,7 +515,7 @@ int run_map(int argc, char** argv)
     files.write(opt.get("prepared-target"), [&](std::ostream& os) { hot_tools::write_addressed_off(os, B.mesh, B.in.file); });
   if(opt.has("colors-out")) {
     // a smooth colouring of A, carried to B by f_BA
-    const Locator locA(A.mesh, A.uv, A.charts, A.stats.charts, A.type, k, HOT::Hyperboloid_linear);
+    const Locator locA(A.mesh, A.uv, A.charts, A.stats.charts, HOT::Orbifold_signature(A.type, A.stats.cone_orders), HOT::Hyperboloid_linear);
     const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, B.charts, B.stats.charts, locA);
     files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g, addressing(B.in)); });
   }
@@ -538,13 +567,13 @@ Manifest read_manifest(const std::string& manifest)
 
 // reads and checks every mesh of the manifest into the collection; returns the orbifold type
 HOT::Orbifold_type read_collection(const Manifest& entries, const hot_tools::Repair_options& repair, Collection& coll,
-                                   std::vector<hot_tools::Input_mesh>& inputs)
+                                   std::vector<hot_tools::Input_mesh>& inputs, std::size_t minimum)
 {
   HOT::Orbifold_type type = HOT::Sphere_type;
   std::size_t k = 0;
   for(std::size_t i = 0; i < entries.size(); ++i) {
     Embedded e;
-    read_and_check(entries[i].first, entries[i].second, repair, e);
+    read_and_check(entries[i].first, entries[i].second, repair, e, minimum);
     inputs.push_back(e.in.file);
     if(i == 0) {
       type = e.type;
@@ -678,14 +707,16 @@ int run_collection(int argc, char** argv)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("all-pairs");
-  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole"}, flags);
+  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "cone-orders"}, flags);
   const std::string manifest = opt.get("manifest"), dir = opt.get("out");
   const bool all_pairs = opt.has("all-pairs");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
+  const std::vector<int> orders = parse_cone_orders(opt);
   const Manifest entries = read_manifest(manifest);
   Collection coll;
+  coll.set_cone_orders(orders);
   std::vector<hot_tools::Input_mesh> inputs;
-  const HOT::Orbifold_type type = read_collection(entries, repair, coll, inputs);
+  const HOT::Orbifold_type type = read_collection(entries, repair, coll, inputs, minimum_landmarks(orders));
   embed_collection(entries, coll);
   const Collection_maps maps = map_collection(coll, all_pairs);
   write_collection_files(dir, entries, coll, type, maps, all_pairs, inputs);

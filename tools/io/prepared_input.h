@@ -176,11 +176,12 @@ template <class TriangleMesh>
 HOT::Status read_input_landmarks(const std::string& path, const TriangleMesh& mesh, const Input_mesh& in,
                                  HOT::Orbifold_type type, bool snap,
                                  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
-                                 std::vector<Landmark_snap_record>* snaps = nullptr)
+                                 std::vector<Landmark_snap_record>* snaps = nullptr,
+                                 std::size_t minimum = HOT::minimum_number_of_landmarks)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   if(!in.repaired && !snap)
-    return read_and_check_landmarks(path, mesh, type, landmarks);
+    return read_and_check_landmarks(path, mesh, type, landmarks, minimum);
   landmarks.clear();
   std::vector<std::size_t> ids;
   HOT::Status r = read_landmarks(path, ids);
@@ -225,7 +226,7 @@ HOT::Status read_input_landmarks(const std::string& path, const TriangleMesh& me
         return fail(HOT::ERROR_LANDMARK_NOT_ON_BORDER, "landmark " + std::to_string(i) + " (vertex " + std::to_string(ids[i]) +
                                                          ") is not on the boundary loop; disk-type orbifold corners must be boundary"
                                                          " vertices (--snap-landmarks moves them to the nearest one)");
-  r = HOT::check_landmarks(mesh, prepared, type, landmarks); // the number of landmarks
+  r = HOT::check_landmarks(mesh, prepared, type, landmarks, minimum); // the number of landmarks
   if(!r) r.message = path + ": " + r.message;
   return r;
 }

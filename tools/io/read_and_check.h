@@ -92,14 +92,15 @@ with the file name. Precondition: `check_mesh()` succeeded on `mesh` for `type`.
 */
 template <class TriangleMesh>
 HOT::Status read_and_check_landmarks(const std::string& path, const TriangleMesh& mesh, HOT::Orbifold_type type,
-                                      std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks)
+                                      std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+                                      std::size_t minimum = HOT::minimum_number_of_landmarks)
 {
   landmarks.clear();
   std::vector<std::size_t> indices;
   HOT::Status r = read_landmarks(path, indices); // its messages already start with the file name
   if(!r)
     return r;
-  r = HOT::check_landmarks(mesh, indices, type, landmarks);
+  r = HOT::check_landmarks(mesh, indices, type, landmarks, minimum);
   if(!r)
     r.message = path + ": " + r.message;
   return r;

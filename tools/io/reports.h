@@ -114,6 +114,9 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
      << "  \"landmark_order_used\": [";
   for(std::size_t i = 0; i < st.landmark_order.size(); ++i)
     os << (i ? ", " : "") << cone_indices[st.landmark_order[i]];
+  os << "],\n  \"cone_orders\": ["; // (of the cones of landmark_order_used: cone angle 2 pi / order)
+  for(std::size_t i = 0; i < st.cone_orders.size(); ++i)
+    os << (i ? ", " : "") << st.cone_orders[i];
   os << "],\n  \"landmark_order_reversed\": " << (st.landmark_order_reversed ? "true" : "false") << ",\n"
      << "  \"cut_mesh_vertices\": " << st.number_of_vertices << ",\n"
      << "  \"time_seconds\": {\"setup_and_cut\": " << st.time_setup << ", \"initialization\": "

@@ -164,6 +164,20 @@ public:
     build(tm, uv, tile);
   }
 
+  /// builds the locator of the embedding `uv` of `tm` into the orbifold of `signature` (cones
+  /// of any orders, `make_orbifold_tile()`)
+  Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, const Orbifold_signature& signature,
+                    Interpolation_model model = Hyperboloid_linear)
+  {
+    lt_.model = model;
+    Tile tile;
+    if(make_orbifold_tile(signature, tile) != OK) {
+      lt_.fail("the orbifold of the signature has no tile (not hyperbolic, or not built)");
+      return;
+    }
+    build(tm, uv, tile);
+  }
+
   /// builds the locator of an embedding written partly in charts around cone images
   /// (\ref HOT_Charts): `uv` as for the other constructors, `charts` the charts
   /// (`Embedding_statistics::charts`) and `chart_map` (a readable property map from halfedges to
@@ -180,55 +194,22 @@ public:
       lt_.fail("the orbifold with " + std::to_string(k) + " cones is not hyperbolic");
       return;
     }
-    if(charts.empty()) {
-      build(tm, uv, tile);
+    build_with_charts(tm, uv, chart_map, charts, tile);
+  }
+
+  /// the same for the orbifold of `signature` (cones of any orders, `make_orbifold_tile()`)
+  template <class HalfedgeChartMap>
+  Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, HalfedgeChartMap chart_map,
+                    const std::vector<Isometry>& charts, const Orbifold_signature& signature,
+                    Interpolation_model model = Hyperboloid_linear)
+  {
+    lt_.model = model;
+    Tile tile;
+    if(make_orbifold_tile(signature, tile) != OK) {
+      lt_.fail("the orbifold of the signature has no tile (not hyperbolic, or not built)");
       return;
     }
-    // the faces in charts (faces(tm) order), with their corners in their charts
-    ch_.charts = charts;
-    for(const Isometry& m : charts) { // the tile corner at each chart's origin: the nearest one
-      const C o = m.inverse().apply(C(0, 0));
-      int best = 0;
-      for(int i = 1; i < tile.number_of_corners(); ++i)
-        if(internal::hyperbolic_proximity(o, lt_.to_c(tile.corner(i))) < internal::hyperbolic_proximity(o, lt_.to_c(tile.corner(best))))
-          best = i;
-      ch_.chart_corner.push_back(best);
-    }
-    for(face_descriptor f : faces(tm)) {
-      const halfedge_descriptor h0 = halfedge(f, tm);
-      const halfedge_descriptor hs[3] = {h0, next(h0, tm), next(next(h0, tm), tm)};
-      int c = -1;
-      for(int j = 0; j < 3; ++j) {
-        const auto cp = get(chart_map, hs[j]);
-        if(cp.chart < -1 || cp.chart >= static_cast<int>(charts.size())) {
-          lt_.fail("a corner's chart is not one of the charts");
-          return;
-        }
-        c = cp.chart >= 0 ? cp.chart : c;
-      }
-      std::array<C, 3> z;
-      if(c >= 0)
-        for(int j = 0; j < 3; ++j) {
-          const auto p = chart_coordinates(charts, c, get(chart_map, hs[j]), get(uv, hs[j]));
-          z[j] = C(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-        }
-      ch_.face_chart.push_back(c);
-      ch_.z.push_back(z);
-    }
-    ch_.build(tile);
-    // (the faces in charts stay in the tile's walk: their rounded corners there are far from
-    // the points located in the tile, which the charts answer near their origins)
-    build(tm, uv, tile);
-    if(!lt_.valid)
-      return;
-    // inverted faces: those of the tile's coordinates, and those of the charts in theirs
-    lt_.n_inverted = 0;
-    for(std::size_t i = 0; i < faces_.size(); ++i) {
-      const C* z = ch_.face_chart[i] >= 0 ? ch_.z[i].data() : lt_.faces[i].z;
-      lt_.n_inverted += lt_.orient(z[0], z[1], z[2]) > 0 ? 0 : 1;
-    }
-    lt_.message = lt_.n_inverted == 0 ? std::string()
-                                      : std::to_string(lt_.n_inverted) + " faces are not positively oriented: the embedding is not bijective";
+    build_with_charts(tm, uv, chart_map, charts, tile);
   }
 
   /// \name Access
@@ -375,6 +356,63 @@ public:
   }
 
 private:
+  // the faces in charts, then the tile's
+  template <class HalfedgeChartMap>
+  void build_with_charts(const TriangleMesh& tm, HalfedgeUVMap uv, HalfedgeChartMap chart_map,
+                         const std::vector<Isometry>& charts, const Tile& tile)
+  {
+    if(charts.empty()) {
+      build(tm, uv, tile);
+      return;
+    }
+    // the faces in charts (faces(tm) order), with their corners in their charts
+    ch_.charts = charts;
+    for(const Isometry& m : charts) { // the tile corner at each chart's origin: the nearest one
+      const C o = m.inverse().apply(C(0, 0));
+      int best = 0;
+      for(int i = 1; i < tile.number_of_corners(); ++i)
+        if(internal::hyperbolic_proximity(o, lt_.to_c(tile.corner(i))) < internal::hyperbolic_proximity(o, lt_.to_c(tile.corner(best))))
+          best = i;
+      ch_.chart_corner.push_back(best);
+    }
+    for(face_descriptor f : faces(tm)) {
+      const halfedge_descriptor h0 = halfedge(f, tm);
+      const halfedge_descriptor hs[3] = {h0, next(h0, tm), next(next(h0, tm), tm)};
+      int c = -1;
+      for(int j = 0; j < 3; ++j) {
+        const auto cp = get(chart_map, hs[j]);
+        if(cp.chart < -1 || cp.chart >= static_cast<int>(charts.size())) {
+          lt_.fail("a corner's chart is not one of the charts");
+          return;
+        }
+        c = cp.chart >= 0 ? cp.chart : c;
+      }
+      std::array<C, 3> z;
+      if(c >= 0)
+        for(int j = 0; j < 3; ++j) {
+          const auto p = chart_coordinates(charts, c, get(chart_map, hs[j]), get(uv, hs[j]));
+          z[j] = C(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+        }
+      ch_.face_chart.push_back(c);
+      ch_.z.push_back(z);
+    }
+    ch_.build(tile);
+    // (the faces in charts stay in the tile's walk: their rounded corners there are far from
+    // the points located in the tile, which the charts answer near their origins)
+    build(tm, uv, tile);
+    if(!lt_.valid)
+      return;
+    // inverted faces: those of the tile's coordinates, and those of the charts in theirs
+    lt_.n_inverted = 0;
+    for(std::size_t i = 0; i < faces_.size(); ++i) {
+      const C* z = ch_.face_chart[i] >= 0 ? ch_.z[i].data() : lt_.faces[i].z;
+      lt_.n_inverted += lt_.orient(z[0], z[1], z[2]) > 0 ? 0 : 1;
+    }
+    lt_.message = lt_.n_inverted == 0 ? std::string()
+                                      : std::to_string(lt_.n_inverted) + " faces are not positively oriented: the embedding is not bijective";
+  }
+
+
   void build(const TriangleMesh& tm, HalfedgeUVMap uv, const Tile& tile)
   {
     lt_.reset(tile, num_vertices(tm));

@@ -95,6 +95,9 @@ struct Embedding_statistics : public Solver_statistics
   std::vector<int> chart_corners;
   bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
   std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
+  /// the order of every cone of the tile (cone angle \f$2\pi/p\f$), in the order of the cut
+  /// (the landmarks as `landmark_order` lists them): 2 for all unless `cone_orders` was given
+  std::vector<int> cone_orders;
   /// \var time_setup
   /// seconds spent checking the input, cutting the mesh and setting up the problem
   /// \var time_initialization

@@ -136,6 +136,14 @@ public:
         type, weights == Surface_mesh_parameterization::Mean_value ? Mean_value : Cotangent, 1e-6, traits)
   {}
 
+  /// the order \f$p_i\f$ of the cone of every landmark (cone angle \f$2\pi/p_i\f$), in the order
+  /// of the landmarks given to `parameterize()` (along the seam); sphere type only. Empty (the
+  /// default): 2 for every cone. With orders, 3 or more landmarks are accepted, as long as the
+  /// orbifold is hyperbolic (\f$\sum_i (1 - 1/p_i) > 2\f$; otherwise `ERROR_NOT_HYPERBOLIC`).
+  void set_cone_orders(const std::vector<int>& orders) { orders_ = orders; }
+  /// the cone orders set by `set_cone_orders()`
+  const std::vector<int>& cone_orders() const { return orders_; }
+
   /// the force imbalance (relative hyperbolic gradient norm, see `Embedding_statistics`) at which the solver stops (default \f$10^{-10}\f$)
   void set_gradient_tolerance(double t) { settings_.solver.gradient_tolerance = t; }
   /// the maximum number of Newton iterations (default 200)
@@ -201,14 +209,24 @@ public:
     Embedding_statistics& st = stats ? *stats : local;
     st = Embedding_statistics();
     const int k = static_cast<int>(landmarks.size());
-    if(k < 5) {
-      st.message = "at least 5 landmarks are needed, got " + std::to_string(k);
-      return ERROR_TOO_FEW_LANDMARKS;
-    }
     Tile tile;
-    if(make_orbifold_tile(type_, k, tile, traits_) != OK) {
-      st.message = error_message(ERROR_NOT_HYPERBOLIC);
-      return ERROR_NOT_HYPERBOLIC;
+    if(orders_.empty()) {
+      if(k < 5) {
+        st.message = "at least 5 landmarks are needed, got " + std::to_string(k);
+        return ERROR_TOO_FEW_LANDMARKS;
+      }
+      if(make_orbifold_tile(type_, k, tile, traits_) != OK) {
+        st.message = error_message(ERROR_NOT_HYPERBOLIC);
+        return ERROR_NOT_HYPERBOLIC;
+      }
+      st.cone_orders.assign(k, 2);
+    } else {
+      const Status s = internal::tile_of_cone_orders(type_, orders_, k, tile, traits_);
+      if(!s) {
+        st.message = s.message;
+        return s.code;
+      }
+      st.cone_orders = orders_;
     }
     Settings settings = settings_;
     settings.charts = with_charts;
@@ -272,6 +290,7 @@ public:
 
 private:
   Orbifold_type type_;
+  std::vector<int> orders_;
   Traits traits_;
   typedef internal::Embedding_settings<TM_edge_descriptor> Settings;
   Settings settings_;

@@ -141,6 +141,13 @@ public:
   const std::vector<std::size_t>& order() const { return order_; }
   /// the one-line reason of the last failure
   const std::string& message() const { return message_; }
+  /// the order \f$p\f$ of the cone of every landmark (cone angle \f$2\pi/p\f$), in the class-wide
+  /// order of the landmarks, the same for every mesh (sphere type; default, or empty: 2 for
+  /// every cone). Set before `embed()`. Maps join cones of equal orders only: they are the
+  /// collection's.
+  void set_cone_orders(const std::vector<int>& orders) { orders_ = orders; }
+  /// the cone orders of `set_cone_orders()`
+  const std::vector<int>& cone_orders() const { return orders_; }
   /// sets the progress callback (an empty function: none)
   void set_progress_callback(const Progress_callback& callback) { progress_ = callback; }
 
@@ -317,6 +324,8 @@ private:
   std::unique_ptr<Locator> new_locator(std::size_t i) const
   {
     const Item& it = items_[i];
+    if(!orders_.empty())
+      return std::unique_ptr<Locator>(new Locator(*it.mesh, it.uv, it.charts, it.stats.charts, Orbifold_signature(type_, ordered_orders())));
     return std::unique_ptr<Locator>(new Locator(*it.mesh, it.uv, it.charts, it.stats.charts, type_, static_cast<int>(order_.size())));
   }
 
@@ -353,12 +362,29 @@ private:
     return OK;
   }
 
+  // the cone orders in the order of the cut
+  std::vector<int> ordered_orders() const
+  {
+    std::vector<int> o;
+    if(!orders_.empty())
+      for(std::size_t c : order_)
+        o.push_back(orders_[c]);
+    return o;
+  }
+
   // the cone order: the paper's tour on mesh 0 (sphere type), the given order (disk type)
   Error_code compute_order()
   {
     // (the pipeline's landmark stage on mesh 0: the tour for sphere type, else as given)
     const TriangleMesh& m0 = *items_[0].mesh;
-    Status r = type_ == Sphere_type ? check_landmark_vertices(m0, items_[0].landmarks, type_) : Status();
+    if(!orders_.empty() && orders_.size() != items_[0].landmarks.size()) {
+      message_ = std::to_string(orders_.size()) + " cone orders are given for " + std::to_string(items_[0].landmarks.size()) +
+                 " landmarks (one per landmark is needed)";
+      return ERROR_WRONG_PARAMETER;
+    }
+    Status r = type_ == Sphere_type ? check_landmark_vertices(m0, items_[0].landmarks, type_,
+                                                              orders_.empty() ? minimum_number_of_landmarks : 3)
+                                    : Status();
     std::vector<vertex_descriptor> ordered;
     if(r)
       r = internal::order_landmarks(m0, get(CGAL::vertex_point, m0), items_[0].landmarks, type_, Tsp_order, ordered,
@@ -372,6 +398,7 @@ private:
   {
     const std::size_t N = items_.size();
     std::vector<Error_code> codes(N, OK);
+    const std::vector<int> cut_orders = ordered_orders(); // (empty: all 2)
     Reporter report(progress_, N);
     auto run = [&](std::size_t i) {
       Item& it = items_[i];
@@ -386,7 +413,7 @@ private:
       const Clock::time_point t0 = Clock::now();
       codes[i] = hyperbolic_orbifold_Tutte_embedding(
         *it.mesh, ordered, it.uv,
-        parameters::chart_map(it.charts, parameters::orbifold_type(type_, parameters::embedding_statistics(&it.stats))));
+        parameters::cone_orders(cut_orders, parameters::chart_map(it.charts, parameters::orbifold_type(type_, parameters::embedding_statistics(&it.stats)))));
       report(Progress::Mesh_embedded, i, i, seconds_since(t0), codes[i]);
     };
     for_each_index(N, run);
@@ -402,6 +429,7 @@ private:
 
   std::vector<Item> items_;
   std::vector<std::size_t> order_;
+  std::vector<int> orders_; // per landmark, in the class-wide order (empty: all 2)
   Orbifold_type type_ = Sphere_type;
   bool embedded_ = false;
   std::string message_;

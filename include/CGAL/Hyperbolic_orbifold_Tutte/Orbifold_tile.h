@@ -12,7 +12,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 
 #include <cmath>
+#include <complex>
 #include <cstddef>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -518,6 +520,44 @@ Error_code make_orbifold_tile(const Orbifold_signature& signature, Orbifold_tile
     alpha[i] = CGAL_PI / signature.order(i);
   return internal::double_polygon_into_sphere_tile(signature, internal::tangential_polygon(alpha), alpha, tile, traits);
 }
+
+namespace internal {
+
+// The tile of `type` with cones of orders `orders` (one per landmark, in the order of the
+// cut), for `k` landmarks, with a message that names the signature when there is none.
+template <class Traits>
+Status tile_of_cone_orders(Orbifold_type type, const std::vector<int>& orders, int k, Orbifold_tile<Traits>& tile,
+                           const Traits& traits)
+{
+  std::ostringstream os;
+  if(static_cast<int>(orders.size()) != k) {
+    os << orders.size() << " cone orders are given for " << k << " landmarks (one per landmark is needed)";
+    return Status::failure(ERROR_WRONG_PARAMETER, os.str());
+  }
+  std::string list;
+  for(int p : orders)
+    list += (list.empty() ? "" : ",") + std::to_string(p);
+  for(int p : orders)
+    if(p < 2) {
+      os << "the cone orders (" << list << ") must be integers of at least 2 (a cone of order p has angle 2 pi / p)";
+      return Status::failure(ERROR_WRONG_PARAMETER, os.str());
+    }
+  const Orbifold_signature sig(type, orders);
+  const Error_code ec = make_orbifold_tile(sig, tile, traits);
+  if(ec == OK)
+    return Status();
+  if(ec == ERROR_NOT_HYPERBOLIC) {
+    double s = 0;
+    for(int p : orders)
+      s += 1.0 - 1.0 / p;
+    os << "the orbifold with cones of orders (" << list << ") is not hyperbolic: the sum of 1 - 1/p over its cones is " << s
+       << ", it must exceed 2 (e.g. (2,3,7), (2,2,2,3), or 5 cones of order 2)";
+  } else
+    os << "cone orders other than 2 are built for sphere-type orbifolds only (disk corners are right angles)";
+  return Status::failure(ec, os.str());
+}
+
+} // namespace internal
 
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL

@@ -57,7 +57,9 @@ orientation predicate on the given coordinates.
        tile moved by `frame` (`Embedding_statistics::frame` of a recentred embedding), and
        `chart_map` with `charts` for an embedding written partly in charts around cone images
        (\ref HOT_Charts): its faces there are checked in their charts' coordinates, and the
-       seam pairings between two charts centred at corners of one cone are exact rotations
+       seam pairings between two charts centred at corners of one cone are exact rotations,
+       and `cone_orders` (a `std::vector<int>`, one per landmark in cone order, default 2 for
+       all: `Embedding_statistics::cone_orders`) for cones of other angles
 
 \return `OK` when the map could be analysed (read `certificate.is_bijective()`), otherwise the
 reason (invalid mesh or landmarks, or a cut that is not a simple path through the landmarks
@@ -95,7 +97,13 @@ Error_code certify_hyperbolic_orbifold_embedding(
     return fail(r.code, r.message);
   const int k = static_cast<int>(landmarks.size());
   Orbifold_tile<> tile;
-  if(make_orbifold_tile(type, k, tile) != OK)
+  const std::vector<int> orders =
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cone_orders), std::vector<int>());
+  if(!orders.empty()) {
+    const Status s = internal::tile_of_cone_orders(type, orders, k, tile, Poincare_disk_traits_2<>());
+    if(!s)
+      return fail(s.code, s.message);
+  } else if(make_orbifold_tile(type, k, tile) != OK)
     return fail(k < 5 ? ERROR_TOO_FEW_LANDMARKS : ERROR_NOT_HYPERBOLIC, "");
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value) {
     const Hyperbolic_isometry_2<double> frame = CGAL::parameters::get_parameter(np, internal_np::frame);

@@ -190,7 +190,7 @@ inline constexpr std::size_t minimum_number_of_landmarks = 5;
 
 checks the landmark (cone / corner) vertex indices of `tm` and converts them to vertex
 descriptors: index `i` is the `i`-th vertex of `vertices(tm)` (for a mesh read from a file,
-the file's vertex `i`). In this order: fewer than 5 (`ERROR_TOO_FEW_LANDMARKS`), an index >=
+the file's vertex `i`). In this order: fewer than `minimum` (`ERROR_TOO_FEW_LANDMARKS`), an index >=
 number of vertices (`ERROR_LANDMARK_OUT_OF_RANGE`), an index given twice
 (`ERROR_DUPLICATE_LANDMARK`), and for `Disk_type` a landmark that is not a border vertex
 (`ERROR_LANDMARK_NOT_ON_BORDER`). The order of the landmarks is kept. Linear time.
@@ -199,22 +199,26 @@ number of vertices (`ERROR_LANDMARK_OUT_OF_RANGE`), an index given twice
 \param landmark_indices the landmarks' positions in `vertices(tm)`
 \param type the orbifold type
 \param landmarks_out filled only on success (it is cleared otherwise)
+\param minimum the fewest landmarks accepted: 5 for cones of angle \f$\pi\f$ (the default), 3
+       when the cones have other orders (whether their orbifold is hyperbolic is for
+       `make_orbifold_tile()` to say)
 \pre `check_mesh()` succeeded on `tm`
 */
 template <class TriangleMesh>
 Status check_landmarks(const TriangleMesh& tm,
                        const std::vector<std::size_t>& landmark_indices,
                        Orbifold_type type,
-                       std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks_out)
+                       std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks_out,
+                       std::size_t minimum = minimum_number_of_landmarks)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   landmarks_out.clear();
 
   const std::size_t k = landmark_indices.size();
-  if(k < minimum_number_of_landmarks) {
+  if(k < minimum) {
     std::ostringstream os;
     os << k << " landmark" << (k == 1 ? " is" : "s are") << " given, but the " << internal::orbifold_type_name(type)
-       << "-type orbifold needs at least " << minimum_number_of_landmarks;
+       << "-type orbifold needs at least " << minimum << (type == Sphere_type && minimum == minimum_number_of_landmarks ? " (3 with cone orders above 2)" : "");
     return Status::failure(ERROR_TOO_FEW_LANDMARKS, os.str());
   }
 
@@ -268,7 +272,7 @@ is reported as out of range.
 template <class TriangleMesh>
 Status check_landmark_vertices(const TriangleMesh& tm,
                                const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
-                               Orbifold_type type)
+                               Orbifold_type type, std::size_t minimum = minimum_number_of_landmarks)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   const internal::Dense_index<vertex_descriptor> index(vertices(tm));
@@ -278,7 +282,7 @@ Status check_landmark_vertices(const TriangleMesh& tm,
     ids.push_back(id == index.npos ? index.size() + i : id);
   }
   std::vector<vertex_descriptor> out;
-  return check_landmarks(tm, ids, type, out);
+  return check_landmarks(tm, ids, type, out, minimum);
 }
 
 } // namespace Hyperbolic_orbifold_Tutte

@@ -61,14 +61,14 @@ inline const char* error_message(Error_code code)
 {
   static const char* const messages[] = {
     "Success",
-    "The orbifold is not hyperbolic (sphere-type and disk-type orbifolds need at least 5 cones)",
+    "The orbifold is not hyperbolic (it needs at least 5 cones of angle pi, or cones of orders p with sum(1 - 1/p) > 2)",
     "A parameter is out of its range",
     "The mesh is empty",
     "The mesh has a face that is not a triangle",
     "The mesh is not a valid 2-manifold",
     "The mesh has more than one connected component",
     "The mesh's topology does not match the orbifold (sphere type needs a closed genus-0 mesh, disk type a disk)",
-    "Too few landmarks (at least 5 are needed)",
+    "Too few landmarks (at least 5 are needed, 3 with cone orders above 2)",
     "A landmark is given twice",
     "A landmark index is not a vertex of the mesh",
     "A disk-type landmark is not on the boundary loop",

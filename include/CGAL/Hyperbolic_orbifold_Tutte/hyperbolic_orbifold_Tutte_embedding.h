@@ -49,8 +49,8 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
         traits as value type
 \tparam NamedParameters a sequence of named parameters
 \param tm a closed genus-0 triangle mesh (sphere type) or a triangulated disk (disk type)
-\param landmarks at least 5 distinct vertices; for the disk type, on the boundary, in
-       boundary order (either orientation)
+\param landmarks at least 5 distinct vertices (3 with cone orders above 2); for the disk type, on
+       the boundary, in boundary order (either orientation)
 \param uvmap receives the coordinates; unchanged unless `OK` is returned
 \param np an optional sequence of named parameters among the ones listed below
 
@@ -67,6 +67,11 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     \cgalParamDefault{`1e-6`} \cgalParamNEnd
   \cgalParamNBegin{landmark_order} \cgalParamDescription{`Given_order` or `Tsp_order` (sphere type)}
     \cgalParamDefault{`Given_order`} \cgalParamNEnd
+  \cgalParamNBegin{cone_orders} \cgalParamDescription{`std::vector<int>`: the order \f$p\f$ of every
+    landmark's cone (angle \f$2\pi/p\f$), in the order of `landmarks`; sphere type; the orbifold must be
+    hyperbolic, \f$\sum (1 - 1/p) > 2\f$ (`ERROR_NOT_HYPERBOLIC` otherwise). `Embedding_statistics::cone_orders`
+    receives them in the order of the cut}
+    \cgalParamDefault{2 for every cone (angle \f$\pi\f$)} \cgalParamNEnd
   \cgalParamNBegin{gradient_tolerance} \cgalParamDescription{relative gradient norm to reach}
     \cgalParamDefault{`1e-10`} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{maximum number of Newton iterations}
@@ -124,15 +129,25 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, tm));
 
   // 1. prepare: the orbifold type and the mesh's checks; the landmarks and their order
+  const std::vector<int> orders = choose_parameter(get_parameter(np, internal_np::cone_orders), std::vector<int>());
   Orbifold_type type = Sphere_type;
   Status r = internal::prepare_mesh(tm, vpm, np, type);
   if(r)
-    r = check_landmark_vertices(tm, landmarks, type);
+    r = check_landmark_vertices(tm, landmarks, type, orders.empty() ? minimum_number_of_landmarks : 3);
   std::vector<vertex_descriptor> ordered;
   if(r)
     r = internal::order_landmarks(tm, vpm, landmarks, type,
                                   choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order),
                                   ordered, st.landmark_order);
+  std::vector<int> ordered_orders; // (in the order of the cut)
+  if(r && !orders.empty()) {
+    if(orders.size() != landmarks.size())
+      r = Status::failure(ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " +
+                                                     std::to_string(landmarks.size()) + " landmarks (one per landmark is needed)");
+    else
+      for(std::size_t i : st.landmark_order)
+        ordered_orders.push_back(orders[i]);
+  }
   // 2. cut: the seam mesh
   internal::Seam_mesh_storage<TriangleMesh> seams(tm);
   typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
@@ -153,6 +168,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   parameterizer.set_maximum_number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200));
   parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
   parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
+  parameterizer.set_cone_orders(ordered_orders);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
     const auto wmap = get_parameter(np, internal_np::edge_weight_map);
     parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });

@@ -39,6 +39,7 @@ enum recentring_t { recentring };
 enum frame_t { frame };
 enum chart_map_t { chart_map };
 enum charts_t { charts };
+enum cone_orders_t { cone_orders };
 enum maximum_hole_length_t { maximum_hole_length };
 enum keep_largest_component_t { keep_largest_component };
 enum split_boundary_chords_t { split_boundary_chords };
@@ -94,6 +95,11 @@ CGAL_HOT_NAMED_PARAMETER(chart_map)
 /// `std::vector<Hyperbolic_isometry_2<double> >`: the charts of an embedding
 /// (`Embedding_statistics::charts`), with `chart_map` (default: none)
 CGAL_HOT_NAMED_PARAMETER(charts)
+/// `std::vector<int>`: the order \f$p\f$ of every landmark's cone (cone angle \f$2\pi/p\f$), in
+/// the order of the landmarks as given; sphere type only (default: 2 for every cone, angle
+/// \f$\pi\f$). The orbifold must be hyperbolic, \f$\sum_i (1 - 1/p_i) > 2\f$: three cones such
+/// as (2,3,7), (3,3,4) or (2,4,5), four such as (2,2,2,3), five or more of any orders
+CGAL_HOT_NAMED_PARAMETER(cone_orders)
 
 /// `double`: for `prepare_polygon_soup_for_embedding()`, the longest boundary loop that is
 /// filled as a hole, as a fraction of the diagonal of the mesh's bounding box (default 0.5)
