@@ -18,6 +18,7 @@ name="$(basename "${mesh%.*}")"
   --report "$out/$name.report.json"
 "$bin" tile --orbifold sphere --cones 7 --svg "$out/sphere_tile_7.svg"
 "$bin" tile --orbifold disk --cones 5 --svg "$out/disk_tile_5.svg"
+"$bin" tile --orbifold sphere --cone-orders 2,3,7 --depth 5 --svg "$out/sphere_tile_237.svg"
 if command -v rsvg-convert >/dev/null 2>&1; then
   for f in "$out"/*.svg; do rsvg-convert "$f" -o "${f%.svg}.png"; done
 fi

@@ -72,6 +72,57 @@ case "$case_name" in
     fi
     tail -n 1 "$tmp/b.svg" | grep -q "</svg>" || fail "svg"
     echo ok ;;
+  cone_orders)
+    # cones of angle 2 pi / p: the (2,3,7) tile (4 corners), an embedding of bear with three
+    # landmarks whose cone angles, measured on the OBJ's own coordinates, are 2 pi / p, and a
+    # map onto a bent copy (vertex i <-> vertex i) that takes the landmarks onto the landmarks
+    d="$(dirname "${BASH_SOURCE[0]}")"
+    "$prog" tile --orbifold sphere --cone-orders 2,3,7 --svg "$tmp/t.svg" --depth 3 > "$tmp/stdout" || fail "tile (2,3,7)"
+    dots=$(grep -c "<circle cx=.*r=\"7\"" "$tmp/t.svg")
+    [ "$dots" -eq 4 ] || fail "$dots cone dots in the (2,3,7) tile, expected 4"
+    expect_error "$tmp/u.svg" tile --orbifold sphere --cone-orders 2,3,6 --svg "$tmp/u.svg"
+    grep -q "not hyperbolic" "$tmp/stderr" || fail "(2,3,6) refused without saying why"
+    expect_error "$tmp/u.svg" tile --orbifold sphere --cone-orders 2,3,x --svg "$tmp/u.svg"
+    expect_error "$tmp/u.svg" tile --orbifold disk --cone-orders 3,3,3,3,3 --svg "$tmp/u.svg"
+    echo "8768 4116 9726" > "$tmp/bear.cones"
+    expect_error "$tmp/b.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --out "$tmp/b.obj"
+    grep -q "at least 5" "$tmp/stderr" || fail "3 cones of angle pi refused without saying why"
+    expect_error "$tmp/b.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --cone-orders 2,3 --out "$tmp/b.obj"
+    grep -q "one per landmark" "$tmp/stderr" || fail "a wrong number of orders refused without saying why"
+    "$prog" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --cone-orders 2,3,7 --out "$tmp/b.obj" \
+      --report "$tmp/b.json" > "$tmp/stdout" || fail "embed (2,3,7) failed"
+    grep -q '"bijective": true' "$tmp/b.json" || fail "report verdict"
+    [ "$(tr -d ' \n' < "$tmp/b.json" | grep -o '"cone_orders":\[[0-9,]*\]' | grep -o '[0-9,]*\]' | tr -d ']' | tr ',' '\n' | sort -n | tr '\n' ' ')" = "2 3 7 " ] \
+      || fail "report cone_orders"
+    # the angle at each landmark's corners, from the vt coordinates: at z, the angle between the
+    # geodesics to a and b is the angle between T(a) and T(b), T(w) = (w - z) / (1 - conj(z) w)
+    for pair in "8768 2" "4116 3" "9726 7"; do
+      set -- $pair
+      awk -v V=$(( $1 + 1 )) -v P=$2 '
+        function tr(ar, ai, zr, zi,   nr, ni, dr, di, q) { nr = ar - zr; ni = ai - zi; dr = 1 - (zr * ar + zi * ai); di = -(zr * ai - zi * ar)
+          q = dr * dr + di * di; TR = (nr * dr + ni * di) / q; TI = (ni * dr - nr * di) / q }
+        /^vt / { n++; X[n] = $2; Y[n] = $3 }
+        /^f / { for(j = 2; j <= 4; j++) { split($j, t, "/"); fv[j - 1] = t[1]; ft[j - 1] = t[2] }
+          for(j = 1; j <= 3; j++) if(fv[j] == V) {
+            z = ft[j]; a = ft[j % 3 + 1]; b = ft[(j + 1) % 3 + 1]
+            tr(X[a], Y[a], X[z], Y[z]); ar = TR; ai = TI; tr(X[b], Y[b], X[z], Y[z])
+            s += atan2(ar * TI - ai * TR, ar * TR + ai * TI) } }
+        END { want = 2 * atan2(0, -1) / P; e = s - want; if(e < 0) e = -e
+          if(e > 1e-6) { print "angle " s " at the cone of order " P ", want " want; exit 1 } }' "$tmp/b.obj" \
+        || fail "cone angle of landmark $1"
+    done
+    awk -v R=3 -f "$d/bend.awk" "$data/meshes/bear.off" > "$tmp/bent.off"
+    "$prog" map --source "$data/meshes/bear.off" --source-cones "$tmp/bear.cones" --target "$tmp/bent.off" \
+      --target-cones "$tmp/bear.cones" --cone-orders 2,3,7 --out "$tmp/m.txt" > /dev/null || fail "map (2,3,7) failed"
+    for v in 8768 4116 9726; do
+      line=$(sed -n "$((v + 1))p" "$tmp/m.txt")
+      echo "$line" | awk -v V=$v -v F="$tmp/bent.off" '{ f = $1 + 3; split("", c); i = 0
+          while((getline l < F) > 0) { i++; if(i == 2) { split(l, h, " "); nv = h[1] } if(i == nv + 2 + f - 2) { split(l, c, " "); break } }
+          ok = 0; for(j = 2; j <= 4; j++) if(c[j] == V && $j > 1 - 1e-9) ok = 1; exit !ok }' \
+        || fail "landmark $v is not mapped onto landmark $v: $line"
+    done
+    echo "map: $(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m.txt" "$tmp/bent.off" "$tmp/bent.off")"
+    echo ok ;;
   embed_disk)
     echo "1166 1785 147 932 2251 139" > "$tmp/m.cones"
     "$prog" embed --mesh "$data/meshes/mushroom.off" --cones "$tmp/m.cones" --weights mvc --out "$tmp/m.obj" \
