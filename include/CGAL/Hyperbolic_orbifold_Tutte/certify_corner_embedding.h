@@ -164,6 +164,24 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
                                                             " refers to point " + std::to_string(embedding.face_points[e][c]) +
                                                             ", but the embedding has " + std::to_string(embedding.points.size())));
 
+  // the charts' arrays
+  if(embedding.has_charts() || !embedding.point_charts.empty()) {
+    if(!embedding.has_charts())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has points in charts but no chart"));
+    if(embedding.chart_corners.size() != embedding.charts.size())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.charts.size()) +
+                                                          " charts but corners for " + std::to_string(embedding.chart_corners.size())));
+    if(embedding.point_charts.size() != embedding.points.size() || embedding.chart_points.size() != embedding.points.size())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.points.size()) +
+                                                          " points but charts for " + std::to_string(embedding.point_charts.size()) +
+                                                          " and chart points for " + std::to_string(embedding.chart_points.size())));
+    for(std::size_t p = 0; p < embedding.points.size(); ++p)
+      if(embedding.point_charts[p] < -1 || embedding.point_charts[p] >= static_cast<int>(embedding.charts.size()))
+        return fail(Status::failure(ERROR_WRONG_PARAMETER, "point " + std::to_string(p) + " is in chart " +
+                                                            std::to_string(embedding.point_charts[p]) + ", but the embedding has " +
+                                                            std::to_string(embedding.charts.size()) + " charts"));
+  }
+
   certificate.type = type;
   certificate.number_of_cones = k;
   certificate.number_of_faces = embedding.number_of_faces();
@@ -184,7 +202,9 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     for(std::size_t f = 0; f < M.number_of_faces(); ++f)
       for(int c = 0; c < 3; ++c)
         S.pid[f][c] = embedding.face_points[S.efface[f]][(c + rotation[f]) % 3];
+    S.charted = embedding.has_charts();
     cc::check_points(S);
+    cc::check_charts(S);
     cc::compute_tolerances(S);
     const std::vector<std::vector<std::size_t> > points_of = cc::points_of_vertices(S);
     const bool order_known = cc::check_cones(S, cone_index, points_of);
