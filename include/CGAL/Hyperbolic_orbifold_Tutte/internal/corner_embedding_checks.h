@@ -177,8 +177,8 @@ void check_charts(Certification<TM>& S)
     }
     const double defect = normalization_defect(m.a, m.b), nb = chart_normalization_bound * (m.abs_a + m.abs_b) * (m.abs_a + m.abs_b);
     if(!(defect <= nb)) {
-      record(S.cert, Chart_check, Cert::Chart, i, 0, who + " is not normalized: |a|^2 - |b|^2 is 1 + " + number_string(defect) +
-             " or 1 - that (bound " + number_string(nb) + ")");
+      record(S.cert, Chart_check, Cert::Chart, i, 0, who + " is not normalized: |a|^2 - |b|^2 differs from 1 by up to " + number_string(defect) +
+             " (bound " + number_string(nb) + ": the chart's rounding)");
       continue;
     }
     m.c = S.tile_corner(m.corner);
