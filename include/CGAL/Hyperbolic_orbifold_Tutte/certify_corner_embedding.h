@@ -61,6 +61,23 @@ first failure is the one reported):
   reflections);
 - *area*: the total hyperbolic area of the faces is the orbifold's (Gauss-Bonnet).
 
+With charts around cone images (`Corner_embedding::charts`: a protrusion ending at a
+landmark, converging onto its cone's image below what `double` resolves in the tile), the map
+is certified in the charts' coordinates, and one more check runs after *inside_disk*:
+
+- *charts*: every chart a normalized orientation-preserving isometry of the disk whose origin
+  is its tile corner within \f$64u\f$ (\f$u = 2^{-53}\f$: the chart's rounding), every chart point
+  finite, strictly inside the disk and whose tile point is its point's within the rounding of
+  computing it, every face's charted corners in one chart.
+
+A chart stands for the isometry that moves its corner exactly to the origin: a cone written in
+a chart must be exactly at its origin (*cones*); a face is decided in its chart, exactly when
+its corners are all chart points, else for every position of its other corners (brought into
+the chart from their tile points) within their certified error bound; a seam between two
+charts of one cone must match by the rotation about the origin that the side pairing is
+between them, within its rounding relative to the points' distance to the origin. The bounds
+and their derivations: the user manual, "Charts" in \ref HOT_IndependentCertificate.
+
 Together (paper, section 4 and Appendix B): the map to the orbifold is continuous across
 seams, a local homeomorphism at every point, hence a covering, and of degree one by the area:
 a bijection.
