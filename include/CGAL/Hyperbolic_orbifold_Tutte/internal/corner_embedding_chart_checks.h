@@ -127,7 +127,7 @@ void check_charts(Certification<TM>& S)
       C z;
       double radius = 0, rounding = 0;
       tile_point_of_chart_point(S.charts[k], w, z, radius, rounding);
-      const double d = std::abs(z - S.point(p)) * (1 - 4 * unit_roundoff), bound = radius + rounding;
+      const double d = std::abs(z - S.point(p)) * (1 + 4 * unit_roundoff), bound = radius + rounding;
       S.cert.max_chart_point_offset = (std::max)(S.cert.max_chart_point_offset, d / bound);
       if(!(d <= bound)) {
         record(S.cert, Chart_check, Cert::Vertex, v, 0, who + ", the tile point " + point_string(z) + ", " + number_string(d) +
