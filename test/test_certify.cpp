@@ -23,6 +23,7 @@
 #include "io/embedding_obj.h"
 #include "io/embedding_obj_reader.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -434,6 +435,167 @@ TEST_CASE(recentred_frame_accepted_with_the_frame)
 // ------------------------------------------------------------------------------------------
 // wrong embeddings: rejected, by the right check
 // ------------------------------------------------------------------------------------------
+
+// The bear's embedding with the points nearest one of its cut's end cones written in a chart
+// centred at the cone's tile corner, as embed writes a protrusion ending at a landmark
+// (tools/io/embedding_obj.h): chart = translation_to_origin(corner), the cone at the origin
+// exactly, each charted point's vt its chart point's tile point. It is the same map (moved by
+// rounding), so it must stay certified; `cone_point` receives the cone's point.
+HOT::Corner_embedding bear_in_a_chart(const Embedded& e, std::size_t& cone_point, int& corner, std::size_t& charted)
+{
+  HOT::Corner_embedding E = e.E;
+  HOT::Orbifold_tile<HOT::Poincare_disk_traits_2<> > tile;
+  CHECK(HOT::make_orbifold_tile(HOT::Sphere_type, static_cast<int>(e.landmarks.size()), tile) == HOT::OK);
+  // the cut's first cone (an end of the cut: its seam is glued by the rotation by pi about it)
+  const std::size_t v = e.landmarks[e.stats.landmark_order[0]].idx();
+  const std::vector<std::set<std::size_t> > pts = points_of(E, num_vertices(e.mesh));
+  CHECK(pts[v].size() == 1);
+  cone_point = *pts[v].begin();
+  const C z0 = point(E, cone_point);
+  corner = 0;
+  auto corner_point = [&](int i) { return C(CGAL::to_double(tile.corner(i).x()), CGAL::to_double(tile.corner(i).y())); };
+  for(int i = 1; i < tile.number_of_corners(); ++i)
+    if(std::abs(corner_point(i) - z0) < std::abs(corner_point(corner) - z0))
+      corner = i;
+  CHECK(std::abs(corner_point(corner) - z0) < 1e-9);
+  const Isometry chart = Isometry::translation_to_origin(corner_point(corner));
+  E.charts.push_back({{chart.a().real(), chart.a().imag(), chart.b().real(), chart.b().imag()}});
+  E.chart_corners.push_back(corner);
+  E.point_charts.assign(E.points.size(), -1);
+  E.chart_points.assign(E.points.size(), {{0.0, 0.0}});
+  // the 300 points nearest the corner
+  std::vector<std::pair<double, std::size_t> > by_distance;
+  for(std::size_t p = 0; p < E.points.size(); ++p)
+    by_distance.emplace_back(std::abs(point(E, p) - corner_point(corner)), p);
+  std::sort(by_distance.begin(), by_distance.end());
+  charted = 300;
+  for(std::size_t i = 0; i < charted; ++i) {
+    const std::size_t p = by_distance[i].second;
+    const C w = p == cone_point ? C(0, 0) : chart.apply(point(E, p));
+    E.point_charts[p] = 0;
+    E.chart_points[p] = {{w.real(), w.imag()}};
+    set_point(E, p, chart.inverse().apply(w));
+  }
+  return E;
+}
+
+TEST_CASE(region_around_a_cone_in_a_chart_accepted)
+{
+  const Embedded& e = bear();
+  if(!e.ok)
+    return;
+  std::size_t cone_point = 0, charted = 0;
+  int corner = 0;
+  const HOT::Corner_embedding E = bear_in_a_chart(e, cone_point, corner, charted);
+  const Cert c = certify(e, E);
+  expect_certified(c);
+  CHECK(c.number_of_charts == 1);
+  CHECK(c.number_of_chart_points == charted);
+  // every face with a charted corner is in the chart; those at the region's edge are mixed
+  std::size_t with_charted_corner = 0, all_charted = 0;
+  for(std::size_t f = 0; f < E.number_of_faces(); ++f) {
+    int n = 0;
+    for(int k = 0; k < 3; ++k)
+      n += E.point_charts[E.face_points[f][k]] >= 0;
+    with_charted_corner += n > 0;
+    all_charted += n == 3;
+  }
+  CHECK_MSG(c.number_of_charted_faces == with_charted_corner, c.number_of_charted_faces << " " << with_charted_corner);
+  CHECK(c.number_of_mixed_faces == with_charted_corner - all_charted);
+  CHECK(c.number_of_mixed_faces > 0 && all_charted > 100);
+  // the seam from the cone: both sides in the chart, glued by a rotation about its origin
+  CHECK(c.number_of_chart_seam_edges > 0);
+  CHECK(c.max_chart_seam_mismatch < 1e-13);
+  CHECK(c.max_chart_origin_offset <= 64 * 1.1102230246251565e-16);
+  CHECK(c.max_chart_point_offset <= 1);
+  // the same with the package's own points: the counts of a map without charts
+  const Cert plain = certify(e, e.E);
+  CHECK(plain.number_of_charts == 0 && plain.number_of_charted_faces == 0 && plain.checks[HOT::Chart_check].run);
+  CHECK(plain.number_of_seam_edges == c.number_of_seam_edges);
+}
+
+TEST_CASE(chart_table_and_chart_points_checked)
+{
+  const Embedded& e = bear();
+  if(!e.ok)
+    return;
+  std::size_t cone_point = 0, charted = 0;
+  int corner = 0;
+  const HOT::Corner_embedding E0 = bear_in_a_chart(e, cone_point, corner, charted);
+  {
+    // centred at another corner
+    HOT::Corner_embedding E = E0;
+    HOT::Orbifold_tile<HOT::Poincare_disk_traits_2<> > tile;
+    CHECK(HOT::make_orbifold_tile(HOT::Sphere_type, static_cast<int>(e.landmarks.size()), tile) == HOT::OK);
+    E.chart_corners[0] = (corner + 1) % tile.number_of_corners();
+    const Cert c = certify(e, E);
+    expect_rejected(c, HOT::Chart_check);
+    CHECK(c.result(HOT::Chart_check).element == Cert::Chart && c.result(HOT::Chart_check).first == 0);
+  }
+  {
+    // b turned by 1e-12 radians (|b| kept: still normalized; its origin 3e-13 off the corner,
+    // above 64 u)
+    HOT::Corner_embedding E = E0;
+    const C b = C(E.charts[0][2], E.charts[0][3]) * std::polar(1.0, 1e-12);
+    E.charts[0][2] = b.real();
+    E.charts[0][3] = b.imag();
+    const Cert c = certify(e, E);
+    expect_rejected(c, HOT::Chart_check);
+    CHECK(c.result(HOT::Chart_check).message.find("origin") != std::string::npos);
+    // b 1e-12 longer: not normalized
+    E = E0;
+    E.charts[0][2] *= 1 + 1e-12;
+    E.charts[0][3] *= 1 + 1e-12;
+    expect_rejected(certify(e, E), HOT::Chart_check);
+    // and by 2 u: within the bound (the rounding of a chart)
+    E = E0;
+    E.charts[0][2] = std::nextafter(std::nextafter(E.charts[0][2], 2.0), 2.0);
+    expect_certified(certify(e, E));
+  }
+  {
+    // |a| < |b|: not an isometry of the disk
+    HOT::Corner_embedding E = E0;
+    std::swap(E.charts[0][0], E.charts[0][2]);
+    std::swap(E.charts[0][1], E.charts[0][3]);
+    const Cert c = certify(e, E);
+    expect_rejected(c, HOT::Chart_check);
+    CHECK(c.result(HOT::Chart_check).message.find("not an isometry of the disk") != std::string::npos);
+  }
+  {
+    // the cone off its chart's origin, by far less than any edge
+    HOT::Corner_embedding E = E0;
+    E.chart_points[cone_point] = {{1e-30, 0.0}};
+    expect_rejected(certify(e, E), HOT::Cone_check);
+  }
+  {
+    // a chart point 1e-9 away from its vt's tile point
+    HOT::Corner_embedding E = E0;
+    std::size_t p = 0;
+    while(!(E.point_charts[p] == 0 && p != cone_point))
+      ++p;
+    E.chart_points[p][0] += 1e-9;
+    const Cert c = certify(e, E);
+    expect_rejected(c, HOT::Chart_check);
+    CHECK(c.result(HOT::Chart_check).element == Cert::Vertex);
+  }
+  {
+    // a face with corners in two charts (a second chart, the same map)
+    HOT::Corner_embedding E = E0;
+    E.charts.push_back(E.charts[0]);
+    E.chart_corners.push_back(E.chart_corners[0]);
+    E.point_charts[cone_point] = 1;
+    const Cert c = certify(e, E);
+    expect_rejected(c, HOT::Chart_check);
+    CHECK(c.result(HOT::Chart_check).element == Cert::Face);
+  }
+  {
+    // arrays that do not match: an input error
+    HOT::Corner_embedding E = E0;
+    E.point_charts.pop_back();
+    Cert c;
+    CHECK(HOT::certify_corner_embedding(e.mesh, e.landmarks, E, c) == HOT::ERROR_WRONG_PARAMETER);
+  }
+}
 
 TEST_CASE(neighbours_swapped)
 {

@@ -98,21 +98,75 @@ case "$case_name" in
     expect_error 2 "$tmp/r2.json" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --frame 0,0,1,0 --report "$tmp/r2.json"
     echo "ok (frame $frame)" ;;
   charts)
-    # a capsule whose tip is a landmark: embed solves the protrusion in a chart around the cone
-    # image and writes those points as '# hot vtc' comments, the vt lines holding their tile
-    # points rounded to double, where the faces near the cone are folded. certify checks the vt
-    # lines: it refuses the file, and says that the chart points were not read
-    awk -v L=100 -v S=24 -f "$(dirname "${BASH_SOURCE[0]}")/capsule.awk" > "$tmp/tube.off" 2> "$tmp/ring.cones"
-    nv=$(sed -n 2p "$tmp/tube.off" | awk '{print $1}')
-    tr ' ' '\n' < "$tmp/ring.cones" | awk -v tip=$((nv - 1)) 'NF { print ($1 == 0 ? tip : $1) }' > "$tmp/tube.cones"
-    "$prog" embed --mesh "$tmp/tube.off" --cones "$tmp/tube.cones" --out "$tmp/t.obj" >/dev/null || fail "embed"
-    nc=$(grep -c '^# hot vtc ' "$tmp/t.obj")
-    [ "$nc" -gt 0 ] || fail "no chart points written (the case no longer tests charts)"
-    "$prog" certify --mesh "$tmp/tube.off" --embedding "$tmp/t.obj" --cones "$tmp/tube.cones" --report "$tmp/r.json" 2>"$tmp/stderr"
-    [ $? -eq 4 ] || fail "exit status"
-    grep -q "the file also has $nc points in charts around cone images" "$tmp/stderr" || fail "no note on the chart points: $(cat "$tmp/stderr")"
-    grep -q "\"chart_points_not_read\": $nc," "$tmp/r.json" || fail "report chart points"
-    echo "ok: $(cat "$tmp/stderr")" ;;
+    # capsules of length 80 and 150 whose tip is a landmark: embed solves the protrusion in a
+    # chart around the tip cone's image and writes those points as '# hot vtc' lines after the
+    # chart table ('# hot chart'), their vt lines only rounded tile points. certify reads the
+    # charts and certifies in their coordinates; files edited into wrong ones are refused by
+    # the check that names the fault (test/chart_edit.awk), and the file without its chart lines
+    # is refused (its vt lines are too coarse near the cone)
+    d="$(dirname "${BASH_SOURCE[0]}")"
+    for L in 80 150; do
+      awk -v L=$L -v S=24 -f "$d/capsule.awk" > "$tmp/c$L.off" 2> "$tmp/ring.cones"
+      nv=$(sed -n 2p "$tmp/c$L.off" | awk '{print $1}')
+      echo "$(cat "$tmp/ring.cones") $((nv - 1))" > "$tmp/c$L.cones"
+      "$prog" embed --mesh "$tmp/c$L.off" --cones "$tmp/c$L.cones" --out "$tmp/e$L.obj" >/dev/null || fail "embed $L"
+      nc=$(grep -c '^# hot vtc ' "$tmp/e$L.obj"); nch=$(grep -c '^# hot chart ' "$tmp/e$L.obj")
+      [ "$nc" -gt 1000 ] && [ "$nch" -ge 1 ] || fail "length $L: $nch charts, $nc chart points (the case no longer tests charts)"
+      "$prog" certify --mesh "$tmp/c$L.off" --embedding "$tmp/e$L.obj" --cones "$tmp/c$L.cones" --report "$tmp/r$L.json" >"$tmp/out" 2>"$tmp/stderr" \
+        || fail "certify refused embed's charted output (length $L): $(cat "$tmp/stderr")"
+      grep -q "^certified: .* faces in $nch charts\? around cone images" "$tmp/out" || fail "stdout: $(cat "$tmp/out")"
+      json_ok "$tmp/r$L.json"
+      grep -q '"certified": true' "$tmp/r$L.json" || fail "report verdict ($L)"
+      grep -q "\"charts\": $nch," "$tmp/r$L.json" || fail "report charts ($L)"
+      grep -q "\"chart_points\": $nc," "$tmp/r$L.json" || fail "report chart points ($L)"
+      grep -q "\"chart_vtc_lines\": $nc," "$tmp/r$L.json" || fail "report vtc lines ($L)"
+      grep -q '"chart_points_not_read": 0,' "$tmp/r$L.json" || fail "report: chart points not read ($L)"
+      grep -q '"charted_faces": [1-9][0-9][0-9][0-9]' "$tmp/r$L.json" || fail "report: charted faces ($L)"
+      grep -q '"chart_seam_edges": [1-9]' "$tmp/r$L.json" || fail "report: no seam between charts checked as a rotation ($L)"
+      grep -q '"charts": {"run": true, "checked": [1-9][0-9]*, "failures": 0' "$tmp/r$L.json" || fail "report: charts check ($L)"
+      echo "ok: length $L: $(cat "$tmp/out")"
+    done
+    # deeper than double resolves in the tile (|w| < 1e-20 at length 150): a flipped face, a seam
+    # side moved by 1e-9 of its distance to the cone
+    m="$tmp/c150.off"; o="$tmp/e150.obj"; cn="$tmp/c150.cones"
+    awk -v mode=flip -v depth=1e-20 -f "$d/chart_edit.awk" "$o" "$o" > "$tmp/flip.obj" || fail "chart_edit flip"
+    expect_rejected orientation "$m" "$tmp/flip.obj" "$cn"
+    grep -q "(in chart 0) is negatively oriented" "$tmp/stderr" || fail "the flipped face is not named in its chart"
+    awk -v mode=seam -v depth=1e-20 -f "$d/chart_edit.awk" "$o" "$o" > "$tmp/seam.obj" || fail "chart_edit seam"
+    expect_rejected seams "$m" "$tmp/seam.obj" "$cn"
+    grep -q "a rotation about the cone's image" "$tmp/stderr" || fail "the seam is not checked as a rotation"
+    # the other edits on length 80
+    m="$tmp/c80.off"; o="$tmp/e80.obj"; cn="$tmp/c80.cones"
+    awk -v mode=flip -v depth=1e-15 -f "$d/chart_edit.awk" "$o" "$o" > "$tmp/flip.obj" || fail "chart_edit flip"
+    expect_rejected orientation "$m" "$tmp/flip.obj" "$cn"
+    awk -v mode=vt -f "$d/chart_edit.awk" "$o" "$o" > "$tmp/vt.obj" || fail "chart_edit vt"
+    expect_rejected charts "$m" "$tmp/vt.obj" "$cn"
+    grep -q "away from its vt line" "$tmp/stderr" || fail "the vt line is not named"
+    awk -v mode=b -f "$d/chart_edit.awk" "$o" "$o" > "$tmp/b.obj" || fail "chart_edit b"
+    expect_rejected charts "$m" "$tmp/b.obj" "$cn"
+    grep -q "chart 0's origin is the tile point .* away from tile corner" "$tmp/stderr" || fail "wrong b: not the chart's origin"
+    awk -v mode=corner -f "$d/chart_edit.awk" "$o" "$o" > "$tmp/corner.obj" || fail "chart_edit corner"
+    expect_rejected charts "$m" "$tmp/corner.obj" "$cn"
+    grep -q "chart 0's origin is the tile point .* away from tile corner" "$tmp/stderr" || fail "wrong corner: not the chart's origin"
+    awk -v mode=cone -f "$d/chart_edit.awk" "$o" "$o" > "$tmp/cone.obj" || fail "chart_edit cone"
+    expect_rejected cones "$m" "$tmp/cone.obj" "$cn"
+    grep -q "in chart 0, not at its origin" "$tmp/stderr" || fail "the cone off its chart's origin is not named"
+    # without its chart lines: the vt lines alone, too coarse near the cone: the tip cone is off
+    # its corner by more than its (tiny) edges allow, faces are flipped and seams torn
+    grep -v '^# hot ' "$o" > "$tmp/plain.obj"
+    expect_rejected cones "$m" "$tmp/plain.obj" "$cn"
+    grep -q '"charts": 0,' "$tmp/r.json" || fail "the plain file has no chart"
+    grep -q '"orientation": {"run": true, "checked": [0-9]*, "failures": [1-9]' "$tmp/r.json" || fail "the plain file has no flipped face"
+    # malformed chart lines: data errors (3), one line, no report
+    sed 's/^# hot vtc \([0-9]*\) 0 /# hot vtc \1 7 /' "$o" > "$tmp/bad1.obj"
+    expect_error 3 "$tmp/r2.json" certify --mesh "$m" --embedding "$tmp/bad1.obj" --cones "$cn" --report "$tmp/r2.json"
+    grep -q "is not a chart of the table" "$tmp/stderr" || fail "vtc of an unknown chart"
+    sed 's/^\(# hot chart 0 \)[^ ]*/\1x/' "$o" > "$tmp/bad2.obj"
+    expect_error 3 "$tmp/r2.json" certify --mesh "$m" --embedding "$tmp/bad2.obj" --cones "$cn" --report "$tmp/r2.json"
+    awk '{ print } /^# hot vtc / && !done { print; done = 1 }' "$o" > "$tmp/bad3.obj"
+    expect_error 3 "$tmp/r2.json" certify --mesh "$m" --embedding "$tmp/bad3.obj" --cones "$cn" --report "$tmp/r2.json"
+    grep -q "given a chart point twice" "$tmp/stderr" || fail "a vt given two chart points"
+    echo ok ;;
   wrong)
     "$prog" landmarks --mesh "$bear" --count 7 --out "$tmp/bear.cones" >/dev/null || fail "landmarks"
     "$prog" embed --mesh "$bear" --cones "$tmp/bear.cones" --out "$tmp/b.obj" >/dev/null || fail "embed"

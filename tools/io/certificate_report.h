@@ -32,7 +32,7 @@ struct Certify_request
   std::vector<std::size_t> cones;   // 0-based vertex indices, as given
   std::vector<int> cone_orders;     // as given (all 2), or empty
   double time_read = 0, time_certify = 0; // seconds
-  std::size_t chart_points = 0;     // '# hot vtc' lines of the file (points in charts, not read)
+  std::size_t chart_points = 0;     // '# hot vtc' lines of the file (points in charts; read)
 };
 
 namespace io_impl {
@@ -56,6 +56,7 @@ inline const char* element_name(HOT::Corner_embedding_certificate::Element_kind 
   case C::Mesh_face: return "mesh_face";
   case C::Vertex: return "vertex";
   case C::Edge: return "edge";
+  case C::Chart: return "chart";
   default: return "embedding";
   }
 }
@@ -82,7 +83,11 @@ inline void write_certificate_report(std::ostream& os, const Certify_request& q,
   os << ",\n  \"summary\": \"" << json_escape(c.summary()) << "\",\n"
      << "  \"vertices\": " << c.number_of_vertices << ",\n  \"faces\": " << c.number_of_faces << ",\n  \"points\": "
      << c.number_of_points << ",\n  \"seam_edges\": " << c.number_of_seam_edges << ",\n  \"border_vertices\": "
-     << c.number_of_border_vertices << ",\n  \"chart_points_not_read\": " << q.chart_points << ",\n  \"cone_order\": [";
+     << c.number_of_border_vertices << ",\n  \"chart_points_not_read\": 0"
+     << ",\n  \"charts\": " << c.number_of_charts << ",\n  \"chart_points\": " << c.number_of_chart_points
+     << ",\n  \"chart_vtc_lines\": " << q.chart_points << ",\n  \"charted_faces\": " << c.number_of_charted_faces
+     << ",\n  \"mixed_faces\": " << c.number_of_mixed_faces << ",\n  \"chart_seam_edges\": " << c.number_of_chart_seam_edges
+     << ",\n  \"cone_order\": [";
   for(std::size_t i = 0; i < c.cone_order.size(); ++i) os << (i ? ", " : "") << c.cone_order[i];
   os << "],\n  \"seam_edges_per_side\": [";
   for(std::size_t i = 0; i < c.seam_edges_per_side.size(); ++i) os << (i ? ", " : "") << c.seam_edges_per_side[i];
@@ -111,10 +116,15 @@ inline void write_certificate_report(std::ostream& os, const Certify_request& q,
      << ",\n    \"max_angle_sum_deviation\": " << json_number(c.max_angle_sum_deviation)
      << ", \"max_angle_sum_uncertainty\": " << json_number(c.max_angle_sum_uncertainty)
      << ",\n    \"area\": [" << json_number(c.area_lower) << ", " << json_number(c.area_upper)
-     << "], \"expected_area\": " << json_number(c.expected_area) << "},\n"
+     << "], \"expected_area\": " << json_number(c.expected_area)
+     << ",\n    \"max_chart_origin_offset\": " << json_number(c.max_chart_origin_offset)
+     << ", \"max_chart_point_offset_relative_to_bound\": " << json_number(c.max_chart_point_offset)
+     << ",\n    \"max_chart_seam_mismatch_relative\": " << json_number(c.max_chart_seam_mismatch)
+     << ", \"max_mixed_corner_error\": " << json_number(c.max_mixed_corner_error) << "},\n"
      << "  \"tolerances\": {\"position_absolute\": " << json_number(c.absolute_tolerance)
      << ", \"position_relative_to_shortest_edge\": " << json_number(c.relative_tolerance)
-     << ", \"angle_sum\": " << json_number(0.5 * CGAL_PI) << ", \"area_relative\": 0.5},\n"
+     << ", \"angle_sum\": " << json_number(0.5 * CGAL_PI) << ", \"area_relative\": 0.5"
+     << ", \"chart_origin\": " << json_number(64 * 1.1102230246251565e-16) << "},\n"
      << "  \"time_seconds\": {\"read\": " << json_number(q.time_read) << ", \"certify\": " << json_number(q.time_certify) << "}\n}\n";
 }
 

@@ -59,8 +59,12 @@ groups, materials and the other statements of the format are skipped. Errors
 (ERROR_READ_FAILED, the message starting with the file name and the line): a missing or
 unreadable file, a malformed number or index, a face that is not a triangle or a corner
 without its `vt` index, an index beyond the file's `v` or `vt` lines, an unknown statement.
-`chart_points` (if not null) receives the number of `# hot vtc` comment lines: points that
-`embed` wrote in charts around cone images (tools/io/embedding_obj.h), which are not read.
+The charts around cone images that `embed` writes as comments (tools/io/embedding_obj.h) are
+read too: `# hot chart I AR AI BR BI C` lines (charts 0, 1, ... in order) into
+`embedding.charts` and `chart_corners`, `# hot vtc K I X Y` lines (vt K, 1-based, is the point
+(X, Y) of chart I; at most one per vt) into `point_charts` and `chart_points`; a malformed
+one, a vtc line without the chart table or of a chart or vt the file does not have is an
+error like the others. `chart_points` (if not null) receives the number of `# hot vtc` lines.
 */
 inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embedding& embedding,
                                       std::size_t& number_of_vertices, std::size_t* chart_points = nullptr)
@@ -138,6 +142,66 @@ inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embed
   if(embedding.face_vertices.empty()) {
     embedding.clear();
     return read_fail(path + ": the file has no face (f lines)");
+  }
+  // the charts around cone images ('# hot chart' and '# hot vtc' comment lines)
+  {
+    std::size_t line = 0;
+    for(std::size_t at = 0; at < data.size();) {
+      std::size_t end = data.find('\n', at);
+      if(end == std::string::npos)
+        end = data.size();
+      ++line;
+      const std::string_view text(data.data() + at, end - at);
+      at = end + 1;
+      const bool is_chart = text.substr(0, 12) == "# hot chart ", is_vtc = text.substr(0, 10) == "# hot vtc ";
+      if(!is_chart && !is_vtc)
+        continue;
+      std::vector<std::string_view> f;
+      split(text, f);
+      // f[0] = "#", f[1] = "hot", f[2] = "chart" or "vtc"
+      if(is_chart) {
+        const std::size_t i = embedding.charts.size();
+        std::uint64_t id = 0, corner = 0;
+        std::array<double, 4> c;
+        if(f.size() != 9)
+          return fail(line, "chart line: 6 fields expected (# hot chart I AR AI BR BI C), " + std::to_string(f.size() - 3) + " found");
+        if(parse_unsigned(f[3], id) != NUMBER_OK || id != i)
+          return fail(line, "chart line: chart " + quote(f[3]) + " where chart " + std::to_string(i) + " is next (charts are numbered from 0 in order)");
+        for(int k = 0; k < 4; ++k)
+          if(!parse_real(f[4 + k], c[k]))
+            return fail(line, "chart " + std::to_string(i) + ": coefficient " + quote(f[4 + k]) + " is not a number");
+        if(parse_unsigned(f[8], corner) != NUMBER_OK || corner > 1000000)
+          return fail(line, "chart " + std::to_string(i) + ": tile corner " + quote(f[8]) + " is not an index");
+        embedding.charts.push_back(c);
+        embedding.chart_corners.push_back(static_cast<int>(corner));
+      } else {
+        std::uint64_t k = 0, ch = 0;
+        std::array<double, 2> w;
+        if(f.size() != 7)
+          return fail(line, "vtc line: 4 fields expected (# hot vtc K I X Y), " + std::to_string(f.size() - 3) + " found");
+        if(parse_unsigned(f[3], k) != NUMBER_OK || k == 0 || k > embedding.points.size())
+          return fail(line, "vtc line: " + quote(f[3]) + " is not a point (vt) index of the file's " + std::to_string(embedding.points.size()) + " points");
+        if(parse_unsigned(f[4], ch) != NUMBER_OK || ch >= embedding.charts.size())
+          return fail(line, "vtc line of vt " + std::to_string(k) + ": " + quote(f[4]) + " is not a chart of the table before it (" +
+                                  std::to_string(embedding.charts.size()) + " charts)");
+        for(int j = 0; j < 2; ++j)
+          if(!parse_real(f[5 + j], w[j]))
+            return fail(line, "vtc line of vt " + std::to_string(k) + ": coordinate " + quote(f[5 + j]) + " is not a number");
+        if(embedding.point_charts.empty()) {
+          embedding.point_charts.assign(embedding.points.size(), -1);
+          embedding.chart_points.assign(embedding.points.size(), std::array<double, 2>{{0.0, 0.0}});
+        }
+        if(embedding.point_charts[k - 1] >= 0)
+          return fail(line, "vtc line: vt " + std::to_string(k) + " is given a chart point twice");
+        embedding.point_charts[k - 1] = static_cast<int>(ch);
+        embedding.chart_points[k - 1] = w;
+      }
+    }
+    if(!embedding.charts.empty() && embedding.point_charts.empty()) {
+      // a chart table without chart points: no face is in a chart
+      embedding.point_charts.assign(embedding.points.size(), -1);
+      embedding.chart_points.assign(embedding.points.size(), std::array<double, 2>{{0.0, 0.0}});
+    }
   }
   for(std::size_t f = 0; f < embedding.face_vertices.size(); ++f)
     for(int k = 0; k < 3; ++k) {

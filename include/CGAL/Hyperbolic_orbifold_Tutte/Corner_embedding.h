@@ -34,6 +34,15 @@ holds it (`vt` lines and `f v/vt v/vt v/vt` faces; the format the command-line p
 `embed` writes): a list of points and, per face, its three mesh vertices and the point of
 each corner. A vertex whose corners have different points is cut open there (a seam).
 It is what `certify_corner_embedding()` checks, whoever computed it.
+
+Where a part of the map converges onto a cone's image (a long protrusion ending at a
+landmark: `Chart_point`), its points may also be given in charts around the cone's tile
+corners, as the OBJ file's `# hot chart` and `# hot vtc` lines hold them: `charts` (chart `i`
+maps a tile point \f$z\f$ to \f$(az + b)/(\bar b z + \bar a)\f$ and its origin is tile corner
+`chart_corners[i]`), and per point its chart (`point_charts`, -1: none) and its coordinates
+there (`chart_points`). A face is then in the chart of its corners that have one (at most
+one chart per face), and its other corners are its chart applied to their points. Without
+charts (`charts` empty), the map is its points alone.
 */
 struct Corner_embedding
 {
@@ -44,6 +53,15 @@ struct Corner_embedding
   std::vector<std::array<std::size_t, 3> > face_vertices;
   /// per face, the point of each corner: 0-based indices into `points`
   std::vector<std::array<std::size_t, 3> > face_points;
+  /// the charts around cone images, `{a.real(), a.imag(), b.real(), b.imag()}` each (the OBJ
+  /// file's `# hot chart` lines); empty for a map given by its points alone
+  std::vector<std::array<double, 4> > charts;
+  /// per chart, the tile corner at its origin (an index of the tile's corners)
+  std::vector<int> chart_corners;
+  /// per point, its chart (-1: none), or empty when no point has one (the `# hot vtc` lines)
+  std::vector<int> point_charts;
+  /// per point, its coordinates in its chart (unused where `point_charts` is -1)
+  std::vector<std::array<double, 2> > chart_points;
 
   /// the number of faces
   std::size_t number_of_faces() const { return face_vertices.size(); }
@@ -53,7 +71,13 @@ struct Corner_embedding
     points.clear();
     face_vertices.clear();
     face_points.clear();
+    charts.clear();
+    chart_corners.clear();
+    point_charts.clear();
+    chart_points.clear();
   }
+  /// `true` when the map is given partly in charts
+  bool has_charts() const { return !charts.empty(); }
 };
 
 /*!

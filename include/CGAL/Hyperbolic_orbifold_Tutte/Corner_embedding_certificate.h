@@ -31,6 +31,7 @@ enum Corner_embedding_check
   Mesh_face_check,           ///< "mesh_faces": the embedding's faces are the mesh's faces, with the mesh's orientation, each one once
   Finite_coordinates_check,  ///< "finite": no NaN or infinite coordinate
   Inside_disk_check,         ///< "inside_disk": every point strictly inside the unit disk (exact)
+  Chart_check,               ///< "charts": the chart table (well-formed isometries centred at their tile corners), every chart point in the disk and at its point's place, one chart per face
   Cone_check,                ///< "cones": every cone at a tile corner of its own tile cone; on a disk, consecutive along the boundary
   Border_check,              ///< "border": every disk boundary vertex on the segment of its tile side
   Degenerate_face_check,     ///< "degenerate_face": no face with its three points on one geodesic (exact)
@@ -47,7 +48,7 @@ constexpr int number_of_corner_embedding_checks = Area_check + 1;
 /// the short name of a check (`"orientation"`, `"seams"`, ...), as the command line and its report write it
 inline const char* check_name(Corner_embedding_check check)
 {
-  static const char* const names[] = {"repeated_face", "mesh_faces", "finite", "inside_disk", "cones", "border",
+  static const char* const names[] = {"repeated_face", "mesh_faces", "finite", "inside_disk", "charts", "cones", "border",
                                       "degenerate_face", "orientation", "angle_sum", "seams", "area"};
   static_assert(sizeof(names) / sizeof(names[0]) == number_of_corner_embedding_checks,
                 "check_name(): one name per Corner_embedding_check value");
@@ -73,7 +74,8 @@ struct Corner_embedding_certificate
     Face,       ///< a face of the embedding (0-based, in its order: the OBJ file's `f` lines)
     Mesh_face,  ///< a face of the mesh (0-based, in the order of `faces(tm)`)
     Vertex,     ///< a vertex of the mesh (0-based, in the order of `vertices(tm)`)
-    Edge        ///< an edge of the mesh, by its two vertices
+    Edge,       ///< an edge of the mesh, by its two vertices
+    Chart       ///< a chart around a cone image (0-based, in the order of `Corner_embedding::charts`)
   };
 
   /// the outcome of one check
@@ -98,6 +100,11 @@ struct Corner_embedding_certificate
   std::size_t number_of_points = 0;  ///< points of the embedding
   std::size_t number_of_seam_edges = 0; ///< mesh edges whose two faces give different points to an end
   std::size_t number_of_border_vertices = 0; ///< vertices on the mesh's boundary (disk type)
+  std::size_t number_of_charts = 0;        ///< charts around cone images (`Corner_embedding::charts`)
+  std::size_t number_of_chart_points = 0;  ///< points given in a chart
+  std::size_t number_of_charted_faces = 0; ///< faces checked in a chart's coordinates
+  std::size_t number_of_mixed_faces = 0;   ///< charted faces with a corner brought into the chart from its tile point
+  std::size_t number_of_chart_seam_edges = 0; ///< seam edges between two charts of one cone (glued by a rotation about the origin)
   /// for each given cone, the tile cone at whose corner it was found (-1: none); the cone order
   std::vector<int> cone_order;
   /// for each side of the tile, the number of seam edges glued by its side pairing
@@ -110,6 +117,10 @@ struct Corner_embedding_certificate
   double max_border_distance = 0;        ///< largest distance of a disk boundary point from its side's segment
   double max_angle_sum_deviation = 0;    ///< largest |angle sum - cone angle| (radians; middle of the enclosure)
   double max_angle_sum_uncertainty = 0;  ///< largest width of an angle sum's certified enclosure
+  double max_chart_origin_offset = 0;    ///< largest distance of a chart's origin (its preimage) from its tile corner (upper bound)
+  double max_chart_point_offset = 0;     ///< largest distance of a chart point's tile point from its point, relative to its bound
+  double max_chart_seam_mismatch = 0;    ///< largest mismatch across a seam between charts of one cone, relative to the points' distance to the origin
+  double max_mixed_corner_error = 0;     ///< largest error bound of a corner brought into a chart (chart coordinates)
   double area_lower = 0;                 ///< the total hyperbolic area is at least this (certified)
   double area_upper = 0;                 ///< and at most this
   double expected_area = 0;              ///< the orbifold's area (Gauss-Bonnet)

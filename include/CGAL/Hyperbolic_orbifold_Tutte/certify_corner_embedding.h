@@ -61,6 +61,23 @@ first failure is the one reported):
   reflections);
 - *area*: the total hyperbolic area of the faces is the orbifold's (Gauss-Bonnet).
 
+With charts around cone images (`Corner_embedding::charts`: a protrusion ending at a
+landmark, converging onto its cone's image below what `double` resolves in the tile), the map
+is certified in the charts' coordinates, and one more check runs after *inside_disk*:
+
+- *charts*: every chart a normalized orientation-preserving isometry of the disk whose origin
+  is its tile corner within \f$64u\f$ (\f$u = 2^{-53}\f$: the chart's rounding), every chart point
+  finite, strictly inside the disk and whose tile point is its point's within the rounding of
+  computing it, every face's charted corners in one chart.
+
+A chart stands for the isometry that moves its corner exactly to the origin: a cone written in
+a chart must be exactly at its origin (*cones*); a face is decided in its chart, exactly when
+its corners are all chart points, else for every position of its other corners (brought into
+the chart from their tile points) within their certified error bound; a seam between two
+charts of one cone must match by the rotation about the origin that the side pairing is
+between them, within its rounding relative to the points' distance to the origin. The bounds
+and their derivations: the user manual, "Charts" in \ref HOT_IndependentCertificate.
+
 Together (paper, section 4 and Appendix B): the map to the orbifold is continuous across
 seams, a local homeomorphism at every point, hence a covering, and of degree one by the area:
 a bijection.
@@ -164,6 +181,24 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
                                                             " refers to point " + std::to_string(embedding.face_points[e][c]) +
                                                             ", but the embedding has " + std::to_string(embedding.points.size())));
 
+  // the charts' arrays
+  if(embedding.has_charts() || !embedding.point_charts.empty()) {
+    if(!embedding.has_charts())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has points in charts but no chart"));
+    if(embedding.chart_corners.size() != embedding.charts.size())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.charts.size()) +
+                                                          " charts but corners for " + std::to_string(embedding.chart_corners.size())));
+    if(embedding.point_charts.size() != embedding.points.size() || embedding.chart_points.size() != embedding.points.size())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.points.size()) +
+                                                          " points but charts for " + std::to_string(embedding.point_charts.size()) +
+                                                          " and chart points for " + std::to_string(embedding.chart_points.size())));
+    for(std::size_t p = 0; p < embedding.points.size(); ++p)
+      if(embedding.point_charts[p] < -1 || embedding.point_charts[p] >= static_cast<int>(embedding.charts.size()))
+        return fail(Status::failure(ERROR_WRONG_PARAMETER, "point " + std::to_string(p) + " is in chart " +
+                                                            std::to_string(embedding.point_charts[p]) + ", but the embedding has " +
+                                                            std::to_string(embedding.charts.size()) + " charts"));
+  }
+
   certificate.type = type;
   certificate.number_of_cones = k;
   certificate.number_of_faces = embedding.number_of_faces();
@@ -184,7 +219,9 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     for(std::size_t f = 0; f < M.number_of_faces(); ++f)
       for(int c = 0; c < 3; ++c)
         S.pid[f][c] = embedding.face_points[S.efface[f]][(c + rotation[f]) % 3];
+    S.charted = embedding.has_charts();
     cc::check_points(S);
+    cc::check_charts(S);
     cc::compute_tolerances(S);
     const std::vector<std::vector<std::size_t> > points_of = cc::points_of_vertices(S);
     const bool order_known = cc::check_cones(S, cone_index, points_of);

@@ -8,7 +8,8 @@
 // The checks of certify_corner_embedding(), one function each, on the corner points of the
 // mesh's faces: points (finite, in the disk), cones at tile corners (the cone order), disk
 // boundary vertices on their sides' segments, faces (exact orientation), angle sums and area
-// (certified enclosures), seams (side pairings). Written for the certificate alone: it shares
+// (certified enclosures), seams (side pairings); the charts' checks are in
+// corner_embedding_chart_checks.h, the state in corner_embedding_state.h. Written for the certificate alone: it shares
 // the traits, the isometries and the tile with the solver, nothing else.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding.h>
@@ -16,7 +17,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_chart_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_geometry.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_state.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_topology.h>
 
 #include <algorithm>
@@ -31,55 +34,6 @@ namespace Hyperbolic_orbifold_Tutte {
 
 namespace internal {
 namespace corner_certificate {
-
-// the tolerances of the positions (see certify_corner_embedding()'s documentation)
-constexpr double absolute_tolerance = 1e-9;
-constexpr double relative_tolerance = 1e-6;
-
-inline std::string point_string(const C& z)
-{
-  std::ostringstream os;
-  os.precision(17);
-  os << "(" << z.real() << ", " << z.imag() << ")";
-  return os.str();
-}
-
-inline std::string number_string(double x)
-{
-  std::ostringstream os;
-  os.precision(3);
-  os << x;
-  return os.str();
-}
-
-// The state of one certification: the mesh, the tile, and the corner points per mesh face.
-template <class TriangleMesh>
-struct Certification
-{
-  typedef Corner_embedding_certificate Cert;
-  typedef Orbifold_tile<Poincare_disk_traits_2<> > Tile;
-
-  const Indexed_mesh<TriangleMesh>& M;
-  const Corner_embedding& E;
-  const Tile& tile;
-  Cert& cert;
-  std::vector<std::size_t> efface;           // per mesh face, its embedding face
-  std::vector<std::array<std::size_t, 3> > pid; // per mesh face and corner, its point
-  std::vector<char> valid;                   // per point: finite and strictly inside the disk
-  std::vector<double> tolerance;             // per vertex: min(absolute, relative x shortest incident edge)
-  std::vector<char> is_cone;                 // per vertex
-  std::vector<char> on_border;               // per vertex
-  std::vector<char> face_ok;                 // per mesh face: valid points, positively oriented
-
-  Certification(const Indexed_mesh<TriangleMesh>& m, const Corner_embedding& e, const Tile& t, Cert& c)
-    : M(m), E(e), tile(t), cert(c) {}
-
-  C point(std::size_t p) const { return C(E.points[p][0], E.points[p][1]); }
-  C corner(std::size_t f, int c) const { return point(pid[f][c]); }
-  C tile_corner(int i) const { return C(CGAL::to_double(tile.corner(i).x()), CGAL::to_double(tile.corner(i).y())); }
-  std::string face_name(std::size_t f) const { return "face " + std::to_string(efface[f]); }
-  bool face_points_valid(std::size_t f) const { return valid[pid[f][0]] && valid[pid[f][1]] && valid[pid[f][2]]; }
-};
 
 // finite and inside_disk, per point used by a face
 template <class TM>
@@ -154,7 +108,7 @@ std::vector<std::vector<std::size_t> > points_of_vertices(const Certification<TM
       const std::size_t p = S.pid[f][c];
       bool found = false;
       for(std::size_t q : l)
-        if(q == p || S.E.points[q] == S.E.points[p]) { found = true; break; }
+        if(same_point(S, p, q)) { found = true; break; }
       if(!found)
         l.push_back(p);
     }
@@ -182,6 +136,27 @@ bool check_cones(Certification<TM>& S, const std::vector<std::size_t>& cones,
     bool ok = true;
     for(std::size_t p : points_of[v]) {
       if(!S.valid[p]) { ok = false; break; }
+      const int k = S.point_chart(p);
+      if(k >= 0) {
+        // written in a chart: exactly at its origin, the chart's tile corner (check_charts())
+        const C w = S.chart_point(p);
+        if(!(w == C(0, 0))) {
+          record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " is at " + point_string(w) + " in chart " + std::to_string(k) +
+                 ", not at its origin (a cone written in a chart is at its origin, exactly 0; its tile corner " +
+                 std::to_string(S.charts[k].corner) + ")");
+          ok = false;
+          break;
+        }
+        const int c = S.tile.corner_cone(S.charts[k].corner);
+        if(cone >= 0 && c != cone) {
+          record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " has copies at corners of two tile cones, " +
+                 std::to_string(cone) + " and " + std::to_string(c));
+          ok = false;
+          break;
+        }
+        cone = c;
+        continue;
+      }
       const C z = S.point(p);
       int best = 0;
       double best_d = std::numeric_limits<double>::infinity();
@@ -265,12 +240,19 @@ void check_border(Certification<TM>& S, const std::vector<std::size_t>& cones,
       side = S.cert.cone_order[cone_at[v]]; // side i runs from tile corner i to corner i + 1
       continue;
     }
-    const C c0 = S.tile_corner(S.tile.side_source(side)), c1 = S.tile_corner(S.tile.side_target(side));
+    const C t0 = S.tile_corner(S.tile.side_source(side)), t1 = S.tile_corner(S.tile.side_target(side));
     for(std::size_t p : points_of[v]) {
       if(!S.valid[p])
         continue;
       ++R.checked;
-      const C z = S.point(p);
+      C c0 = t0, c1 = t1, z = S.point(p);
+      const int k = S.point_chart(p);
+      if(k >= 0) { // in its chart: the side's ends moved there (the chart's own corner to its origin)
+        double e0 = 0;
+        z = S.chart_point(p);
+        c0 = S.tile.side_source(side) == S.charts[k].corner ? C(0, 0) : chart_coordinates(S.charts[k], t0, e0);
+        c1 = S.tile.side_target(side) == S.charts[k].corner ? C(0, 0) : chart_coordinates(S.charts[k], t1, e0);
+      }
       const double off = distance_to_geodesic(z, c0, c1), beyond = distance_beyond_segment(z, c0, c1);
       S.cert.max_border_distance = (std::max)(S.cert.max_border_distance, (std::max)(off, beyond));
       const std::string who = "boundary vertex " + std::to_string(v) + " at " + point_string(z);
@@ -304,13 +286,19 @@ void check_faces(Certification<TM>& S)
     ++S.cert.checks[Degenerate_face_check].checked;
     ++S.cert.checks[Orientation_check].checked;
     const C a = S.corner(f, 0), b = S.corner(f, 1), c = S.corner(f, 2);
-    const Orientation o = orient(Point_2(a.real(), a.imag()), Point_2(b.real(), b.imag()), Point_2(c.real(), c.imag()));
+    const bool mixed = S.mixed(f);
+    const Orientation o = mixed ? robust_orientation({{a, b, c}}, S.ferr[f])
+                                : orient(Point_2(a.real(), a.imag()), Point_2(b.real(), b.imag()), Point_2(c.real(), c.imag()));
     if(o == POSITIVE) {
       S.face_ok[f] = 1;
       continue;
     }
-    const std::string t = "face " + std::to_string(e) + " " + triangle_string(S.M.face_vertices[f]);
-    if(o == ZERO)
+    const std::string t = "face " + std::to_string(e) + " " + triangle_string(S.M.face_vertices[f]) +
+                          (S.charted && S.face_chart[f] >= 0 ? " (in chart " + std::to_string(S.face_chart[f]) + ")" : std::string());
+    if(o == ZERO && mixed)
+      record(S.cert, Degenerate_face_check, Cert::Face, e, 0, t + " is too close to degenerate to decide its orientation within the error " +
+             number_string((std::max)(S.ferr[f][0], (std::max)(S.ferr[f][1], S.ferr[f][2]))) + " of its corners brought into the chart");
+    else if(o == ZERO)
       record(S.cert, Degenerate_face_check, Cert::Face, e, 0, t + " is degenerate: its three points are on one geodesic" +
              std::string(a == b || b == c || a == c ? " (two of them coincide)" : ""));
     else
@@ -365,7 +353,14 @@ void check_angle_sums_and_area(Certification<TM>& S, const std::vector<std::size
     for(std::size_t f = begin; f < end; ++f) {
       if(!S.face_ok[f])
         continue;
-      const std::array<Enclosure, 3>& a = angles[i++];
+      std::array<Enclosure, 3>& a = angles[i++];
+      if(S.mixed(f)) { // corners brought into a chart: within ferr of their places (angle_widening())
+        const double w = angle_widening({{S.corner(f, 0), S.corner(f, 1), S.corner(f, 2)}}, S.ferr[f]);
+        for(int c = 0; c < 3; ++c) {
+          a[c].lo = (std::max)(0.0, a[c].lo - w);
+          a[c].hi = (std::min)(pi_up, a[c].hi + w);
+        }
+      }
       for(int c = 0; c < 3; ++c) {
         const std::size_t v = S.M.face_vertices[f][c];
         add(sum[v], a[c]);
@@ -438,7 +433,7 @@ void check_seams(Certification<TM>& S)
     if(S.tile.side_pairing(i).is_orientation_preserving())
       generators.emplace_back(i, Iso(S.tile.side_pairing(i)));
   S.cert.seam_edges_per_side.assign(S.tile.number_of_sides(), 0);
-  auto same = [&](std::size_t p, std::size_t q) { return p == q || S.E.points[p] == S.E.points[q]; };
+  auto same = [&](std::size_t p, std::size_t q) { return same_point(S, p, q); };
   for(std::size_t f = 0; f < S.M.number_of_faces(); ++f) {
     for(int c = 0; c < 3; ++c) {
       const auto h = S.M.face_halfedges[f][c];
@@ -459,6 +454,13 @@ void check_seams(Certification<TM>& S)
       ++S.cert.number_of_seam_edges;
       if(!(S.valid[pa1] && S.valid[pb1] && S.valid[pa2] && S.valid[pb2]))
         continue;
+      if(S.charted && (S.face_chart[f] >= 0 || S.face_chart[g] >= 0)) {
+        if(!S.face_points_valid(f) || !S.face_points_valid(g))
+          continue;
+        ++R.checked;
+        check_charted_seam(S, f, g, (c + 2) % 3, c, cu, cw, generators);
+        continue;
+      }
       ++R.checked;
       const C a1 = S.point(pa1), b1 = S.point(pb1), a2 = S.point(pa2), b2 = S.point(pb2);
       const std::string where = "edge (" + std::to_string(u) + ", " + std::to_string(w) + ") between faces " +
