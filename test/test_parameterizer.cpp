@@ -924,10 +924,8 @@ static Eigen::SparseMatrix<std::complex<double> > random_grid_connection_laplaci
 TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
 {
   typedef std::complex<double> Cd;
-  if(!HOT::internal::Laplacian_factorization<Cd>::can_keep_leading_block) {
-    std::cout << "  (built without CHOLMOD: the leading block is never shared)" << std::endl;
-    return;
-  }
+  if(!HOT::internal::Laplacian_factorization<Cd>::can_keep_leading_block)
+    SKIP("built without CHOLMOD: no factorisation keeps a leading block");
   const int side = 30, n = side * side;
   // last: one corner, the first grid row, the middle row (a cut), the middle row with the
   // block's rows at random (CAMD orders them), a random half of the vertices (refused)
@@ -984,7 +982,7 @@ TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
 TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
 {
 #ifndef CGAL_HOT_USE_CHOLMOD
-  std::cout << "  (built without CHOLMOD: no supernodal factor to round)" << std::endl;
+  SKIP("built without CHOLMOD: no supernodal factor to round");
 #else
   typedef std::complex<double> Cd;
   const int side = 60, n = side * side, lead = n - side; // the last grid row kept last
