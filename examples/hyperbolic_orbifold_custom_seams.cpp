@@ -13,6 +13,7 @@
 
 #include <CGAL/hyperbolic_orbifold_Tutte.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <queue>
@@ -97,5 +98,11 @@ int main(int argc, char** argv)
   }
   std::cout << stats.number_of_vertices << " seam-mesh vertices, " << mesh.number_of_seam_edges() << " seam edges, "
             << stats.iterations << " Newton iterations; " << stats.certificate << std::endl;
-  return EXIT_SUCCESS;
+  // Gauss-Bonnet: k cones of angle pi on a sphere give the hyperbolic area (k - 4) pi
+  const double expected = (static_cast<double>(k) - 4) * CGAL_PI;
+  if(std::abs(stats.certificate.total_area - expected) > 1e-6 * k) {
+    std::cerr << "area " << stats.certificate.total_area << ", not (k - 4) pi = " << expected << std::endl;
+    return EXIT_FAILURE;
+  }
+  return stats.certificate.is_bijective() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

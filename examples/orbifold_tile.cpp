@@ -6,6 +6,7 @@
 
 #include <CGAL/hyperbolic_orbifold_Tutte.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -26,5 +27,11 @@ int main()
   const auto r = tile.reduce_to_tile(far);
   std::cout << "point " << far << " -> " << r.point << " after " << r.steps << " side pairings ("
             << (tile.bounded_side(r.point) == CGAL::ON_UNBOUNDED_SIDE ? "outside" : "inside") << " the tile)\n";
+  // Gauss-Bonnet: a sphere with k cones of angle pi has hyperbolic area 2 pi (k/2 - 2) = (k - 4) pi
+  const double expected = (7 - 4) * CGAL_PI;
+  if(std::abs(tile.area() - expected) > 1e-12 * expected) {
+    std::cerr << "tile area " << tile.area() << ", not (k - 4) pi = " << expected << "\n";
+    return EXIT_FAILURE;
+  }
   return tile.bounded_side(r.point) == CGAL::ON_UNBOUNDED_SIDE ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -6,7 +6,11 @@
 #     (the paper's cases) when that folder exists (read in place, never copied);
 #  2. bench_collection: 20 poses of bull.off (6.2K vertices) with 23 landmarks, all 380 maps;
 #  3. bench_tiles: the kernel;
-#  4. the whole `embed` process with and without --repair on meshes that need no repair (the
+#  4. bench_input_checks: soup validation, mesh build and input checks on generated meshes of
+#     growing size (a cube's surface, 15K to 960K vertices, 4x per step; a fan of 50K to 400K
+#     triangles around one vertex, 2x per step), with the ratio of times per step (linear
+#     time: 4 and 2; Euler::add_face would make the fan quadratic: 4);
+#  5. the whole `embed` process with and without --repair on meshes that need no repair (the
 #     preparation's overhead, target <= 10%), and on meshes that need it.
 # Prints the machine first. Usage: scripts/benchmark.sh [--large] [--quick]
 set -euo pipefail
@@ -16,7 +20,7 @@ for a in "$@"; do
   case "$a" in --large) large=1 ;; --quick) quick=1 ;; *) echo "usage: $0 [--large] [--quick]" >&2; exit 2 ;; esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
-"$root/scripts/build.sh" bench_parameterizer bench_collection bench_tiles hyperbolic_orbifold_tutte >/dev/null
+"$root/scripts/build.sh" bench_parameterizer bench_collection bench_tiles bench_input_checks hyperbolic_orbifold_tutte >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
 echo "== machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GB", $2/1048576}' /proc/meminfo), $(. /etc/os-release; echo "$PRETTY_NAME"), $(g++ --version | head -1)"
 meshes=()
@@ -44,6 +48,8 @@ echo "== collection (the paper's FAUST setting)"
 "$build/bin/bench_collection"
 echo "== kernel"
 "$build/bin/bench_tiles"
+echo "== input path: soup validation, mesh build, checks (linear time: the ratio is the size ratio)"
+"$build/bin/bench_input_checks"
 echo "== --repair: whole embed process, fastest of 3 runs (7 landmarks from 'landmarks')"
 cli="$build/bin/hyperbolic_orbifold_tutte"
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT

@@ -5,6 +5,9 @@
 #   scripts/fuzz.sh [SECONDS]    build into build-fuzz/ (or $HOT_FUZZ_DIR) and fuzz for
 #                                SECONDS (default 60), one process, niced
 #   scripts/fuzz.sh --repro FILE...  run the target once on saved inputs (e.g. a crash file)
+#   scripts/fuzz.sh --pack       merge (by coverage) the committed corpus, the seeds and the
+#                                corpus found so far into fuzz/corpus.tar.gz, the corpus that
+#                                ctest replays (fuzz.replay_corpus; fuzz/CMakeLists.txt)
 #
 # The corpus (build-fuzz/corpus) grows from run to run; it is seeded with small valid files
 # written by this script (build-fuzz/seeds). Exits with status 1 if the run found a crash,
@@ -66,8 +69,15 @@ if [ "${1:-}" = "--repro" ]; then
   shift
   exec "$bin" -runs=1 "$@"
 fi
+pack=0
+[ "${1:-}" = "--pack" ] && { pack=1; shift; }
 seconds="${1:-60}"
-case "$seconds" in ''|*[!0-9]*) echo "usage: scripts/fuzz.sh [SECONDS] | --repro FILE..." >&2; exit 2 ;; esac
+case "$seconds" in ''|*[!0-9]*) echo "usage: scripts/fuzz.sh [SECONDS] | --repro FILE... | --pack" >&2; exit 2 ;; esac
+# the committed corpus (what ctest replays): read as seeds too
+committed="$build/committed"
+rm -rf "$committed"
+mkdir -p "$committed"
+tar xzf "$root/fuzz/corpus.tar.gz" -C "$committed"
 
 # --- seeds: small valid files in every format ---------------------------------------------
 # input = selector byte, landmark length (2 bytes, little endian), mesh file, landmark file
@@ -145,13 +155,23 @@ seed stl_octa_binary 3 "$t/octa_bin.stl" "0 1 2 3 4"
 seed ts_octa 4 "$t/octa.ts" "0 1 2 3 4"
 rm -rf "$t"
 
+if [ $pack = 1 ]; then
+  merged="$build/merged"
+  rm -rf "$merged"
+  mkdir -p "$merged/corpus"
+  nice "$bin" -merge=1 -timeout=10 -rss_limit_mb=2048 "$merged/corpus" "$committed/corpus" "$seeds" "$build/corpus" > "$build/merge.log" 2>&1
+  (cd "$merged" && tar --sort=name --owner=0 --group=0 --numeric-owner --mtime=@0 -cf - corpus | gzip -n -9 > "$root/fuzz/corpus.tar.gz")
+  echo "fuzz.sh: fuzz/corpus.tar.gz: $(ls "$merged/corpus" | wc -l) inputs (update --min-inputs in fuzz/CMakeLists.txt if it shrank)"
+  exit 0
+fi
+
 # --- run ------------------------------------------------------------------------------------
 log="$build/fuzz.log"
 before="$(ls "$build/crashes" | wc -l)"
 echo "fuzz.sh: fuzzing for $seconds s (log: $log)"
 set +e
 nice "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 \
-  -artifact_prefix="$build/crashes/" "$build/corpus" "$seeds" > "$log" 2>&1
+  -artifact_prefix="$build/crashes/" "$build/corpus" "$seeds" "$committed/corpus" > "$log" 2>&1
 status=$?
 set -e
 runs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)"

@@ -6,6 +6,12 @@
 // case named on its command line (ctest registers one test per case, found by
 // scanning the source for TEST_CASE), all of them without argument, and lists
 // them with --list.
+//
+// A case that performs no CHECK fails ("performed no check"): a test that cannot fail
+// is not a test. A case that cannot run in this build (e.g. it needs CHOLMOD) says so
+// with SKIP("reason"), which returns from the case; run alone, the program then exits
+// with hot_test::skip_exit_code (77), which ctest reports as "Skipped" (SKIP_RETURN_CODE,
+// test/CMakeLists.txt), never as passed.
 
 #ifndef HOT_TEST_HARNESS_H
 #define HOT_TEST_HARNESS_H
@@ -27,6 +33,9 @@ struct Registry
 
 inline int& failures() { static int n = 0; return n; }
 inline int& checks() { static int n = 0; return n; }
+// the reason the running case gave for skipping itself (empty: not skipped)
+inline std::string& skip_reason() { static std::string r; return r; }
+constexpr int skip_exit_code = 77;
 inline std::string& data_dir() { static std::string d; return d; }
 
 struct Registrar
@@ -66,22 +75,37 @@ inline int run_main(int argc, char** argv)
     if(const char* d = std::getenv("HOT_DATA_DIR"))
       data_dir() = d;
   }
-  int ran = 0;
+  int ran = 0, skipped = 0;
   for(auto& c : r.cases) {
     if(!only.empty() && c.first != only)
       continue;
-    const int before = failures();
+    const int before = failures(), checks_before = checks();
+    skip_reason().clear();
     std::cout << "[ RUN  ] " << c.first << std::endl;
     c.second();
-    std::cout << (failures() == before ? "[  OK  ] " : "[ FAIL ] ") << c.first << std::endl;
     ++ran;
+    if(!skip_reason().empty() && failures() == before) {
+      std::cout << "[ SKIP ] " << c.first << ": " << skip_reason() << std::endl;
+      ++skipped;
+      continue;
+    }
+    if(checks() == checks_before) {
+      ++failures();
+      std::cerr << "test case " << c.first << " performed no check (a test that cannot fail)" << std::endl;
+    }
+    std::cout << (failures() == before ? "[  OK  ] " : "[ FAIL ] ") << c.first << std::endl;
   }
   if(ran == 0) {
     std::cerr << "no test case named '" << only << "'" << std::endl;
     return EXIT_FAILURE;
   }
-  std::cout << checks() << " checks, " << failures() << " failed" << std::endl;
-  return failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  std::cout << checks() << " checks, " << failures() << " failed";
+  if(skipped > 0)
+    std::cout << ", " << skipped << " case" << (skipped > 1 ? "s" : "") << " skipped";
+  std::cout << std::endl;
+  if(failures() != 0)
+    return EXIT_FAILURE;
+  return skipped == ran ? skip_exit_code : EXIT_SUCCESS;
 }
 
 } // namespace hot_test
@@ -107,6 +131,13 @@ inline int run_main(int argc, char** argv)
     hot_os_.precision(17);                                                               \
     hot_os_ << hot_a_ << " vs " << hot_b_ << " (tol " << (tol) << ")";                   \
     hot_test::report(std::abs(hot_a_ - hot_b_) <= (tol), #a " ~ " #b, __FILE__, __LINE__, hot_os_.str()); \
+  } while(0)
+
+// skips the running case, with the reason printed (e.g. "built without CHOLMOD")
+#define SKIP(reason)                                                                     \
+  do {                                                                                   \
+    hot_test::skip_reason() = (reason);                                                  \
+    return;                                                                              \
   } while(0)
 
 #define HOT_TEST_MAIN \

@@ -1105,12 +1105,14 @@ TEST_CASE(landmarks_end_to_end)
 }
 
 // ===========================================================================
-// performance: linear time
+// large meshes: built and checked (their timings are benchmark/bench_input_checks.cpp's,
+// run by scripts/benchmark.sh: linear time is measured there, not asserted here)
 // ===========================================================================
 
-TEST_CASE(performance)
+TEST_CASE(large_meshes_are_built_and_checked)
 {
-  // a closed genus-0 mesh: the surface of an n x n x n grid cube (6 n^2 + 2 vertices)
+  // a closed genus-0 mesh: the surface of an n x n x n grid cube (6 n^2 + 2 vertices,
+  // 12 n^2 triangles: Euler's formula V - E + F = 2 with E = 3F/2)
   const int n = 200;
   hot_tools::Polygon_soup soup;
   std::vector<int> id((n + 1) * (n + 1) * (n + 1), -1);
@@ -1144,21 +1146,15 @@ TEST_CASE(performance)
           }
         }
   SM sm;
-  auto t0 = std::chrono::steady_clock::now();
   CHECK_RESULT(hot_tools::polygon_soup_to_mesh(soup, sm), HOT::OK, "");
-  const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  t0 = std::chrono::steady_clock::now();
   HOT::Mesh_info info;
   CHECK_RESULT(HOT::check_mesh(sm, HOT::Sphere_type, &info), HOT::OK, "");
-  const double check = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CHECK(info.number_of_vertices == std::size_t(6 * n * n + 2));
+  CHECK(num_faces(sm) == std::size_t(12 * n * n));
   CHECK(CGAL::is_valid_polygon_mesh(sm));
-  std::cout << "  " << info.number_of_vertices << " vertices: soup validation + build " << build << " s, check_mesh "
-            << check << " s" << std::endl;
-  CHECK_MSG(build < 2.0 && check < 2.0, "too slow: " << build << " s, " << check << " s");
 
-  // a fan of 200K triangles around one vertex (a disk): Euler::add_face would be
-  // quadratic here; our builder and checks are linear
+  // a fan of 200K triangles around one vertex (a disk; Euler::add_face would be quadratic
+  // here, the builder is not: benchmark/bench_input_checks.cpp times it)
   hot_tools::Polygon_soup fan;
   const std::size_t k = 200000;
   fan.points.push_back({ { 0, 0, 0 } });
@@ -1170,14 +1166,12 @@ TEST_CASE(performance)
     fan.face_vertices.insert(fan.face_vertices.end(), { 0, i, i + 1 });
     fan.end_face();
   }
-  t0 = std::chrono::steady_clock::now();
   CHECK_RESULT(hot_tools::polygon_soup_to_mesh(fan, sm), HOT::OK, "");
+  CHECK(num_vertices(sm) == k + 2 && num_faces(sm) == k);
   CHECK_RESULT(HOT::check_mesh(sm, HOT::Disk_type), HOT::OK, "");
   std::vector<SM::Vertex_index> lm;
   CHECK_RESULT(HOT::check_landmarks(sm, { 0, 1, 1000, 100000, k + 1 }, HOT::Disk_type, lm), HOT::OK, "");
-  const double hub = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cout << "  fan of " << k << " triangles around one vertex: " << hub << " s" << std::endl;
-  CHECK_MSG(hub < 2.0, "fan too slow: " << hub << " s");
+  CHECK(lm.size() == 5);
 }
 
 // ===========================================================================

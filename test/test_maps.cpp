@@ -482,7 +482,10 @@ TEST_CASE(round_trip)
   }
 }
 
-// f_BC(f_AB(x)) == f_AC(x) for every vertex x of A
+// f_BC(f_AB(x)) == f_AC(x) for every vertex x of A, to 1e-13 of the diagonal: what the README
+// and the manual claim for such meshes (about 1e-14: each map is exact up to the rounding of
+// the tile's coordinates, 1e-16, relative to the size in the tile of the triangles the
+// images fall into). Where those are far smaller, that rounding grows: collection_polyhedron_3.
 static void check_cycle(const Embedded& a, const Embedded& b, const Embedded& c, HOT::Interpolation_model m)
 {
   const std::vector<Location> ab = HOT::map_vertices(a.mesh, a.uv, b.loc(m));
@@ -498,7 +501,7 @@ static void check_cycle(const Embedded& a, const Embedded& b, const Embedded& c,
   }
   std::cout << "  cycle " << a.name << " -> " << b.name << " -> " << c.name << " vs " << a.name << " -> " << c.name
             << " (" << model_name(m) << "): worst " << worst << " x diagonal of " << c.name << std::endl;
-  CHECK_MSG(worst < 1e-8, "cycle consistency " << a.name << ", " << b.name << ", " << c.name << ": " << worst);
+  CHECK_MSG(worst < 1e-13, "cycle consistency " << a.name << ", " << b.name << ", " << c.name << ": " << worst);
 }
 
 TEST_CASE(cycle_consistency)
@@ -1019,7 +1022,7 @@ TEST_CASE(collection_parallel_and_cycle_consistent)
       for(std::size_t c = 0; c < 4; ++c)
         if(a != b && b != c && a != c) worst = std::max(worst, par->cycle_consistency_error(a, b, c));
   std::cout << "  collection of 4: cycle consistency " << worst << " of the diagonal over 24 triples" << std::endl;
-  CHECK(worst < 1e-9);
+  CHECK_MSG(worst < 1e-13, "cycle consistency " << worst); // (the claim, about 1e-14: see check_cycle)
   // landmarks map onto landmarks, in the class-wide order given
   const auto& f01 = par->map(0, 1);
   for(std::size_t i = 0; i < lm.size(); ++i) {
@@ -1125,7 +1128,10 @@ TEST_CASE(collection_polyhedron_3)
   CHECK(failed == 0);
   CHECK(worst_landmark == 0);
   CHECK(worst_identity == 0);
-  CHECK(worst_cycle < 1e-9);
+  // not the 1e-14 of check_cycle: measured 2.4e-10 on these 7-landmark hands (3e-14 on the
+  // 9-landmark ones of collection_parallel_and_cycle_consistent); the manual's second claim:
+  // up to 1e-9 of the diagonal in general (6.7e-10 in bench_collection)
+  CHECK_MSG(worst_cycle < 1e-9, "cycle consistency " << worst_cycle);
   CHECK(worst_types < 1e-6);
 }
 

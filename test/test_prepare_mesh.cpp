@@ -621,6 +621,35 @@ TEST_CASE(coincident_corners)
   CHECK(!c.r);
 }
 
+// 11c. found by replaying the fuzz corpus in a release build: the pentagon a b c d e with
+// a = (0,0,0), b = (20,1,0), c = (1,0,0), d = (0,-1,0), e = (1,0,-1) has the Newell normal
+// (1, 0, -1) (by hand: the edges d-e and e-a give (1, 1, 1) and (0, -1, 0), a-b, b-c and c-d
+// give (0, 0, -2)), and e - a = (1, 0, -1) is along it: a and e project onto one point of
+// the polygon's plane. PMP::triangulate_faces() inserts both into a constrained Delaunay
+// triangulation of that plane, whose precondition (distinct constraint ends) only assertions
+// checked: a crash without them. Such a polygon is filled as a hole in 3D instead: a disk of
+// three triangles on the five corners.
+TEST_CASE(polygon_with_coincident_projections)
+{
+  const std::vector<Point> pts{Point(0, 0, 0), Point(20, 1, 0), Point(1, 0, 0), Point(0, -1, 0), Point(1, 0, -1)};
+  namespace P = HOT::internal::preparation;
+  P::Work_mesh pentagon, planar;
+  std::vector<P::Work_vertex> vs, ws;
+  for(const Point& p : pts) vs.push_back(pentagon.add_vertex(p));
+  const P::Work_face f = pentagon.add_face(vs);
+  CHECK(f != P::Work_face());
+  CHECK(CGAL::Polygon_mesh_processing::compute_face_normal(f, pentagon) * K::Vector_3(0, 1, 0) == 0);
+  CHECK(P::has_coincident_projections(pentagon, f));
+  // a convex planar pentagon (the regular one): no two corners coincide in projection
+  for(int i = 0; i < 5; ++i) ws.push_back(planar.add_vertex(Point(std::cos(1.2566370614359172 * i), std::sin(1.2566370614359172 * i), 0)));
+  const P::Work_face g = planar.add_face(ws);
+  CHECK(g != P::Work_face() && !P::has_coincident_projections(planar, g));
+  const Run x = prepare(Soup{pts, {{0, 1, 2, 3, 4}}});
+  CHECK_OK(x);
+  CHECK(x.prep.polygons_triangulated == 1 && x.prep.triangles_from_polygons == 3);
+  CHECK(x.prep.type == HOT::Disk_type && !CGAL::is_closed(x.out) && euler_characteristic(x.out) == 1);
+}
+
 // 12. the mesh interface (Polyhedron_3, Surface_mesh) gives the soup's result
 struct Flat
 {

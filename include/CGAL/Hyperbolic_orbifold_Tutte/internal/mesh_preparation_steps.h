@@ -12,6 +12,7 @@
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -72,6 +74,53 @@ inline Status build_work_mesh(const Soup& soup, Work& w, std::size_t number_of_i
   return Status();
 }
 
+// Whether two vertices of polygon f project onto one point of the plane of its Newell normal,
+// to 1e-9 of the polygon's extent there (a conservative test of what CGAL's
+// Projection_traits_3 compares, in double: equal there means within rounding here).
+inline bool has_coincident_projections(const Work_mesh& m, Work_face f)
+{
+  typedef Kernel::Vector_3 Vector;
+  const Vector n = CGAL::Polygon_mesh_processing::compute_face_normal(f, m);
+  if(n == CGAL::NULL_VECTOR)
+    return false; // (triangulate_face() refuses such a polygon itself)
+  // an orthonormal basis (b1, b2) of the plane
+  const Vector a = std::abs(n.x()) < std::abs(n.y()) ? (std::abs(n.x()) < std::abs(n.z()) ? Vector(1, 0, 0) : Vector(0, 0, 1))
+                                                     : (std::abs(n.y()) < std::abs(n.z()) ? Vector(0, 1, 0) : Vector(0, 0, 1));
+  Vector b1 = CGAL::cross_product(n, a);
+  b1 = b1 / std::sqrt(b1.squared_length());
+  Vector b2 = CGAL::cross_product(n, b1);
+  b2 = b2 / std::sqrt(b2.squared_length());
+  std::vector<std::pair<double, double> > q;
+  double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+  for(Work_vertex v : vertices_around_face(halfedge(f, m), m)) {
+    const Vector p = m.point(v) - CGAL::ORIGIN;
+    q.emplace_back(p * b1, p * b2);
+    lo[0] = (std::min)(lo[0], q.back().first);
+    hi[0] = (std::max)(hi[0], q.back().first);
+    lo[1] = (std::min)(lo[1], q.back().second);
+    hi[1] = (std::max)(hi[1], q.back().second);
+  }
+  const double tol = 1e-9 * (std::max)(hi[0] - lo[0], hi[1] - lo[1]);
+  if(!(tol > 0))
+    return true; // every vertex projects onto one point (or a coordinate is not finite)
+  // a grid of cells of size tol (at most 1e9 + 1 per side): a coincident pair is in one cell
+  // or in neighbouring ones; each cell holds a point at most, or the test has answered
+  std::map<std::pair<long long, long long>, std::size_t> cell;
+  for(std::size_t i = 0; i < q.size(); ++i) {
+    const long long cx = static_cast<long long>(std::floor((q[i].first - lo[0]) / tol));
+    const long long cy = static_cast<long long>(std::floor((q[i].second - lo[1]) / tol));
+    for(long long dx = -1; dx <= 1; ++dx)
+      for(long long dy = -1; dy <= 1; ++dy) {
+        const auto it = cell.find(std::make_pair(cx + dx, cy + dy));
+        if(it != cell.end() && std::abs(q[it->second].first - q[i].first) <= tol &&
+           std::abs(q[it->second].second - q[i].second) <= tol)
+          return true;
+      }
+    cell.emplace(std::make_pair(cx, cy), i);
+  }
+  return false;
+}
+
 inline Status triangulate_polygons(Work& w, Mesh_preparation& prep)
 {
   for(Work_face f : faces(w.mesh)) {
@@ -83,8 +132,20 @@ inline Status triangulate_polygons(Work& w, Mesh_preparation& prep)
   }
   if(prep.polygons_triangulated == 0)
     return Status();
-  if(!CGAL::Polygon_mesh_processing::triangulate_faces(w.mesh))
-    return Status::failure(ERROR_NON_TRIANGULAR_MESH, "a polygon of the mesh could not be triangulated");
+  // CGAL's triangulate_faces(), face by face in the same order; but a polygon two of whose
+  // vertices project onto one point of its (Newell) plane breaks the precondition of the
+  // constrained Delaunay triangulation it uses, which only assertions check (a crash in a
+  // release build, found by replaying the fuzz corpus): such a polygon is filled as a hole
+  // (PMP::triangulate_hole_polyline, in 3D) instead
+  std::vector<Work_face> polygons;
+  for(Work_face f : faces(w.mesh))
+    if(degree(f, w.mesh) > 3)
+      polygons.push_back(f);
+  for(Work_face f : polygons) {
+    const bool cdt = !has_coincident_projections(w.mesh, f);
+    if(!CGAL::Polygon_mesh_processing::triangulate_face(f, w.mesh, CGAL::parameters::use_delaunay_triangulation(cdt)))
+      return Status::failure(ERROR_NON_TRIANGULAR_MESH, "a polygon of the mesh could not be triangulated");
+  }
   // a diagonal of a polygon may already be an edge of the mesh (a non-planar polygon folded
   // over its neighbours): the result is then not a valid surface, which later steps need
   if(!CGAL::is_valid_polygon_mesh(w.mesh) || !CGAL::is_triangle_mesh(w.mesh))
