@@ -98,6 +98,11 @@ struct Embedding_statistics : public Solver_statistics
   /// the order of every cone of the tile (cone angle \f$2\pi/p\f$), in the order of the cut
   /// (the landmarks as `landmark_order` lists them): 2 for all unless `cone_orders` was given
   std::vector<int> cone_orders;
+  /// the genus of the mesh: 0 for the sphere and disk types; \f$ g \ge 1 \f$ for a closed
+  /// mesh cut open along a graph (\ref HOT_Genus)
+  int genus = 0;
+  /// genus \f$ g \ge 1 \f$: the number of corners of the tile (the polygon of the cut graph)
+  int tile_corners = 0;
   /// \var time_setup
   /// seconds spent checking the input, cutting the mesh and setting up the problem
   /// \var time_initialization

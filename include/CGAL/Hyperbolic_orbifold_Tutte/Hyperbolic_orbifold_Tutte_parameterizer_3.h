@@ -14,6 +14,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cones_along_seam.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/embedding_pipeline.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>
@@ -210,7 +211,28 @@ public:
     st = Embedding_statistics();
     const int k = static_cast<int>(landmarks.size());
     Tile tile;
-    if(orders_.empty()) {
+    const long long genus = type_ == Sphere_type ? internal::closed_mesh_genus(mesh.mesh()) : 0;
+    if(genus > 0) { // a surface of genus g >= 1: the tile is the polygon of the cut graph (the seams)
+      const std::vector<int> orders = orders_.empty() ? std::vector<int>(k, 2) : orders_;
+      if(static_cast<int>(orders.size()) != k) {
+        st.message = std::to_string(orders.size()) + " cone orders are given for " + std::to_string(k) +
+                     " landmarks (one per landmark is needed)";
+        return ERROR_WRONG_PARAMETER;
+      }
+      for(int p : orders)
+        if(p < 2) {
+          st.message = "the cone orders must be integers of at least 2 (a cone of order p has angle 2 pi / p)";
+          return ERROR_WRONG_PARAMETER;
+        }
+      const Status s = internal::cut_graph_tile(mesh, bhd, landmarks, static_cast<int>(genus), orders, tile, traits_);
+      if(!s) {
+        st.message = s.message;
+        return s.code;
+      }
+      st.cone_orders = orders;
+      st.genus = static_cast<int>(genus);
+      st.tile_corners = tile.number_of_corners();
+    } else if(orders_.empty()) {
       if(k < 5) {
         st.message = "at least 5 landmarks are needed, got " + std::to_string(k);
         return ERROR_TOO_FEW_LANDMARKS;

@@ -29,25 +29,27 @@ The topology of the target orbifold.
 */
 enum Orbifold_type
 {
-  Sphere_type, ///< a sphere with cone points (for closed genus-0 meshes)
-  Disk_type    ///< a disk with corner points on its boundary (for meshes with one boundary loop)
+  Sphere_type, ///< a closed surface with cone points (for closed meshes: a sphere for genus 0, a surface of genus g otherwise)
+  Disk_type,   ///< a disk with corner points on its boundary (for meshes with one boundary loop)
+  Closed_type = Sphere_type ///< another name of `Sphere_type`, for closed meshes of any genus
 };
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteMainClasses
 
-The signature of a genus-0 orbifold with at most one boundary loop, in Conway's
-notation: cone points of orders \f$ n_i \f$ (cone angle \f$ 2\pi/n_i \f$) and, on the
-boundary, corner reflectors of orders \f$ m_j \f$ (corner angle \f$ \pi/m_j \f$).
-Its orbifold Euler characteristic is
-\f$ \chi = 2 - \sum_i (1 - 1/n_i) \f$ without boundary and
+The signature of an orientable orbifold: a closed surface of genus \f$ g \f$ with cone
+points of orders \f$ n_i \f$ (cone angle \f$ 2\pi/n_i \f$), or a disk (genus 0, one boundary
+loop) with corner reflectors of orders \f$ m_j \f$ (corner angle \f$ \pi/m_j \f$) on its
+boundary, in Conway's notation. Its orbifold Euler characteristic is
+\f$ \chi = 2 - 2g - \sum_i (1 - 1/n_i) \f$ without boundary and
 \f$ \chi = 1 - \sum_i (1 - 1/n_i) - \frac12 \sum_j (1 - 1/m_j) \f$ with one boundary;
 it is hyperbolic if and only if \f$ \chi < 0 \f$, and its hyperbolic area is then
 \f$ -2\pi\chi \f$ (Gauss-Bonnet).
 
-The package currently builds tiles for two families (paper, section 3): sphere type
-with \f$k\f$ cones of angle \f$\pi\f$ (\f$ n_i = 2 \f$) and disk type with \f$k\f$ corners
-of angle \f$\pi/2\f$ (\f$ m_j = 2 \f$); both are hyperbolic exactly when \f$ k \ge 5 \f$.
+The package builds tiles for: sphere type (genus 0) with cones of any orders, the paper's
+families (section 3) with \f$k \ge 5\f$ cones of angle \f$\pi\f$ among them; disk type with
+\f$k \ge 5\f$ corners of angle \f$\pi/2\f$; and closed surfaces of genus \f$ g \ge 1 \f$ with
+cones of any orders, whose tile is the polygon of a cut graph (`make_cut_graph_tile()`).
 */
 class Orbifold_signature
 {
@@ -55,6 +57,9 @@ public:
   Orbifold_signature() : type_(Sphere_type) {}
   /// the signature of the given type with cone (sphere type) or corner (disk type) orders `orders`
   Orbifold_signature(Orbifold_type type, std::vector<int> orders) : type_(type), orders_(std::move(orders)) {}
+  /// the closed surface of genus `genus` with cones of orders `orders` (`Sphere_type`; genus 0: a sphere)
+  Orbifold_signature(int genus, std::vector<int> orders)
+    : type_(Sphere_type), genus_(genus < 0 ? 0 : genus), orders_(std::move(orders)) {}
 
   /// sphere type with `k` cones of angle \f$\pi\f$
   static Orbifold_signature sphere(int k) { return Orbifold_signature(Sphere_type, std::vector<int>(k < 0 ? 0 : k, 2)); }
@@ -63,6 +68,8 @@ public:
 
   /// sphere type or disk type
   Orbifold_type type() const { return type_; }
+  /// the genus of the underlying surface (0 for disk type)
+  int genus() const { return genus_; }
   /// number of cones (sphere type) or boundary corners (disk type)
   int number_of_cones() const { return static_cast<int>(orders_.size()); }
   /// the order \f$ n \f$ of cone `i`
@@ -73,7 +80,7 @@ public:
   /// the orbifold Euler characteristic
   double euler_characteristic() const
   {
-    double chi = (type_ == Sphere_type) ? 2.0 : 1.0;
+    double chi = (type_ == Sphere_type) ? 2.0 - 2.0 * genus_ : 1.0;
     for(int n : orders_)
       chi -= (type_ == Sphere_type ? 1.0 : 0.5) * (1.0 - 1.0 / n);
     return chi;
@@ -85,6 +92,7 @@ public:
 
 private:
   Orbifold_type type_;
+  int genus_ = 0;
   std::vector<int> orders_;
 };
 
@@ -151,7 +159,7 @@ public:
       side_pairings_ld_.push_back(Isometry_ld(g));
     cone_corners_.assign(signature_.number_of_cones(), -1);
     for(std::size_t i = 0; i < corners_.size(); ++i)
-      if(cone_corners_[corner_cones_[i]] < 0)
+      if(corner_cones_[i] >= 0 && cone_corners_[corner_cones_[i]] < 0) // (-1: a corner that is no cone)
         cone_corners_[corner_cones_[i]] = static_cast<int>(i);
   }
 
@@ -173,7 +181,8 @@ public:
   const Point_2& corner(int i) const { return corners_[i]; }
   /// the corners, counterclockwise
   const std::vector<Point_2>& corners() const { return corners_; }
-  /// the cone of which corner `i` is a copy
+  /// the cone of which corner `i` is a copy; -1 for a corner that is no cone (a vertex of the
+  /// cut graph of a surface of genus \f$ g \ge 1 \f$, where its copies' angles add up to \f$2\pi\f$)
   int corner_cone(int i) const { return corner_cones_[i]; }
   /// the tile's interior angle at corner `i`
   double corner_angle(int i) const { return corner_angles_[i]; }
@@ -496,12 +505,15 @@ Error_code make_orbifold_tile(Orbifold_type type, int k, Orbifold_tile<Traits>& 
 /// \param signature a signature whose orders are all 2
 /// \param tile receives the tile
 /// \param traits the geometric traits stored in the tile
-/// \return `OK`, `ERROR_WRONG_PARAMETER` when an order is not 2 (not built yet), or
-/// `ERROR_NOT_HYPERBOLIC` when there are fewer than 5 cones
+/// \return `OK`, `ERROR_WRONG_PARAMETER` when an order is below 2, for disk type when an
+/// order is not 2 (not built yet), and for genus \f$ g \ge 1 \f$ (see `make_cut_graph_tile()`),
+/// or `ERROR_NOT_HYPERBOLIC` when the orbifold is not hyperbolic
 template <class Traits>
 Error_code make_orbifold_tile(const Orbifold_signature& signature, Orbifold_tile<Traits>& tile,
                               const Traits& traits = Traits())
 {
+  if(signature.genus() > 0)
+    return ERROR_WRONG_PARAMETER; // a surface of genus g >= 1: its tile is the polygon of a cut graph (make_cut_graph_tile())
   const int k = signature.number_of_cones();
   bool all_two = true;
   for(int i = 0; i < k; ++i) {
@@ -519,6 +531,104 @@ Error_code make_orbifold_tile(const Orbifold_signature& signature, Orbifold_tile
   for(int i = 0; i < k; ++i)
     alpha[i] = CGAL_PI / signature.order(i);
   return internal::double_polygon_into_sphere_tile(signature, internal::tangential_polygon(alpha), alpha, tile, traits);
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+builds the tile of a closed orbifold of genus \f$ g \ge 1 \f$ (`signature`) cut open along a
+graph into a disk: the polygon whose corners, counterclockwise, are the copies of the graph's
+nodes along the disk's border (a node is a vertex of the cut graph whose degree is not 2, or
+a cone), and whose sides, the copies of the graph's edges between nodes, are glued in pairs.
+
+Corner `i` is a copy of node `corner_node[i]`; `node_cone[n]` is the cone of node `n` (an
+index into the signature's orders) or -1; side `i` (from corner `i` to corner `i+1`) is a copy
+of the edge that side `paired_side[i]` runs along in the opposite direction, so corner `i` is
+a copy of the node of corner `paired_side[i] + 1` and corner `i+1` of that of corner
+`paired_side[i]`.
+
+The polygon: every copy of a node with \f$ d \f$ copies and order \f$ p \f$ (1 when it is no
+cone) has the angle \f$ 2\pi/(p\,d) \f$, so that the copies of a node add up to its cone angle
+(\f$2\pi\f$ for a regular point); the polygon with these angles whose sides touch a circle about
+the origin (tangential) has equal lengths on paired sides, which the side pairings (the
+orientation-preserving isometries mapping side `i` onto side `paired_side[i]` reversed)
+therefore glue. By Poincar&eacute;'s polygon theorem they generate a Fuchsian group for which
+the polygon is a fundamental domain of the orbifold. Its area is the signature's
+(Gauss-Bonnet), which is how a cut graph that does not fit the signature is recognised.
+
+\return `OK`; `ERROR_NOT_HYPERBOLIC` when the signature is not hyperbolic;
+`ERROR_WRONG_PARAMETER` when the data are inconsistent (sizes, a pairing that is not an
+involution or whose corners are not copies of the same nodes, a cone without a node, a node
+of one copy that is no cone, or a polygon whose area is not the signature's). The tile is left
+unchanged on failure.
+*/
+template <class Traits>
+Error_code make_cut_graph_tile(const Orbifold_signature& signature, const std::vector<int>& corner_node,
+                               const std::vector<int>& node_cone, const std::vector<int>& paired_side,
+                               Orbifold_tile<Traits>& tile, const Traits& traits = Traits())
+{
+  typedef Orbifold_tile<Traits> Tile;
+  typedef typename Tile::Isometry Isometry;
+  typedef typename Isometry::Complex C;
+  typedef typename Tile::Point_2 Point_2;
+  typedef typename Tile::FT FT;
+  if(signature.type() != Sphere_type || !signature.is_hyperbolic())
+    return ERROR_NOT_HYPERBOLIC;
+  const int n = static_cast<int>(corner_node.size());
+  const int nodes = static_cast<int>(node_cone.size());
+  if(n < 3 || static_cast<int>(paired_side.size()) != n)
+    return ERROR_WRONG_PARAMETER;
+  std::vector<int> copies(nodes, 0), cone_seen(signature.number_of_cones(), 0);
+  for(int c : corner_node) {
+    if(c < 0 || c >= nodes)
+      return ERROR_WRONG_PARAMETER;
+    ++copies[c];
+  }
+  for(int m = 0; m < nodes; ++m) {
+    const int cone = node_cone[m];
+    if(cone >= signature.number_of_cones() || (cone >= 0 && cone_seen[cone]++ > 0) || copies[m] == 0 ||
+       (cone < 0 && copies[m] < 2))
+      return ERROR_WRONG_PARAMETER;
+  }
+  for(int seen : cone_seen)
+    if(seen != 1)
+      return ERROR_WRONG_PARAMETER;
+  for(int i = 0; i < n; ++i) {
+    const int j = paired_side[i];
+    if(j < 0 || j >= n || j == i || paired_side[j] != i || corner_node[i] != corner_node[(j + 1) % n] ||
+       corner_node[(i + 1) % n] != corner_node[j])
+      return ERROR_WRONG_PARAMETER;
+  }
+  std::vector<double> alpha(n);
+  std::vector<int> cones(n);
+  double turn = 0;
+  for(int i = 0; i < n; ++i) {
+    const int m = corner_node[i];
+    const int p = node_cone[m] >= 0 ? signature.order(node_cone[m]) : 1;
+    alpha[i] = 2 * CGAL_PI / (p * copies[m]);
+    cones[i] = node_cone[m];
+    turn += CGAL_PI - alpha[i];
+  }
+  const double area = turn - 2 * CGAL_PI; // (n - 2) pi minus the angles
+  if(!(std::abs(area - signature.area()) <= 1e-9 * (1.0 + signature.area())))
+    return ERROR_WRONG_PARAMETER; // the cut graph's Euler characteristic is not the signature's
+  const std::vector<C> p = internal::tangential_polygon(alpha);
+  auto to_point = [](const C& z) { return Point_2(FT(z.real()), FT(z.imag())); };
+  // the isometry taking a to the origin and b onto the positive real axis
+  auto frame = [](const C& a, const C& b) {
+    const Isometry to0 = Isometry::translation_to_origin(a);
+    return Isometry(Isometry::rotation(-std::arg(to0.apply(b))) * to0);
+  };
+  std::vector<Point_2> corners;
+  std::vector<Isometry> pairings;
+  for(int i = 0; i < n; ++i) {
+    corners.push_back(to_point(p[i]));
+    const int j = paired_side[i];
+    // side i (p_i -> p_{i+1}) onto side j reversed (p_{j+1} -> p_j)
+    pairings.push_back(frame(p[(j + 1) % n], p[j]).inverse() * frame(p[i], p[(i + 1) % n]));
+  }
+  tile = Tile(signature, corners, cones, alpha, paired_side, pairings, traits);
+  return OK;
 }
 
 namespace internal {

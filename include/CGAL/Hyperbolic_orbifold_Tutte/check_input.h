@@ -116,7 +116,9 @@ boundary loop). It runs, in this order, and stops at the first failure:
     of that size underflows (edges longer than about 1e77 or all shorter than about 1e-77:
     rescale the mesh); the solver would otherwise fail with a misleading reason;
  7. `ERROR_SEVERAL_COMPONENTS`: the faces form more than one connected component;
- 8. `ERROR_WRONG_TOPOLOGY`: sphere type: not closed, or V-E+F != 2 (genus > 0); disk type:
+ 8. `ERROR_WRONG_TOPOLOGY`: sphere (closed) type: not closed, or V-E+F odd or above 2 (a closed
+    mesh of any genus is accepted: genus 0 is the sphere type, genus \f$ g \ge 1 \f$ is cut open along
+    a graph, \ref HOT_Genus); disk type:
     not exactly one boundary loop, or V-E+F != 1; automatic type: neither closed nor one
     boundary loop, or wrong genus for the detected type; when there are boundary loops too
     many, the message names two border vertices with equal coordinates if there are some
@@ -218,7 +220,8 @@ Status check_landmarks(const TriangleMesh& tm,
   if(k < minimum) {
     std::ostringstream os;
     os << k << " landmark" << (k == 1 ? " is" : "s are") << " given, but the " << internal::orbifold_type_name(type)
-       << "-type orbifold needs at least " << minimum << (type == Sphere_type && minimum == minimum_number_of_landmarks ? " (3 with cone orders above 2)" : "");
+       << "-type orbifold needs at least " << minimum << (type == Sphere_type && minimum == minimum_number_of_landmarks ? " (3 with cone orders above 2)" : "")
+       << (type == Sphere_type && minimum == 1 ? " on a surface of genus 1 (a torus with no cone is flat, not hyperbolic)" : "");
     return Status::failure(ERROR_TOO_FEW_LANDMARKS, os.str());
   }
 
@@ -262,6 +265,21 @@ Status check_landmarks(const TriangleMesh& tm,
   for(std::size_t i = 0; i < k; ++i)
     landmarks_out.push_back(verts[landmark_indices[i]]);
   return Status();
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+the fewest landmarks (cones) that make the orbifold of a mesh hyperbolic: on a closed mesh of
+genus 0, 5 cones of angle \f$\pi\f$, or 3 when cone orders are given (\f$(2,3,7)\f$...); on a
+closed mesh of genus 1, one cone; of genus 2 or more, none; on a disk, 5 right-angled corners.
+*/
+inline std::size_t minimum_number_of_landmarks_for(Orbifold_type type, long long genus, bool cone_orders_given)
+{
+  if(type == Sphere_type && genus >= 2)
+    return 0;
+  if(type == Sphere_type && genus == 1)
+    return 1;
+  return (cone_orders_given && type == Sphere_type) ? 3 : minimum_number_of_landmarks;
 }
 
 /*!

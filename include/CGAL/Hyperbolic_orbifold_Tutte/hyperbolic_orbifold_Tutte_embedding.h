@@ -132,12 +132,14 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   const std::vector<int> orders = choose_parameter(get_parameter(np, internal_np::cone_orders), std::vector<int>());
   Orbifold_type type = Sphere_type;
   Status r = internal::prepare_mesh(tm, vpm, np, type);
+  const long long genus = (r && type == Sphere_type) ? internal::closed_mesh_genus(tm) : 0;
   if(r)
-    r = check_landmark_vertices(tm, landmarks, type, orders.empty() ? minimum_number_of_landmarks : 3);
+    r = check_landmark_vertices(tm, landmarks, type, minimum_number_of_landmarks_for(type, genus, !orders.empty()));
   std::vector<vertex_descriptor> ordered;
-  if(r)
+  if(r) // (genus g >= 1: the cut graph joins the landmarks to the handle loops in any order)
     r = internal::order_landmarks(tm, vpm, landmarks, type,
-                                  choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order),
+                                  genus > 0 ? Given_order
+                                            : choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order),
                                   ordered, st.landmark_order);
   std::vector<int> ordered_orders; // (in the order of the cut)
   if(r && !orders.empty()) {
@@ -154,7 +156,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   Mesh& mesh = seams.mesh;
   typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
   if(r)
-    r = internal::cut_open(tm, vpm, ordered, type, seams, bhd);
+    r = internal::cut_open(tm, vpm, ordered, type, seams, bhd, genus);
   if(!r)
     return fail(r.code, r.message);
   const double time_cut = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -106,7 +106,7 @@ Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, cons
     // expected angle sums per base vertex
     std::vector<double> expected(P.n_base, 2 * CGAL_PI);
     for(int v = 0; v < P.n; ++v) {
-      if(P.corner[v] >= 0) {
+      if(P.corner[v] >= 0 && tile.corner_cone(P.corner[v]) >= 0) { // (a corner that is no cone: 2 pi)
         const int c = tile.corner_cone(P.corner[v]);
         expected[P.base[v]] = tile.signature().cone_angle(c);
       } else if(tile.type() == Disk_type && P.side[v] >= 0) {
@@ -148,7 +148,7 @@ Embedding_certificate certify_flat(const Flat_problem& P, const Tile& tile, cons
         if(!(d <= tolerance))
           ++cert.twin_failures;
       }
-      if(P.corner[v] >= 0) {
+      if(P.corner[v] >= 0 && tile.corner_cone(P.corner[v]) >= 0) {
         const auto& c = tile.corner(P.corner[v]);
         const double d = hdist(C(CGAL::to_double(c.x()), CGAL::to_double(c.y())), uv[v]);
         cert.max_cone_error = std::max(cert.max_cone_error, d);

@@ -12,6 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certify_and_repair.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_chart_solve.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_solver.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/recentring.h>
@@ -115,7 +116,9 @@ private:
   Error_code set_up()
   {
     std::string msg;
-    const Error_code ec = build_flat_topology(mesh_, bhd_, landmarks_, tile_, P_, base_vertex_, cut_vertices_, msg);
+    const Error_code ec = tile_.signature().genus() > 0 // (a surface of genus g >= 1 cut along a graph)
+                            ? build_cut_graph_topology(mesh_, bhd_, landmarks_, tile_, P_, base_vertex_, cut_vertices_, msg)
+                            : build_flat_topology(mesh_, bhd_, landmarks_, tile_, P_, base_vertex_, cut_vertices_, msg);
     if(ec != OK) {
       st_.problem_vertices.assign(P_.problem_vertices.begin(), P_.problem_vertices.end());
       return fail(ec, msg);
@@ -176,7 +179,8 @@ private:
     const Embedding_certificate& c = st_.certificate;
     const bool local_failure = !c.is_bijective() && c.points_outside_disk == 0 && c.twin_failures == 0 &&
                                c.cone_failures == 0 && c.border_failures == 0;
-    if(solved && local_failure && tiny_.count > 0) {
+    const bool genus_zero = tile_.signature().genus() == 0; // (charts and recentring: genus 0 only)
+    if(solved && local_failure && tiny_.count > 0 && genus_zero) {
       double radius = 0;
       Cone_charts probe;
       onto_cones_ = choose_cone_charts(P_, tile_, uv_, tiny_.flag, radius, probe);
@@ -185,7 +189,7 @@ private:
       st_.time_certificate = seconds_since(t3);
       return false;
     }
-    const bool recentring_tried = solved && local_failure && tiny_.count > 0 && settings_.recentring;
+    const bool recentring_tried = solved && local_failure && tiny_.count > 0 && settings_.recentring && genus_zero;
     if(recentring_tried) {
       const auto t4 = Clock::now();
       recentre(mesh_, bhd_, landmarks_, cut_vertices_, tile_, P_, settings_.solver, uv_, st_);

@@ -13,6 +13,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 
 #include <cstddef>
 #include <optional>
@@ -77,16 +78,25 @@ Status order_landmarks(const TriangleMesh& tm, VertexPointMap vpm,
   return Status();
 }
 
-// Cut: a sphere-type mesh along a simple path through the landmarks in order (seams held
+// Cut: a sphere-type mesh of genus 0 along a simple path through the landmarks in order, of
+// genus g >= 1 along a cut graph (internal/genus_cut.h) (seams held
 // in the storage's own flags, so the input mesh is not modified and may be const); a disk
 // is not cut. `bhd` is a border halfedge of the seam mesh.
 template <class TriangleMesh, class VertexPointMap>
 Status cut_open(const TriangleMesh& tm, VertexPointMap vpm,
                 const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& ordered,
                 Orbifold_type type, Seam_mesh_storage<TriangleMesh>& seams,
-                typename boost::graph_traits<typename Seam_mesh_storage<TriangleMesh>::Mesh>::halfedge_descriptor& bhd)
+                typename boost::graph_traits<typename Seam_mesh_storage<TriangleMesh>::Mesh>::halfedge_descriptor& bhd,
+                long long genus = 0)
 {
-  if(type == Sphere_type) {
+  if(type == Sphere_type && genus > 0) { // along a cut graph: handle loops and paths to the landmarks
+    std::vector<std::pair<int, int> > cut;
+    const Status r = compute_genus_cut_graph(tm, vpm, ordered, genus, cut);
+    if(!r)
+      return r;
+    if(!add_cut_graph_to_seam_mesh(seams.mesh, tm, cut))
+      return Status::failure(ERROR_CUT_FAILED, "the cut graph could not be marked on the seam mesh");
+  } else if(type == Sphere_type) {
     const Cut_result<TriangleMesh> cut = compute_cut_through_landmarks(tm, ordered, vpm);
     if(!cut.ok)
       return Status::failure(ERROR_CUT_FAILED, cut.message);

@@ -498,11 +498,11 @@ inline std::string wrong_topology_reason(Orbifold_type type, std::size_t b, long
   std::ostringstream os;
   if(type == Sphere_type) {
     if(b != 0)
-      os << "the sphere-type orbifold needs a closed genus-0 mesh, but the mesh has "
+      os << "the sphere-type (closed) orbifold needs a closed mesh, but the mesh has "
          << plural(b, "boundary loop", "boundary loops");
-    else if(chi != 2)
-      os << "the sphere-type orbifold needs a genus-0 mesh, but the mesh has genus " << genus
-         << " (V-E+F = " << chi << ")";
+    else if(chi > 2 || chi % 2 != 0)
+      os << "the sphere-type (closed) orbifold needs a closed connected orientable mesh, but V-E+F = " << chi
+         << " (genus " << genus << ")";
   } else {
     if(b == 0)
       os << "the disk-type orbifold needs a mesh with one boundary loop, but the mesh is closed";

@@ -73,8 +73,12 @@ void place_border(const Flat_problem& P, const Tile& tile, const std::vector<dou
   typedef Hyperbolic_isometry_2<double> Isometry;
   const std::vector<int>& loop = P.border_loop;
   for(int v : loop) {
-    if(P.corner[v] >= 0) {
+    if(P.corner[v] >= 0) { // (a free corner: a node of a genus-g cut graph, started at its corner)
       z[v] = P.fixed[v];
+      if(P.kind[v] == Free) {
+        x[P.var[v]] = z[v].real();
+        x[P.var[v] + 1] = z[v].imag();
+      }
     } else if(P.kind[v] == Free) { // sphere p-side: on the side's geodesic
       const int s = P.side[v];
       const auto& a = tile.corner(tile.side_source(s));
