@@ -71,6 +71,9 @@ const char* const usage_text =
   "      sum(1 - 1/p) > 2: 3 cones (2,3,7), (3,3,4), (2,4,5), 4 cones (2,2,2,3), 5 of any orders\n"
   "      --recentre: a part too squeezed for double in the tile (a long protrusion without\n"
   "      landmarks) may be solved in a moved frame; the report then gives the frame.\n"
+  "      A closed mesh of genus g >= 1 is detected and cut along a graph (2g shortest handle\n"
+  "      loops and the paths to the landmarks); it needs 1 landmark for g = 1, none for g >= 2\n"
+  "      (CONES may be an empty file); the report gives \"genus\" and the \"cut_graph\".\n"
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
   "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off]\n"
   "      [--report REPORT.json] [--cone-orders P1,P2,...] [REPAIR]\n"
@@ -249,8 +252,10 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
     svg.path(os, d.str(), "none", e == 0 ? "#1d3557" : "#9aa7b8", e == 0 ? 0.25 : 0.15);
   }
   svg.path(os, svg.geodesic_path(corners, true), "none", "#c1121f", 1.5);
-  for(int i = 0; i < n; ++i)
-    svg.dot(os, corners[i], 6, hot_tools::Poincare_svg::palette(tile.corner_cone(i), tile.number_of_cones(), 0.75, 1.0));
+  for(int i = 0; i < n; ++i) // (a corner that is no cone, a node of a genus-g cut graph: a small white dot)
+    svg.dot(os, corners[i], tile.corner_cone(i) < 0 ? 3 : 6,
+            tile.corner_cone(i) < 0 ? std::string("white")
+                                    : hot_tools::Poincare_svg::palette(tile.corner_cone(i), tile.number_of_cones(), 0.75, 1.0));
   (void)landmarks;
   svg.end(os);
 }
@@ -323,7 +328,7 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
 {
   const HOT::Orbifold_type type = job.request.type;
   HOT::Orbifold_tile<> tile;
-  HOT::make_orbifold_tile(HOT::Orbifold_signature(type, st.cone_orders), tile);
+  HOT::make_embedding_tile(type, st, tile);
   if(st.recentred)
     tile = tile.transformed(st.frame); // the tile of the written coordinates
 
@@ -332,8 +337,11 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
   files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr, &ch); });
   if(job.svg_path) {
     std::ostringstream title;
-    title << (type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold, " << landmarks.size() << " cones, "
-          << num_vertices(m) << " vertices, certified bijective";
+    if(st.genus > 0)
+      title << "closed surface of genus " << st.genus << ", " << landmarks.size() << " cones, ";
+    else
+      title << (type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold, " << landmarks.size() << " cones, ";
+    title << num_vertices(m) << " vertices, certified bijective";
     files.write(*job.svg_path, [&](std::ostream& os) { write_embedding_svg(os, m, uv, tile, landmarks, title.str()); });
   }
   if(job.report_path)
@@ -353,8 +361,9 @@ int run_embed(int argc, char** argv)
     read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, job.repair, m, landmarks, in, minimum_landmarks(job.orders));
   print_repair(job.request.mesh_path, in);
   job.request.type = type;
-  if(job.request.order.empty())
-    job.request.order = (type == HOT::Sphere_type) ? "tsp" : "given";
+  const long long genus = type == HOT::Sphere_type ? HOT::internal::closed_mesh_genus(m) : 0;
+  if(job.request.order.empty()) // (genus g >= 1: the cut graph joins the landmarks in any order)
+    job.request.order = (type == HOT::Sphere_type && genus == 0) ? "tsp" : "given";
   job.request.cones = file_indices(landmarks, in.file);
   job.request.input = &in.file;
   if(job.repair.snap_landmarks)
@@ -365,7 +374,7 @@ int run_embed(int argc, char** argv)
   const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts);
   write_embed_outputs(job, m, uv, charts, landmarks, st, in);
   std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
-            << (type == HOT::Sphere_type ? "sphere" : "disk") << " type) in "
+            << (genus > 0 ? "closed, genus " + std::to_string(genus) : std::string(type == HOT::Sphere_type ? "sphere" : "disk") + " type") << ") in "
             << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
             << st.iterations << " Newton iterations, certified bijective"
             << (st.recentred ? " in a recentred frame (given in the report)" : "")

@@ -37,9 +37,10 @@ Reads 0-based vertex indices (landmarks / cones) from a text file. The rule:
 Every index is a non-negative decimal integer (an optional '+' is allowed). A token that
 is not one (garbage, a negative number, "12abc", "1.0", a number that overflows 64 bits)
 gives ERROR_READ_FAILED with the token and its line; so do a missing / unreadable file
-and a file without index. The range and duplicates are checked by `check_landmarks()`.
+and a file without index (unless `allow_empty`, for a closed mesh of genus 2 or more, which needs
+no cone; a selection file's line 1 must still hold indices). The range and duplicates are checked by `check_landmarks()`.
 */
-inline HOT::Status read_landmarks(const std::string& path, std::vector<std::size_t>& indices)
+inline HOT::Status read_landmarks(const std::string& path, std::vector<std::size_t>& indices, bool allow_empty = false)
 {
   using namespace io_impl;
   indices.clear();
@@ -69,6 +70,8 @@ inline HOT::Status read_landmarks(const std::string& path, std::vector<std::size
     for(std::string_view f : fields)
       tokens.emplace_back(f, line);
   }
+  if(tokens.empty() && allow_empty && !selection)
+    return HOT::Status(); // (no cone: a closed mesh of genus 2 or more)
   if(tokens.empty())
     return read_fail(path + ": " + (selection ? "line 1 of the selection file holds no vertex index"
                                               : "the file holds no vertex index"));

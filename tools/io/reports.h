@@ -118,7 +118,27 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
   for(std::size_t i = 0; i < st.cone_orders.size(); ++i)
     os << (i ? ", " : "") << st.cone_orders[i];
   os << "],\n  \"landmark_order_reversed\": " << (st.landmark_order_reversed ? "true" : "false") << ",\n"
-     << "  \"cut_mesh_vertices\": " << st.number_of_vertices << ",\n"
+     << "  \"genus\": " << st.genus << ",\n";
+  if(st.genus > 0) { // the polygon of the cut graph (its tile: make_cut_graph_tile())
+    auto list = [&](const std::vector<int>& v, bool vertices) {
+      os << "[";
+      for(std::size_t i = 0; i < v.size(); ++i)
+        os << (i ? ", " : "")
+           << (vertices && request.input && request.input->repaired ? static_cast<long long>(request.input->prep.output_index[v[i]])
+                                                                      : static_cast<long long>(v[i]));
+      os << "]";
+    };
+    os << "  \"cut_graph\": {\"corner_nodes\": ";
+    list(st.cut_corner_nodes, false);
+    os << ", \"node_vertices\": ";
+    list(st.cut_node_vertices, true);
+    os << ", \"node_cones\": ";
+    list(st.cut_node_cones, false);
+    os << ", \"paired_sides\": ";
+    list(st.cut_paired_sides, false);
+    os << "},\n";
+  }
+  os << "  \"cut_mesh_vertices\": " << st.number_of_vertices << ",\n"
      << "  \"time_seconds\": {\"setup_and_cut\": " << st.time_setup << ", \"initialization\": "
      << st.time_initialization << ", \"optimization\": " << st.time_optimization << ", \"certificate\": "
      << st.time_certificate << "},\n"

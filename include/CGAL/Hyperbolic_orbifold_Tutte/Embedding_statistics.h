@@ -9,6 +9,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 
 #include <cstddef>
 #include <string>
@@ -101,8 +102,17 @@ struct Embedding_statistics : public Solver_statistics
   /// the genus of the mesh: 0 for the sphere and disk types; \f$ g \ge 1 \f$ for a closed
   /// mesh cut open along a graph (\ref HOT_Genus)
   int genus = 0;
-  /// genus \f$ g \ge 1 \f$: the number of corners of the tile (the polygon of the cut graph)
-  int tile_corners = 0;
+  /// \name Genus g >= 1: the polygon of the cut graph
+  /// The tile is `make_cut_graph_tile()` of `Orbifold_signature(genus, cone_orders)` and of these
+  /// (empty for genus 0): corner `i` of the tile is a copy of node `cut_corner_nodes[i]`, whose
+  /// mesh vertex is `cut_node_vertices[n]` (its index in `vertices(tm)`) and whose cone (in the
+  /// order of the cut) is `cut_node_cones[n]` or -1; side `i` is glued to side `cut_paired_sides[i]`.
+  /// @{
+  std::vector<int> cut_corner_nodes;
+  std::vector<int> cut_node_vertices;
+  std::vector<int> cut_node_cones;
+  std::vector<int> cut_paired_sides;
+  /// @}
   /// \var time_setup
   /// seconds spent checking the input, cutting the mesh and setting up the problem
   /// \var time_initialization
@@ -120,6 +130,24 @@ struct Embedding_statistics : public Solver_statistics
   /// (`ERROR_BOUNDARY_CHORD`: the ends of the offending edge)
   std::vector<std::size_t> problem_vertices;
 };
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+the tile in which an embedding of type `type` with statistics `st` was computed, in the
+coordinates the embedding was computed in (a recentred embedding's written coordinates are
+`st.frame` applied to them: see `Orbifold_tile::transformed()`): `make_cut_graph_tile()` of the cut
+graph's polygon for genus \f$ g \ge 1 \f$, `make_orbifold_tile()` of the signature with
+`st.cone_orders` otherwise.
+*/
+template <class Traits>
+Error_code make_embedding_tile(Orbifold_type type, const Embedding_statistics& st, Orbifold_tile<Traits>& tile,
+                               const Traits& traits = Traits())
+{
+  if(st.genus > 0)
+    return make_cut_graph_tile(Orbifold_signature(st.genus, st.cone_orders), st.cut_corner_nodes, st.cut_node_cones,
+                               st.cut_paired_sides, tile, traits);
+  return make_orbifold_tile(Orbifold_signature(type, st.cone_orders), tile, traits);
+}
 
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL

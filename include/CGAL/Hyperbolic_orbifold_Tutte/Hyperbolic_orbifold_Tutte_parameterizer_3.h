@@ -224,14 +224,18 @@ public:
           st.message = "the cone orders must be integers of at least 2 (a cone of order p has angle 2 pi / p)";
           return ERROR_WRONG_PARAMETER;
         }
-      const Status s = internal::cut_graph_tile(mesh, bhd, landmarks, static_cast<int>(genus), orders, tile, traits_);
+      internal::Cut_polygon poly;
+      const Status s = internal::cut_graph_tile(mesh, bhd, landmarks, static_cast<int>(genus), orders, tile, traits_, poly);
       if(!s) {
         st.message = s.message;
         return s.code;
       }
       st.cone_orders = orders;
       st.genus = static_cast<int>(genus);
-      st.tile_corners = tile.number_of_corners();
+      st.cut_corner_nodes = poly.corner_node;
+      st.cut_node_vertices = poly.node_base;
+      st.cut_node_cones = poly.node_cone;
+      st.cut_paired_sides = poly.paired_side;
     } else if(orders_.empty()) {
       if(k < 5) {
         st.message = "at least 5 landmarks are needed, got " + std::to_string(k);

@@ -10,6 +10,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
 
@@ -280,6 +281,19 @@ inline std::size_t minimum_number_of_landmarks_for(Orbifold_type type, long long
   if(type == Sphere_type && genus == 1)
     return 1;
   return (cone_orders_given && type == Sphere_type) ? 3 : minimum_number_of_landmarks;
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+the fewest landmarks for the mesh `tm` (`check_mesh()` passed for `type`): on a closed mesh of
+genus \f$ g \ge 1 \f$, `minimum_number_of_landmarks_for()` (1 or 0); otherwise `genus0_minimum`
+(5 for cones of angle \f$\pi\f$, 3 when cone orders are given).
+*/
+template <class TriangleMesh>
+std::size_t minimum_number_of_landmarks_of(const TriangleMesh& tm, Orbifold_type type, std::size_t genus0_minimum)
+{
+  const long long genus = type == Sphere_type ? internal::closed_mesh_genus(tm) : 0;
+  return genus > 0 ? minimum_number_of_landmarks_for(type, genus, false) : genus0_minimum;
 }
 
 /*!

@@ -239,10 +239,10 @@ Status analyse_cut_graph_mesh(const SeamMesh& mesh, typename boost::graph_traits
 template <class SeamMesh, class Tile>
 Status cut_graph_tile(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
                       const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
-                      int genus, const std::vector<int>& orders, Tile& tile, const typename Tile::Traits& traits)
+                      int genus, const std::vector<int>& orders, Tile& tile, const typename Tile::Traits& traits,
+                      Cut_polygon& poly)
 {
   Flat_problem P;
-  Cut_polygon poly;
   std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor> base_vertex;
   std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor> cut_vertices;
   const Status r = analyse_cut_graph_mesh(mesh, bhd, landmarks, P, poly, base_vertex, cut_vertices);
