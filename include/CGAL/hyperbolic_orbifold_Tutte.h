@@ -24,6 +24,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/prepare_mesh_for_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/cut_graph.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/read_cones.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>

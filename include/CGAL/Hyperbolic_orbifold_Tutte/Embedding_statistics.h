@@ -112,6 +112,9 @@ struct Embedding_statistics : public Solver_statistics
   std::vector<int> cut_node_vertices;
   std::vector<int> cut_node_cones;
   std::vector<int> cut_paired_sides;
+  /// the one-call function: the cut graph as vertex paths (vertex positions in `vertices(tm)`),
+  /// the given one or the computed one (`compute_cut_graph()`)
+  std::vector<std::vector<std::size_t> > cut_graph;
   /// @}
   /// \var time_setup
   /// seconds spent checking the input, cutting the mesh and setting up the problem

@@ -169,6 +169,17 @@ public:
   /// coordinates is then `tile.transformed(frame)`; `Embedding_locator` and the surface
   /// maps work with embeddings in the tile itself and refuse moved ones.
   void set_recentring(bool b) { settings_.recentring = b; }
+  /// genus \f$ g \ge 1 \f$: the tile's corner 0 is the corner where the border of the cut mesh,
+  /// running along the edge from `a` to `b` (the first edge of a cut graph given as paths), last
+  /// left a corner, so that two meshes cut along corresponding graphs get the same tile; by
+  /// default, the copy of the first landmark (else of the node with the smallest index) whose
+  /// border side leaves it towards the smallest vertex index.
+  void set_cut_graph_start(TM_vertex_descriptor a, TM_vertex_descriptor b)
+  {
+    start_[0] = a;
+    start_[1] = b;
+    has_start_ = true;
+  }
 
   /*!
   computes the embedding.
@@ -225,7 +236,17 @@ public:
           return ERROR_WRONG_PARAMETER;
         }
       internal::Cut_polygon poly;
-      const Status s = internal::cut_graph_tile(mesh, bhd, landmarks, static_cast<int>(genus), orders, tile, traits_, poly);
+      std::pair<int, int> start(-1, -1);
+      if(has_start_) {
+        const internal::Dense_index<TM_vertex_descriptor> base_of(vertices(mesh.mesh()));
+        const std::size_t a = base_of(start_[0]), b = base_of(start_[1]);
+        if(a == base_of.npos || b == base_of.npos) {
+          st.message = "the first edge of the cut graph is not an edge of the mesh";
+          return ERROR_WRONG_PARAMETER;
+        }
+        start = std::make_pair(static_cast<int>(a), static_cast<int>(b));
+      }
+      const Status s = internal::cut_graph_tile(mesh, bhd, landmarks, static_cast<int>(genus), orders, start, tile, traits_, poly);
       if(!s) {
         st.message = s.message;
         return s.code;
@@ -256,6 +277,10 @@ public:
     }
     Settings settings = settings_;
     settings.charts = with_charts;
+    if(genus > 0 && has_start_) {
+      const internal::Dense_index<TM_vertex_descriptor> base_of(vertices(mesh.mesh()));
+      settings.cut_graph_start = std::make_pair(static_cast<int>(base_of(start_[0])), static_cast<int>(base_of(start_[1])));
+    }
     internal::Seam_mesh_embedding<SeamMesh, Tile> job(mesh, bhd, landmarks, tile, settings, st);
     const Error_code ec = job.run();
     if(ec != OK)
@@ -317,6 +342,8 @@ public:
 private:
   Orbifold_type type_;
   std::vector<int> orders_;
+  TM_vertex_descriptor start_[2];
+  bool has_start_ = false;
   Traits traits_;
   typedef internal::Embedding_settings<TM_edge_descriptor> Settings;
   Settings settings_;

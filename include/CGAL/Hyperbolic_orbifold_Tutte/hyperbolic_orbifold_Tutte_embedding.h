@@ -150,13 +150,15 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
       for(std::size_t i : st.landmark_order)
         ordered_orders.push_back(orders[i]);
   }
-  // 2. cut: the seam mesh
+  // 2. cut: the seam mesh (genus g >= 1: along the given cut graph, or one computed here)
+  std::vector<std::vector<vertex_descriptor> > cut_paths =
+    choose_parameter(get_parameter(np, internal_np::cut_graph), std::vector<std::vector<vertex_descriptor> >());
   internal::Seam_mesh_storage<TriangleMesh> seams(tm);
   typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
   Mesh& mesh = seams.mesh;
   typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
   if(r)
-    r = internal::cut_open(tm, vpm, ordered, type, seams, bhd, genus);
+    r = internal::cut_open(tm, vpm, ordered, type, seams, bhd, genus, &cut_paths);
   if(!r)
     return fail(r.code, r.message);
   const double time_cut = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -171,6 +173,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
   parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
   parameterizer.set_cone_orders(ordered_orders);
+  if(genus > 0) // the tile's corner 0: where the border runs along the cut graph's first edge
+    parameterizer.set_cut_graph_start(cut_paths[0][0], cut_paths[0][1]);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
     const auto wmap = get_parameter(np, internal_np::edge_weight_map);
     parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });
@@ -188,6 +192,14 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
     ec = parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), &st);
   st.landmark_order = order_used;
   st.time_setup += time_cut;
+  if(genus > 0) {
+    const internal::Dense_index<vertex_descriptor> vindex(vertices(tm));
+    for(const auto& path : cut_paths) {
+      st.cut_graph.emplace_back();
+      for(vertex_descriptor v : path)
+        st.cut_graph.back().push_back(vindex(v));
+    }
+  }
   if(ec != OK)
     return ec;
 

@@ -40,6 +40,7 @@ enum frame_t { frame };
 enum chart_map_t { chart_map };
 enum charts_t { charts };
 enum cone_orders_t { cone_orders };
+enum cut_graph_t { cut_graph };
 enum maximum_hole_length_t { maximum_hole_length };
 enum keep_largest_component_t { keep_largest_component };
 enum split_boundary_chords_t { split_boundary_chords };
@@ -100,6 +101,12 @@ CGAL_HOT_NAMED_PARAMETER(charts)
 /// \f$\pi\f$). The orbifold must be hyperbolic, \f$\sum_i (1 - 1/p_i) > 2\f$: three cones such
 /// as (2,3,7), (3,3,4) or (2,4,5), four such as (2,2,2,3), five or more of any orders
 CGAL_HOT_NAMED_PARAMETER(cone_orders)
+/// `std::vector<std::vector<vertex_descriptor> >`: a closed mesh of genus \f$ g \ge 1 \f$ is cut
+/// along this graph, given as vertex paths (consecutive vertices joined by an edge; see
+/// `check_cut_graph()`), which must cut it into a disk and hold every landmark; the tile's corner
+/// 0 is set by the first path's first edge, so two meshes cut along corresponding graphs are
+/// embedded in the same tile and can be mapped (default: `compute_cut_graph()`, \ref HOT_Genus)
+CGAL_HOT_NAMED_PARAMETER(cut_graph)
 
 /// `double`: for `prepare_polygon_soup_for_embedding()`, the longest boundary loop that is
 /// filled as a hole, as a fraction of the diagonal of the mesh's bounding box (default 0.5)

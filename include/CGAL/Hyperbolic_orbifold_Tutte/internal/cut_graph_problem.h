@@ -38,10 +38,13 @@ struct Cut_polygon
 };
 
 // The polygon of the border loop `loop` of P's cut mesh (P.n, P.base, P.n_base set), with
-// `landmarks` the base indices of the cones. Corner 0: the first copy of the first landmark,
-// else of the node with the smallest base index.
+// `landmarks` the base indices of the cones. Corner 0 (so that two meshes cut along
+// corresponding graphs get the same polygon): with a start edge (a, b) (base indices; the first
+// edge of a cut graph given as paths), the corner where the border, running along the edge from
+// a to b, last left a corner; otherwise the copy of the first landmark (else of the node with the
+// smallest base index) whose side leaves it towards the smallest base index.
 inline Status cut_polygon_of_loop(const Flat_problem& P, std::vector<int> loop, const std::vector<int>& landmarks,
-                                  Cut_polygon& poly)
+                                  std::pair<int, int> start_edge, Cut_polygon& poly)
 {
   poly = Cut_polygon();
   const int L = static_cast<int>(loop.size());
@@ -55,19 +58,28 @@ inline Status cut_polygon_of_loop(const Flat_problem& P, std::vector<int> loop, 
                                                  std::to_string(landmarks[c]) + ") is not on the cut");
   }
   auto is_corner = [&](int v) { return cone_of_base[P.base[v]] >= 0 || copies[P.base[v]] != 2; };
+  auto base_at = [&](int i) { return P.base[loop[((i % L) + L) % L]]; };
   int start = -1;
-  for(int i = 0; i < L; ++i)
-    if(is_corner(loop[i])) {
-      const int b = P.base[loop[i]];
-      if(start < 0)
+  if(start_edge.first >= 0) {
+    for(int i = 0; i < L && start < 0; ++i)
+      if(base_at(i) == start_edge.first && base_at(i + 1) == start_edge.second)
         start = i;
-      const int sb = P.base[loop[start]];
-      const bool first_landmark = !landmarks.empty() && b == landmarks[0];
-      const bool start_is_first = !landmarks.empty() && sb == landmarks[0];
-      if(!start_is_first && (first_landmark || (landmarks.empty() && b < sb)))
+    if(start < 0)
+      return Status::failure(ERROR_CUT_FAILED, "the first edge of the cut graph (mesh vertices " + std::to_string(start_edge.first) +
+                                                 " to " + std::to_string(start_edge.second) + ") is not on the cut");
+    for(int j = 0; j < L && !is_corner(loop[start]); ++j)
+      start = (start + L - 1) % L;
+  } else {
+    int a = landmarks.empty() ? -1 : landmarks[0];
+    if(a < 0)
+      for(int i = 0; i < L; ++i)
+        if(is_corner(loop[i]) && (a < 0 || base_at(i) < a))
+          a = base_at(i);
+    for(int i = 0; i < L; ++i)
+      if(base_at(i) == a && (start < 0 || base_at(i + 1) < base_at(start + 1)))
         start = i;
-    }
-  if(start < 0)
+  }
+  if(start < 0 || !is_corner(loop[start]))
     return Status::failure(ERROR_CUT_FAILED, "the border of the cut mesh has no corner: the cut graph is a single loop");
   std::rotate(loop.begin(), loop.begin() + start, loop.end());
   std::unordered_map<int, int> node_of_base;
@@ -213,7 +225,7 @@ Status landmark_base_indices(const std::vector<TMVertex>& landmarks, const BaseI
 template <class SeamMesh>
 Status analyse_cut_graph_mesh(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
                               const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
-                              Flat_problem& P, Cut_polygon& poly,
+                              std::pair<int, int> start_edge, Flat_problem& P, Cut_polygon& poly,
                               std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& base_vertex,
                               std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor>& cut_vertices)
 {
@@ -229,9 +241,13 @@ Status analyse_cut_graph_mesh(const SeamMesh& mesh, typename boost::graph_traits
     ec = flat_border_loop(mesh, bhd, numbering, P, loop, message);
   if(ec != OK)
     return Status::failure(ec, message);
+  const long long chi = static_cast<long long>(P.n) - static_cast<long long>(P.edges.size()) + static_cast<long long>(P.faces.size());
+  if(chi != 1)
+    return Status::failure(ERROR_CUT_FAILED, "the seams do not cut the mesh into a disk (V-E+F of the cut mesh is " +
+                                               std::to_string(chi) + "): the cut graph must join 2g handle loops and the landmarks");
   std::vector<int> lm;
   const Status r = landmark_base_indices(landmarks, numbering.base_of, lm);
-  return r ? cut_polygon_of_loop(P, loop, lm, poly) : r;
+  return r ? cut_polygon_of_loop(P, loop, lm, start_edge, poly) : r;
 }
 
 // The tile of a closed mesh of genus `genus` >= 1 cut open along a graph (the seams of `mesh`)
@@ -239,13 +255,13 @@ Status analyse_cut_graph_mesh(const SeamMesh& mesh, typename boost::graph_traits
 template <class SeamMesh, class Tile>
 Status cut_graph_tile(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
                       const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
-                      int genus, const std::vector<int>& orders, Tile& tile, const typename Tile::Traits& traits,
-                      Cut_polygon& poly)
+                      int genus, const std::vector<int>& orders, std::pair<int, int> start_edge, Tile& tile,
+                      const typename Tile::Traits& traits, Cut_polygon& poly)
 {
   Flat_problem P;
   std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor> base_vertex;
   std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor> cut_vertices;
-  const Status r = analyse_cut_graph_mesh(mesh, bhd, landmarks, P, poly, base_vertex, cut_vertices);
+  const Status r = analyse_cut_graph_mesh(mesh, bhd, landmarks, start_edge, P, poly, base_vertex, cut_vertices);
   if(!r)
     return r;
   const Orbifold_signature sig(genus, orders);
@@ -263,13 +279,13 @@ Status cut_graph_tile(const SeamMesh& mesh, typename boost::graph_traits<SeamMes
 template <class SeamMesh, class Tile>
 Error_code build_cut_graph_topology(const SeamMesh& mesh, typename boost::graph_traits<SeamMesh>::halfedge_descriptor bhd,
                                     const std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& landmarks,
-                                    const Tile& tile, Flat_problem& P,
+                                    std::pair<int, int> start_edge, const Tile& tile, Flat_problem& P,
                                     std::vector<typename boost::graph_traits<typename SeamMesh::TriangleMesh>::vertex_descriptor>& base_vertex,
                                     std::vector<typename boost::graph_traits<SeamMesh>::vertex_descriptor>& cut_vertices,
                                     std::string& message)
 {
   Cut_polygon poly;
-  Status r = analyse_cut_graph_mesh(mesh, bhd, landmarks, P, poly, base_vertex, cut_vertices);
+  Status r = analyse_cut_graph_mesh(mesh, bhd, landmarks, start_edge, P, poly, base_vertex, cut_vertices);
   if(r && static_cast<int>(poly.corner_pos.size()) != tile.number_of_corners())
     r = Status::failure(ERROR_CUT_FAILED, "the tile does not belong to this cut");
   if(r)

@@ -47,6 +47,7 @@ struct Embedding_settings
   Solver_options solver;
   bool recentring = false;
   bool charts = false;              // a part converging onto cone images may be written in charts
+  std::pair<int, int> cut_graph_start{-1, -1}; // genus g >= 1: the cut graph's first edge (base indices), or none
   std::function<double(const TM_edge_descriptor&)> user_weights; // empty: `weights`
 };
 
@@ -117,7 +118,7 @@ private:
   {
     std::string msg;
     const Error_code ec = tile_.signature().genus() > 0 // (a surface of genus g >= 1 cut along a graph)
-                            ? build_cut_graph_topology(mesh_, bhd_, landmarks_, tile_, P_, base_vertex_, cut_vertices_, msg)
+                            ? build_cut_graph_topology(mesh_, bhd_, landmarks_, settings_.cut_graph_start, tile_, P_, base_vertex_, cut_vertices_, msg)
                             : build_flat_topology(mesh_, bhd_, landmarks_, tile_, P_, base_vertex_, cut_vertices_, msg);
     if(ec != OK) {
       st_.problem_vertices.assign(P_.problem_vertices.begin(), P_.problem_vertices.end());

@@ -161,6 +161,61 @@ Status compute_genus_cut_graph(const TriangleMesh& tm, VertexPointMap vpm,
   return Status();
 }
 
+// The cut graph's edges (dense index pairs) as paths between its nodes (vertices of degree
+// other than 2, and landmarks), each edge on one path; the first path starts at `first` when it
+// is a node (the first landmark, the root), and every path goes from its smaller-index end
+// unless it starts there. A cycle without node (impossible for a cut graph of genus >= 1) is
+// given from its smallest vertex.
+inline std::vector<std::vector<int> > cut_graph_paths(int n, const std::vector<std::pair<int, int> >& cut,
+                                                      const std::vector<char>& is_landmark, int first)
+{
+  std::vector<std::vector<std::pair<int, int> > > adj(n); // (neighbour, edge)
+  for(std::size_t e = 0; e < cut.size(); ++e) {
+    adj[cut[e].first].emplace_back(cut[e].second, static_cast<int>(e));
+    adj[cut[e].second].emplace_back(cut[e].first, static_cast<int>(e));
+  }
+  for(auto& a : adj)
+    std::sort(a.begin(), a.end());
+  auto is_node = [&](int v) { return !adj[v].empty() && (adj[v].size() != 2 || is_landmark[v]); };
+  std::vector<char> used(cut.size(), 0);
+  std::vector<std::vector<int> > paths;
+  auto walk = [&](int v, std::size_t i) {
+    std::vector<int> path(1, v);
+    int e = adj[v][i].second, u = adj[v][i].first;
+    used[e] = 1;
+    path.push_back(u);
+    while(!is_node(u) && path.front() != u) {
+      int next = -1;
+      for(const auto& ne : adj[u])
+        if(!used[ne.second]) {
+          next = ne.first;
+          used[ne.second] = 1;
+          break;
+        }
+      if(next < 0)
+        break;
+      u = next;
+      path.push_back(u);
+    }
+    paths.push_back(path);
+  };
+  std::vector<int> order;
+  if(first >= 0 && first < n && is_node(first))
+    order.push_back(first);
+  for(int v = 0; v < n; ++v)
+    if(is_node(v))
+      order.push_back(v);
+  for(int v : order)
+    for(std::size_t i = 0; i < adj[v].size(); ++i)
+      if(!used[adj[v][i].second])
+        walk(v, i);
+  for(int v = 0; v < n; ++v) // (cycles without node)
+    for(std::size_t i = 0; i < adj[v].size(); ++i)
+      if(!used[adj[v][i].second])
+        walk(v, i);
+  return paths;
+}
+
 // Marks the cut graph's edges as seams of `mesh` (a Seam_mesh on tm).
 template <class SeamMesh, class TriangleMesh>
 bool add_cut_graph_to_seam_mesh(SeamMesh& mesh, const TriangleMesh& tm, const std::vector<std::pair<int, int> >& cut)

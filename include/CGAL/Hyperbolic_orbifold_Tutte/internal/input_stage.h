@@ -13,7 +13,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/cut_graph.h>
 
 #include <cstddef>
 #include <optional>
@@ -87,15 +87,18 @@ Status cut_open(const TriangleMesh& tm, VertexPointMap vpm,
                 const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& ordered,
                 Orbifold_type type, Seam_mesh_storage<TriangleMesh>& seams,
                 typename boost::graph_traits<typename Seam_mesh_storage<TriangleMesh>::Mesh>::halfedge_descriptor& bhd,
-                long long genus = 0)
+                long long genus = 0,
+                std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >* cut_paths = nullptr)
 {
-  if(type == Sphere_type && genus > 0) { // along a cut graph: handle loops and paths to the landmarks
-    std::vector<std::pair<int, int> > cut;
-    const Status r = compute_genus_cut_graph(tm, vpm, ordered, genus, cut);
+  if(type == Sphere_type && genus > 0) { // along a cut graph: the given one, or handle loops and paths to the landmarks
+    CGAL_precondition(cut_paths != nullptr);
+    const Status r = cut_paths->empty() ? compute_cut_graph(tm, ordered, vpm, *cut_paths) : check_cut_graph(tm, *cut_paths, ordered);
     if(!r)
       return r;
-    if(!add_cut_graph_to_seam_mesh(seams.mesh, tm, cut))
-      return Status::failure(ERROR_CUT_FAILED, "the cut graph could not be marked on the seam mesh");
+    for(const auto& path : *cut_paths)
+      for(std::size_t j = 1; j < path.size(); ++j)
+        if(!seams.mesh.add_seam(path[j - 1], path[j]))
+          return Status::failure(ERROR_CUT_FAILED, "the cut graph could not be marked on the seam mesh");
   } else if(type == Sphere_type) {
     const Cut_result<TriangleMesh> cut = compute_cut_through_landmarks(tm, ordered, vpm);
     if(!cut.ok)
