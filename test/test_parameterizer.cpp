@@ -966,6 +966,39 @@ static bool make_sphere_problem(const std::string& name, int k, Sphere_problem& 
   return HOT::internal::initialize_embedding(S.P, S.tile, S.pts, S.x, &S.interior) == HOT::OK;
 }
 
+// A closed mesh of genus g >= 1 cut along its computed cut graph (the one-call function's
+// way): node copies tied to their owner by products of side pairings, side copies by one
+static bool make_genus_problem(const std::string& name, int k, Sphere_problem& S, const std::vector<int>& orders = {})
+{
+  if(!read_demo_mesh(name, S.m)) return false;
+  Mesh& m = S.m;
+  const std::vector<vertex_descriptor> lm = k == 0 ? std::vector<vertex_descriptor>() : farthest_point_landmarks(m, k);
+  auto sem = m.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:s", false).first;
+  auto svm = m.add_property_map<vertex_descriptor, bool>("v:s", false).first;
+  Disk_problem::SMesh sm(m, sem, svm);
+  std::vector<std::vector<vertex_descriptor> > paths;
+  if(!HOT::compute_cut_graph(m, lm, get(CGAL::vertex_point, m), paths)) return false;
+  for(const auto& p : paths)
+    for(std::size_t j = 1; j < p.size(); ++j)
+      if(!sm.add_seam(p[j - 1], p[j])) return false;
+  boost::graph_traits<Disk_problem::SMesh>::halfedge_descriptor bhd;
+  for(auto h : halfedges(sm)) if(is_border(h, sm)) { bhd = h; break; }
+  const long long chi = static_cast<long long>(num_vertices(m)) - static_cast<long long>(num_edges(m)) + static_cast<long long>(num_faces(m));
+  const std::pair<int, int> start(static_cast<int>(paths[0][0].idx()), static_cast<int>(paths[0][1].idx()));
+  HOT::internal::Cut_polygon poly;
+  if(!HOT::internal::cut_graph_tile(sm, bhd, lm, static_cast<int>((2 - chi) / 2), orders.empty() ? std::vector<int>(k, 2) : orders,
+                                    start, S.tile, S.tile.traits(), poly))
+    return false;
+  std::vector<vertex_descriptor> bv;
+  std::vector<boost::graph_traits<Disk_problem::SMesh>::vertex_descriptor> cv;
+  std::string msg;
+  if(HOT::internal::build_cut_graph_topology(sm, bhd, lm, start, S.tile, S.P, bv, cv, msg) != HOT::OK) return false;
+  S.pts.resize(S.P.n_base);
+  for(int i = 0; i < S.P.n_base; ++i) S.pts[i] = m.point(bv[i]);
+  HOT::internal::compute_edge_weights(S.P, S.pts, HOT::Cotangent, 1e-6);
+  return HOT::internal::initialize_embedding(S.P, S.tile, S.pts, S.x, &S.interior) == HOT::OK;
+}
+
 TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
 {
   // sphere type: hand, cut through 7 landmarks (seam twins)
@@ -986,6 +1019,19 @@ TEST_CASE(energy_derivatives_of_cut_meshes_by_finite_differences)
     for(int v = 0; v < S.P.n; ++v) twins += (S.P.kind[v] == HOT::internal::Transformed);
     CHECK(twins > 10);
     check_energy_derivatives(S.P, S.x, "sphere (2,3,7)");
+  }
+  // genus 2 without cone (eight) and with cones of orders 2, 3, 7 (joint): the copies of a
+  // node of the cut graph are images of its owner by products of side pairings
+  for(const auto& c : std::vector<std::pair<std::string, std::vector<int> > >{{"eight", {}}, {"joint", {2, 3, 7}}}) {
+    Sphere_problem S;
+    CHECK(make_genus_problem(c.first, static_cast<int>(c.second.size()), S, c.second));
+    int twins = 0, free_corners = 0;
+    for(int v = 0; v < S.P.n; ++v) {
+      twins += (S.P.kind[v] == HOT::internal::Transformed);
+      free_corners += (S.P.corner[v] >= 0 && S.P.kind[v] == HOT::internal::Free);
+    }
+    CHECK(twins > 10 && free_corners >= 1);
+    check_energy_derivatives(S.P, S.x, c.first + " (genus 2)");
   }
   // disk type: mushroom (boundary parameters)
   {
@@ -1072,6 +1118,13 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
   Disk_problem D;
   CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
   check_solvers_agree(D.P, D.x, "mushroom (disk)");
+  // genus 2 and 3 without cone: nothing is fixed, the energy still has one minimiser (a
+  // harmonic map into a negatively curved surface is unique in its homotopy class)
+  for(const std::string name : {"eight", "helmet"}) {
+    Sphere_problem S;
+    CHECK(make_genus_problem(name, 0, S));
+    check_solvers_agree(S.P, S.x, name + " (genus >= 2, no cone)");
+  }
 }
 
 // The factor of a matrix's leading block is the leading block of its factor when the order
