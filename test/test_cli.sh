@@ -123,6 +123,64 @@ case "$case_name" in
     done
     echo "map: $(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m.txt" "$tmp/bent.off" "$tmp/bent.off")"
     echo ok ;;
+  genus)
+    # closed meshes of genus 1 and 2: the genus detected, an empty cones file for genus 2, the
+    # angles around every vertex and the areas measured on the OBJ's own coordinates (2 pi and
+    # 2 pi (2g - 2 + sum(1 - 1/p))), the cut graph written and read back (the same OBJ), and a map
+    # onto a twisted copy (vertex i <-> vertex i) within 2% of the diagonal
+    d="$(dirname "${BASH_SOURCE[0]}")"
+    : > "$tmp/none.cones"
+    "$prog" embed --mesh "$data/meshes/eight.off" --cones "$tmp/none.cones" --out "$tmp/e.obj" --report "$tmp/e.json" \
+      --cut-graph-out "$tmp/e.cut" --svg "$tmp/e.svg" > "$tmp/stdout" || fail "embed eight failed"
+    grep -q "genus 2" "$tmp/stdout" || fail "genus not reported on stdout"
+    grep -q '"genus": 2' "$tmp/e.json" || fail "report genus"
+    grep -q '"bijective": true' "$tmp/e.json" || fail "report verdict"
+    [ "$(grep -cv '^#' "$tmp/e.cut")" -ge 2 ] || fail "cut graph file"
+    measure() { # measure OBJ: the largest |angle sum - 2 pi| over the vertices, and the total area
+      awk 'function tr(ar, ai, zr, zi,   nr, ni, dr, di, q) { nr = ar - zr; ni = ai - zi; dr = 1 - (zr * ar + zi * ai); di = -(zr * ai - zi * ar)
+          q = dr * dr + di * di; TR = (nr * dr + ni * di) / q; TI = (ni * dr - nr * di) / q }
+        /^vt / { n++; X[n] = $2; Y[n] = $3 }
+        /^f / { for(j = 2; j <= 4; j++) { split($j, t, "/"); fv[j - 1] = t[1]; ft[j - 1] = t[2] }
+          fs = 0
+          for(j = 1; j <= 3; j++) { z = ft[j]; a = ft[j % 3 + 1]; b = ft[(j + 1) % 3 + 1]
+            tr(X[a], Y[a], X[z], Y[z]); ar = TR; ai = TI; tr(X[b], Y[b], X[z], Y[z])
+            w = atan2(ar * TI - ai * TR, ar * TR + ai * TI); S[fv[j]] += w; fs += w }
+          area += atan2(0, -1) - fs }
+        END { worst = 0; for(v in S) { e = S[v] - 4 * atan2(0, -1) / 2; if(e < 0) e = -e; if(e > worst) worst = e }
+          printf "%.3g %.12f\n", worst, area }' "$1"
+    }
+    set -- $(measure "$tmp/e.obj")
+    awk -v w="$1" -v a="$2" 'BEGIN { pi = atan2(0, -1); e = a - 4 * pi; if(e < 0) e = -e; exit !(w < 1e-6 && e < 1e-6) }' \
+      || fail "eight: angle sums within $1 of 2 pi, area $2 (4 pi expected)"
+    echo "eight: angle sums within $1 of 2 pi, area $2"
+    "$prog" embed --mesh "$data/meshes/eight.off" --cones "$tmp/none.cones" --out "$tmp/e2.obj" --cut-graph "$tmp/e.cut" > /dev/null \
+      || fail "embed along the written cut graph"
+    cmp -s "$tmp/e.obj" "$tmp/e2.obj" || fail "the written cut graph does not give the same embedding"
+    head -n -1 "$tmp/e.cut" > "$tmp/short.cut" # a path less: no longer a disk
+    expect_error "$tmp/e3.obj" embed --mesh "$data/meshes/eight.off" --cones "$tmp/none.cones" --out "$tmp/e3.obj" --cut-graph "$tmp/short.cut"
+    echo "0 999999" > "$tmp/bad.cut"
+    expect_error "$tmp/e3.obj" embed --mesh "$data/meshes/eight.off" --cones "$tmp/none.cones" --out "$tmp/e3.obj" --cut-graph "$tmp/bad.cut"
+    echo "10138 5326 2877 3940 7260" > "$tmp/bear.cones"
+    expect_error "$tmp/b.obj" embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --out "$tmp/b.obj" --cut-graph "$tmp/e.cut"
+    # genus 1: one cone at least (a torus without cone is flat); with one, certified
+    expect_error "$tmp/k.obj" embed --mesh "$data/meshes/elk.off" --cones "$tmp/none.cones" --out "$tmp/k.obj"
+    echo "0" > "$tmp/elk.cones"
+    "$prog" embed --mesh "$data/meshes/elk.off" --cones "$tmp/elk.cones" --out "$tmp/k.obj" --report "$tmp/k.json" > /dev/null || fail "embed elk"
+    grep -q '"genus": 1' "$tmp/k.json" || fail "elk genus"
+    # the map onto a twisted copy (57 degrees from end to end)
+    awk -v T=1 -f "$d/twist.awk" "$data/meshes/eight.off" > "$tmp/twisted.off"
+    "$prog" map --source "$data/meshes/eight.off" --source-cones "$tmp/none.cones" --target "$tmp/twisted.off" \
+      --target-cones "$tmp/none.cones" --out "$tmp/m.txt" > /dev/null || fail "map eight -> twisted"
+    err=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m.txt" "$tmp/twisted.off" "$tmp/twisted.off")
+    echo "eight -> twisted: $err"
+    echo "$err" | awk '{ exit !($2 == 315 && $4 == 0 && $6 < 0.02) }' || fail "map error: $err"
+    # maps need corresponding cut graphs: another mesh of genus 2 without them, and another genus, are refused
+    expect_error "$tmp/m2.txt" map --source "$data/meshes/eight.off" --source-cones "$tmp/none.cones" --target "$data/meshes/femur.off" \
+      --target-cones "$tmp/none.cones" --out "$tmp/m2.txt"
+    grep -q "cut graph" "$tmp/stderr" || fail "missing cut graphs refused without saying why"
+    expect_error "$tmp/m2.txt" map --source "$data/meshes/eight.off" --source-cones "$tmp/none.cones" --target "$data/meshes/elk.off" \
+      --target-cones "$tmp/elk.cones" --out "$tmp/m2.txt"
+    echo ok ;;
   embed_disk)
     echo "1166 1785 147 932 2251 139" > "$tmp/m.cones"
     "$prog" embed --mesh "$data/meshes/mushroom.off" --cones "$tmp/m.cones" --weights mvc --out "$tmp/m.obj" \

@@ -25,6 +25,7 @@
 
 #include "command_line.h"
 #include "certify_command.h"
+#include "io/cut_graph_file.h"
 #include "io/embedding_obj.h"
 #include "io/map_files.h"
 #include "io/read_and_check.h"
@@ -199,6 +200,41 @@ std::vector<std::size_t> file_indices(const std::vector<SM_vertex>& vs, const ho
   return r;
 }
 
+// the cut graph of a file (--cut-graph: vertex paths of the mesh file, with --repair of the
+// input file) as vertices of the mesh read by read_mesh_and_landmarks()
+std::vector<std::vector<SM_vertex> > read_cut_graph_of(const std::string& path, const Surface_mesh& m, const hot_tools::Input_mesh& in)
+{
+  std::vector<std::vector<std::size_t> > ids;
+  require(hot_tools::read_cut_graph(path, ids));
+  const std::vector<SM_vertex> verts(vertices(m).begin(), vertices(m).end());
+  std::vector<std::vector<SM_vertex> > paths;
+  for(const auto& p : ids) {
+    paths.emplace_back();
+    for(std::size_t id : p) {
+      std::size_t i = id;
+      if(in.repaired)
+        i = id < in.prep.number_of_input_vertices ? in.prep.prepared_vertex[id] : HOT::Mesh_preparation::npos;
+      if(i >= verts.size())
+        throw Failure{HOT::ERROR_LANDMARK_OUT_OF_RANGE, path + ": vertex " + std::to_string(id) + " of the cut graph is not a vertex of the mesh"};
+      paths.back().push_back(verts[i]);
+    }
+  }
+  return paths;
+}
+
+// the cut graph an embedding used (Embedding_statistics::cut_graph), numbered as the files
+std::vector<std::vector<std::size_t> > cut_graph_in_files(const HOT::Embedding_statistics& st, const Surface_mesh& m,
+                                                          const hot_tools::Input_mesh* in)
+{
+  const std::vector<SM_vertex> verts(vertices(m).begin(), vertices(m).end());
+  std::vector<std::vector<std::size_t> > r;
+  for(const auto& p : st.cut_graph) {
+    r.emplace_back();
+    for(std::size_t i : p) r.back().push_back(hot_tools::output_vertex(verts[i], in));
+  }
+  return r;
+}
+
 // one line on stdout saying what --repair and --snap-landmarks changed
 void print_repair(const std::string& path, const Input& in)
 {
@@ -271,13 +307,15 @@ struct Embed_job
   bool recentre = false;
   std::vector<int> orders; // --cone-orders, per landmark of the file (empty: 2 for all)
   hot_tools::Repair_options repair;
+  std::optional<std::string> cut_graph_path, cut_graph_out; // genus g >= 1: --cut-graph, --cut-graph-out
 };
 
 Embed_job parse_embed_options(int argc, char** argv)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("recentre");
-  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole", "cone-orders"}, flags);
+  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole", "cone-orders",
+                                       "cut-graph", "cut-graph-out"}, flags);
   Embed_job job;
   job.request.mesh_path = opt.get("mesh");
   job.cones_path = opt.get("cones");
@@ -300,23 +338,27 @@ Embed_job parse_embed_options(int argc, char** argv)
   job.recentre = opt.has("recentre");
   job.orders = parse_cone_orders(opt);
   job.repair = parse_repair_options(opt);
+  if(opt.has("cut-graph"))
+    job.cut_graph_path = opt.get("cut-graph");
+  if(opt.has("cut-graph-out"))
+    job.cut_graph_out = opt.get("cut-graph-out");
   return job;
 }
 
 // the certified embedding of `m` with the job's options (the failure's reason otherwise)
 HOT::Embedding_statistics embed_mesh(const Embed_job& job, Surface_mesh& m, const std::vector<SM_vertex>& landmarks,
-                                     UV_map uv, Chart_map charts)
+                                     UV_map uv, Chart_map charts, const std::vector<std::vector<SM_vertex> >& cut_graph)
 {
   HOT::Embedding_statistics st;
   const HOT::Landmark_order order = job.request.order == "tsp" ? HOT::Tsp_order : HOT::Given_order;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     m, landmarks, uv,
-    HOT::parameters::cone_orders(job.orders, HOT::parameters::chart_map(
+    HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(job.orders, HOT::parameters::chart_map(
       charts,
       HOT::parameters::recentring(
         job.recentre,
         HOT::parameters::embedding_statistics(
-          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type))))))));
+          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type)))))))));
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
   return st;
@@ -348,6 +390,11 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
     files.write(*job.report_path, [&](std::ostream& os) {
       hot_tools::write_embedding_report(os, job.request, num_vertices(m), num_faces(m), st);
     });
+  if(job.cut_graph_out && st.genus > 0) {
+    files.write(*job.cut_graph_out, [&](std::ostream& os) {
+      hot_tools::write_cut_graph(os, cut_graph_in_files(st, m, in.file.repaired ? &in.file : nullptr));
+    });
+  }
   files.commit();
 }
 
@@ -371,7 +418,15 @@ int run_embed(int argc, char** argv)
 
   const UV_map uv = m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
   const Chart_map charts = m.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
-  const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts);
+  std::vector<std::vector<SM_vertex> > cut_graph;
+  if(job.cut_graph_out && genus == 0)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "--cut-graph-out: the mesh has genus 0 (it is cut along a path through the landmarks, not a graph)"};
+  if(job.cut_graph_path) {
+    if(genus == 0)
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, "--cut-graph: the mesh has genus 0; a cut graph is for a closed mesh of genus 1 or more"};
+    cut_graph = read_cut_graph_of(*job.cut_graph_path, m, in.file);
+  }
+  const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts, cut_graph);
   write_embed_outputs(job, m, uv, charts, landmarks, st, in);
   std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
             << (genus > 0 ? "closed, genus " + std::to_string(genus) : std::string(type == HOT::Sphere_type ? "sphere" : "disk") + " type") << ") in "
@@ -409,7 +464,8 @@ const hot_tools::Input_mesh* addressing(const Input& in)
   return in.file.repaired ? &in.file : nullptr;
 }
 
-void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::vector<int>& orders, const std::string& name)
+void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::vector<int>& orders, const std::string& name,
+                    const std::vector<std::vector<SM_vertex> >& cut_graph = {})
 {
   e.ordered.clear();
   std::vector<int> ordered_orders; // (empty: 2 for all)
@@ -424,12 +480,29 @@ void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const st
   e.charts = e.mesh.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     e.mesh, e.ordered, e.uv,
-    HOT::parameters::cone_orders(ordered_orders, HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats)))));
+    HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(ordered_orders, HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats))))));
   if(ec != HOT::OK)
     throw Failure{ec, name + ": " + e.stats.message};
 }
 
 typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
+
+long long genus_of(const Embedded& e)
+{
+  return e.type == HOT::Sphere_type ? HOT::internal::closed_mesh_genus(e.mesh) : 0;
+}
+
+// the locator of a map's target (or, for the colours, of its source): in the tile of its cut graph (genus g >= 1), or of its signature
+Locator target_locator(const Embedded& B)
+{
+  if(B.stats.genus > 0) {
+    Locator::Tile tile;
+    if(HOT::make_embedding_tile(B.type, B.stats, tile) != HOT::OK)
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, "the target's tile could not be built from its cut graph"};
+    return Locator(B.mesh, B.uv, tile, HOT::Hyperboloid_linear);
+  }
+  return Locator(B.mesh, B.uv, B.charts, B.stats.charts, HOT::Orbifold_signature(B.type, B.stats.cone_orders), HOT::Hyperboloid_linear);
+}
 
 // the source and the target of a map: the same topology and number of landmarks
 void check_map_pair(const Embedded& A, const Embedded& B)
@@ -440,6 +513,54 @@ void check_map_pair(const Embedded& A, const Embedded& B)
   if(A.landmarks.size() != B.landmarks.size())
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the source has " + std::to_string(A.landmarks.size()) +
                                               " landmarks and the target " + std::to_string(B.landmarks.size())};
+  if(genus_of(A) != genus_of(B))
+    throw Failure{HOT::ERROR_WRONG_TOPOLOGY, "the source has genus " + std::to_string(genus_of(A)) + " and the target genus " +
+                                           std::to_string(genus_of(B))};
+}
+
+// Genus g >= 1: the cut graphs of a map's two meshes, for --source-cut-graph / --target-cut-graph
+// or, when only the source's is given or none, the source's own (computed if not given) used on
+// the target too when the two meshes have the same faces (a deformed copy); otherwise the
+// target's cut graph must be given, since the map depends on it (\ref HOT_Genus).
+void map_cut_graphs(const Options& opt, const Embedded& A, const Embedded& B, std::vector<std::vector<SM_vertex> >& ga,
+                    std::vector<std::vector<SM_vertex> >& gb)
+{
+  if(opt.has("source-cut-graph"))
+    ga = read_cut_graph_of(opt.get("source-cut-graph"), A.mesh, A.in.file);
+  if(opt.has("target-cut-graph")) {
+    gb = read_cut_graph_of(opt.get("target-cut-graph"), B.mesh, B.in.file);
+    if(!opt.has("source-cut-graph"))
+      throw Usage_error{"--target-cut-graph needs --source-cut-graph: the two cut graphs must correspond"};
+    return;
+  }
+  bool same_faces = num_vertices(A.mesh) == num_vertices(B.mesh) && num_faces(A.mesh) == num_faces(B.mesh);
+  for(auto fa = faces(A.mesh).begin(), fb = faces(B.mesh).begin(); same_faces && fa != faces(A.mesh).end(); ++fa, ++fb) {
+    auto ha = halfedge(*fa, A.mesh), hb = halfedge(*fb, B.mesh);
+    for(int j = 0; j < 3 && same_faces; ++j, ha = next(ha, A.mesh), hb = next(hb, B.mesh))
+      same_faces = target(ha, A.mesh).idx() == target(hb, B.mesh).idx();
+  }
+  if(!same_faces)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the meshes have genus " + std::to_string(genus_of(A)) +
+                                              " and not the same faces: a map between them depends on corresponding cut graphs;"
+                                              " give both (--source-cut-graph, --target-cut-graph)"};
+  if(ga.empty())
+    require(HOT::compute_cut_graph(A.mesh, A.ordered, get(CGAL::vertex_point, A.mesh), ga));
+  const std::vector<SM_vertex> vb(vertices(B.mesh).begin(), vertices(B.mesh).end());
+  for(const auto& p : ga) {
+    gb.emplace_back();
+    for(SM_vertex v : p) gb.back().push_back(vb[v.idx()]);
+  }
+}
+
+// Genus g >= 1: the two embeddings must lie in one tile (their cut graphs' polygons equal)
+void check_same_polygon(const Embedded& A, const Embedded& B)
+{
+  const HOT::Embedding_statistics &a = A.stats, &b = B.stats;
+  if(a.cut_corner_nodes != b.cut_corner_nodes || a.cut_node_cones != b.cut_node_cones || a.cut_paired_sides != b.cut_paired_sides ||
+     a.cone_orders != b.cone_orders)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the cut graphs of the source and the target do not correspond: their polygons differ (" +
+                                              std::to_string(a.cut_corner_nodes.size()) + " and " + std::to_string(b.cut_corner_nodes.size()) +
+                                              " corners, or other side pairings); give corresponding cut graphs"};
 }
 
 // one cone order for both meshes of a map: the paper's tour on the source (sphere type), the
@@ -448,7 +569,7 @@ std::vector<std::size_t> map_cone_order(const Embedded& A)
 {
   std::vector<std::size_t> order(A.landmarks.size());
   for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  if(A.type == HOT::Sphere_type) {
+  if(A.type == HOT::Sphere_type && genus_of(A) == 0) { // (genus g >= 1: any order)
     order = HOT::compute_landmark_tour(A.mesh, A.landmarks);
     if(order.size() != A.landmarks.size())
       throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the source"};
@@ -489,7 +610,7 @@ int run_map(int argc, char** argv)
 {
   const Options opt(argc, argv, 2,
                     {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole",
-                     "cone-orders"},
+                     "cone-orders", "source-cut-graph", "target-cut-graph"},
                     repair_flags());
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
@@ -499,14 +620,22 @@ int run_map(int argc, char** argv)
   read_and_check(opt.get("target"), opt.get("target-cones"), repair, B, minimum_landmarks(orders));
   check_map_pair(A, B);
   const std::vector<std::size_t> order = map_cone_order(A);
-  embed_in_order(A, order, orders, "source");
-  embed_in_order(B, order, orders, "target");
+  std::vector<std::vector<SM_vertex> > ga, gb; // genus g >= 1: the cut graphs
+  if(genus_of(A) > 0) {
+    for(std::size_t i : order) A.ordered.push_back(A.landmarks[i]);
+    map_cut_graphs(opt, A, B, ga, gb);
+  } else if(opt.has("source-cut-graph") || opt.has("target-cut-graph"))
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the meshes have genus 0: a cut graph is for closed meshes of genus 1 or more"};
+  embed_in_order(A, order, orders, "source", ga);
+  embed_in_order(B, order, orders, "target", gb);
+  if(genus_of(A) > 0)
+    check_same_polygon(A, B);
   if(A.stats.landmark_order_reversed != B.stats.landmark_order_reversed)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
                                               "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
   const auto t0 = std::chrono::steady_clock::now();
-  const Locator locB(B.mesh, B.uv, B.charts, B.stats.charts, HOT::Orbifold_signature(B.type, B.stats.cone_orders), HOT::Hyperboloid_linear);
+  const Locator locB = target_locator(B);
   const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
@@ -524,7 +653,7 @@ int run_map(int argc, char** argv)
     files.write(opt.get("prepared-target"), [&](std::ostream& os) { hot_tools::write_addressed_off(os, B.mesh, B.in.file); });
   if(opt.has("colors-out")) {
     // a smooth colouring of A, carried to B by f_BA
-    const Locator locA(A.mesh, A.uv, A.charts, A.stats.charts, HOT::Orbifold_signature(A.type, A.stats.cone_orders), HOT::Hyperboloid_linear);
+    const Locator locA = target_locator(A);
     const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, B.charts, B.stats.charts, locA);
     files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g, addressing(B.in)); });
   }

@@ -185,7 +185,7 @@ HOT::Status read_input_landmarks(const std::string& path, const TriangleMesh& me
   landmarks.clear();
   minimum = HOT::minimum_number_of_landmarks_of(mesh, type, minimum); // (genus g >= 1: 1 or none)
   std::vector<std::size_t> ids;
-  HOT::Status r = read_landmarks(path, ids, minimum == 0);
+  HOT::Status r = read_landmarks(path, ids, minimum <= 1);
   if(!r) return r;
   const HOT::Mesh_preparation& prep = in.prep;
   const std::size_t n = prep.number_of_input_vertices;

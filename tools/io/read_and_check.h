@@ -98,7 +98,7 @@ HOT::Status read_and_check_landmarks(const std::string& path, const TriangleMesh
   landmarks.clear();
   minimum = HOT::minimum_number_of_landmarks_of(mesh, type, minimum); // (genus g >= 1: 1 or none)
   std::vector<std::size_t> indices;
-  HOT::Status r = read_landmarks(path, indices, minimum == 0); // its messages already start with the file name
+  HOT::Status r = read_landmarks(path, indices, minimum <= 1); // (genus g >= 1: check_landmarks() says how many) // its messages already start with the file name
   if(!r)
     return r;
   r = HOT::check_landmarks(mesh, indices, type, landmarks, minimum);
