@@ -214,6 +214,7 @@ icosphere 2 >"$C/s.off"                      # 162 vertices, 320 faces, closed g
 grid 8 0.1 >"$C/d.off"                       # 81 vertices, 128 faces, a disk
 grid 8 0 >"$C/flat.off"                      # the same, flat (exact coordinates)
 torus 6 >"$C/torus.off"
+: >"$C/empty.cones"                          # (no landmark)
 off_to_obj "$C/s.off" >"$C/s.obj"
 off_to_ply "$C/s.off" >"$C/s.ply"
 off_to_binary_ply "$C/s.off" >"$C/s_bin.ply"
@@ -423,11 +424,12 @@ embed_s non_manifold_vertex 3 "non-manifold vertex: the faces around vertex 0 (l
 embed_s inconsistent_orientation 3 "inconsistent face orientation: face" "$C/flipped.off"
 embed_s two_components_closed 3 "the mesh has 2 connected components (faces 0 and 320 are not connected" "$C/two_spheres.off"
 embed_d two_components_open 3 "the mesh has 2 connected components (faces 0 and 128 are not connected" "$C/two_disks.off"
-run_item hole_in_sphere 3 "the sphere-type orbifold needs a closed genus-0 mesh, but the mesh has 1 boundary loop" \
+run_item hole_in_sphere 3 "the sphere-type (closed) orbifold needs a closed mesh, but the mesh has 1 boundary loop" \
   embed --mesh "$C/hole.off" --cones "$SC" --orbifold sphere --out "$O/x.obj"
 run_item closed_mesh_as_disk 3 "the disk-type orbifold needs a mesh with one boundary loop, but the mesh is closed" \
   embed --mesh "$S" --cones "$SC" --orbifold disk --out "$O/x.obj"
-embed_s genus_one 3 "the sphere-type orbifold needs a genus-0 mesh, but the mesh has genus 1 (V-E+F = 0)" "$C/torus.off"
+run_item genus_one_without_cone 3 "0 landmarks are given, but the sphere-type orbifold needs at least 1 on a surface of genus 1" \
+  embed --mesh "$C/torus.off" --cones "$C/empty.cones" --out "$O/x.obj"
 embed_s repeated_vertex_index 3 "face 5 (line 170) is degenerate: it uses vertex $(face_line "$S" 5 | cut -d' ' -f2) more than once" "$C/repeated_index.off"
 embed_s index_out_of_range 3 "line 175: face 10: vertex index '162' is out of range (the file has 162 vertices)" "$C/index_out_of_range.off"
 embed_s index_overflow 3 "line 175: face 10: vertex index '99999999999999999999999' is out of range" "$C/index_overflow.off"

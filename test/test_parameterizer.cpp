@@ -405,6 +405,26 @@ static void check_genus_mesh(const std::string& name, int genus, int k, const st
   CHECK_MSG(worst_edge < 1e-7, name << ": an edge's two copies differ in length by " << worst_edge << " (relative)");
   const double defect = worst_centre_of_mass_defect(m, uv, HOT::Cotangent, lm);
   CHECK_MSG(defect < 1, name << " centre-of-mass defect " << defect);
+  // the public certificate from the corners alone (the cut graph recovered from them), and
+  // refusing the same corners with one vertex off the cut moved onto a neighbour's far side
+  HOT::Embedding_certificate cert;
+  std::string why;
+  CHECK_MSG(HOT::certify_hyperbolic_orbifold_embedding(m, lm, uv, cert, &why, HOT::parameters::cone_orders(p)) == HOT::OK &&
+              cert.is_bijective(), name << ": public certificate: " << why << " " << cert);
+  for(vertex_descriptor v : vertices(m)) {
+    bool single = true;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, m), m))
+      single = single && get(uv, h) == get(uv, halfedge(v, m));
+    if(!single || std::find(lm.begin(), lm.end(), v) != lm.end()) continue;
+    const halfedge_descriptor h0 = halfedge(v, m);
+    const Point_2 a = get(uv, h0), b = get(uv, prev(h0, m)); // v and a neighbour, in one face
+    const Point_2 beyond(b.x() + 0.5 * (b.x() - a.x()), b.y() + 0.5 * (b.y() - a.y()));
+    for(halfedge_descriptor h : halfedges_around_target(h0, m)) put(uv, h, beyond);
+    CHECK(HOT::certify_hyperbolic_orbifold_embedding(m, lm, uv, cert, &why, HOT::parameters::cone_orders(p)) == HOT::OK &&
+          !cert.is_bijective());
+    for(halfedge_descriptor h : halfedges_around_target(h0, m)) put(uv, h, a);
+    break;
+  }
   std::cout << "  " << name << " (genus " << genus << ", " << k << " cones): tile of " << st.cut_corner_nodes.size()
             << " corners, " << st.iterations << " iterations, area " << total_area << " = " << area << ", angle sums within "
             << worst_angle << ", edge copies within " << worst_edge << std::endl;

@@ -399,6 +399,15 @@ private:
     const std::size_t N = items_.size();
     std::vector<Error_code> codes(N, OK);
     const std::vector<int> cut_orders = ordered_orders(); // (empty: all 2)
+    for(std::size_t i = 0; i < N && type_ == Sphere_type; ++i) {
+      const long long genus = internal::closed_mesh_genus(*items_[i].mesh);
+      if(genus > 0) { // (its tile depends on its cut graph, which the collection does not match yet)
+        message_ = "mesh " + std::to_string(i) + " has genus " + std::to_string(genus) +
+                   ": collections of closed meshes of genus 1 or more are not built yet; map them in pairs along"
+                   " corresponding cut graphs (hyperbolic_orbifold_Tutte_embedding() with cut_graph)";
+        return ERROR_WRONG_TOPOLOGY;
+      }
+    }
     Reporter report(progress_, N);
     auto run = [&](std::size_t i) {
       Item& it = items_[i];

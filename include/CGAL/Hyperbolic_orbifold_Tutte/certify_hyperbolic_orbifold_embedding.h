@@ -15,6 +15,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
@@ -59,7 +60,11 @@ orientation predicate on the given coordinates.
        (\ref HOT_Charts): its faces there are checked in their charts' coordinates, and the
        seam pairings between two charts centred at corners of one cone are exact rotations,
        and `cone_orders` (a `std::vector<int>`, one per landmark in cone order, default 2 for
-       all: `Embedding_statistics::cone_orders`) for cones of other angles
+       all: `Embedding_statistics::cone_orders`) for cones of other angles. A closed mesh of
+       genus \f$ g \ge 1 \f$ (\ref HOT_Genus): the cut graph is recovered from the corners, and
+       the tile is its polygon's, with corner 0 set as `hyperbolic_orbifold_Tutte_embedding()`
+       sets it: by the named parameter `cut_graph` (the one the embedding was given), or by
+       default as for a computed cut graph
 
 \return `OK` when the map could be analysed (read `certificate.is_bijective()`), otherwise the
 reason (invalid mesh or landmarks, or a cut that is not a simple path through the landmarks
@@ -99,7 +104,13 @@ Error_code certify_hyperbolic_orbifold_embedding(
   Orbifold_tile<> tile;
   const std::vector<int> orders =
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cone_orders), std::vector<int>());
-  if(!orders.empty()) {
+  const long long genus = type == Sphere_type ? internal::closed_mesh_genus(tm) : 0;
+  if(genus > 0) { // (the tile is the polygon of the cut graph, built once the cut is recovered)
+    if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value)
+      return fail(ERROR_WRONG_PARAMETER, "a frame is for recentred embeddings, which surfaces of genus 1 or more do not have");
+    if(!orders.empty() && static_cast<int>(orders.size()) != k)
+      return fail(ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " + std::to_string(k) + " landmarks");
+  } else if(!orders.empty()) {
     const Status s = internal::tile_of_cone_orders(type, orders, k, tile, Poincare_disk_traits_2<>());
     if(!s)
       return fail(s.code, s.message);
@@ -142,7 +153,25 @@ Error_code certify_hyperbolic_orbifold_embedding(
   std::vector<vertex_descriptor> base_vertex;
   std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> cut_vertices;
   std::string why;
-  const Error_code ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_vertex, cut_vertices, why);
+  Error_code ec = OK;
+  if(genus > 0) { // genus g >= 1: the polygon of the recovered cut graph, its corner 0 as the embedding's
+    std::pair<int, int> start(-1, -1);
+    const auto paths = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cut_graph),
+                                                          std::vector<std::vector<vertex_descriptor> >());
+    if(!paths.empty()) {
+      if(paths[0].size() < 2)
+        return fail(ERROR_WRONG_PARAMETER, "the cut graph's first path has fewer than 2 vertices");
+      const internal::Dense_index<vertex_descriptor> vindex(vertices(tm));
+      start = std::make_pair(static_cast<int>(vindex(paths[0][0])), static_cast<int>(vindex(paths[0][1])));
+    }
+    internal::Cut_polygon poly;
+    const Status t = internal::cut_graph_tile(mesh, bhd, landmarks, static_cast<int>(genus),
+                                              orders.empty() ? std::vector<int>(k, 2) : orders, start, tile, tile.traits(), poly);
+    if(!t)
+      return fail(t.code, t.message);
+    ec = internal::build_cut_graph_topology(mesh, bhd, landmarks, start, tile, P, base_vertex, cut_vertices, why);
+  } else
+    ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_vertex, cut_vertices, why);
   if(ec != OK)
     return fail(ec, why);
 

@@ -38,7 +38,10 @@ those edges, pruned of its leaves that are not landmarks: \f$2g\f$ loops through
 tree paths from the landmarks to them.
 
 `paths` receives it as vertex paths between its nodes (vertices of degree other than 2, and
-landmarks), each edge on one path, the first path starting at the root. Linear time plus a
+landmarks), each edge on one path, the first path starting at the first landmark (else at the
+node of smallest index) towards its neighbour of smallest index on the graph, which is where the
+tile's corner 0 goes by default (so embedding along this graph given or not gives the same
+result). Linear time plus a
 Dijkstra search and a sort of the edges, O(n log n).
 
 \return `OK`, or `ERROR_WRONG_TOPOLOGY` (not a closed connected mesh of genus g >= 1),
@@ -66,7 +69,9 @@ Status compute_cut_graph(const TriangleMesh& tm,
   std::vector<char> is_landmark(verts.size(), 0);
   for(vertex_descriptor v : landmarks)
     is_landmark[index(v)] = 1;
-  const int first = landmarks.empty() ? 0 : static_cast<int>(index(landmarks[0]));
+  // the first path: from the first landmark, else from the node of smallest index, towards its
+  // neighbour of smallest index (the default corner 0 of the tile: see set_cut_graph_start())
+  const int first = landmarks.empty() ? -1 : static_cast<int>(index(landmarks[0]));
   for(const std::vector<int>& p : internal::cut_graph_paths(static_cast<int>(verts.size()), cut, is_landmark, first)) {
     paths.emplace_back();
     for(int v : p)

@@ -61,14 +61,14 @@ inline const char* error_message(Error_code code)
 {
   static const char* const messages[] = {
     "Success",
-    "The orbifold is not hyperbolic (it needs at least 5 cones of angle pi, or cones of orders p with sum(1 - 1/p) > 2)",
+    "The orbifold is not hyperbolic (genus 0: at least 5 cones of angle pi, or cones of orders p with sum(1 - 1/p) > 2; genus 1: a cone)",
     "A parameter is out of its range",
     "The mesh is empty",
     "The mesh has a face that is not a triangle",
     "The mesh is not a valid 2-manifold",
     "The mesh has more than one connected component",
-    "The mesh's topology does not match the orbifold (sphere type needs a closed genus-0 mesh, disk type a disk)",
-    "Too few landmarks (at least 5 are needed, 3 with cone orders above 2)",
+    "The mesh's topology does not match the orbifold (sphere type needs a closed mesh, disk type a disk)",
+    "Too few landmarks for a hyperbolic orbifold (genus 0: at least 5 cones of angle pi, or 3 with cone orders above 2; genus 1: at least 1; genus 2 or more: none needed)",
     "A landmark is given twice",
     "A landmark index is not a vertex of the mesh",
     "A disk-type landmark is not on the boundary loop",
