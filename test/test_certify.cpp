@@ -433,6 +433,232 @@ TEST_CASE(recentred_frame_accepted_with_the_frame)
 }
 
 // ------------------------------------------------------------------------------------------
+// cones of orders other than 2 (sphere type): the tile depends on the sequence of the orders
+// along its boundary, which the certificate reads from the cones' points
+// ------------------------------------------------------------------------------------------
+
+namespace {
+
+// bear.off with `orders.size()` landmarks (three given ones, or spread by farthest-point
+// sampling), each of the given order, cut along the paper's tour
+struct Ordered_bear
+{
+  Embedded e;
+  std::vector<int> orders; // per landmark, as given
+};
+
+const Ordered_bear& ordered_bear(const std::vector<int>& orders)
+{
+  static std::map<std::vector<int>, Ordered_bear> cache;
+  Ordered_bear& b = cache[orders];
+  if(num_faces(b.e.mesh) > 0)
+    return b;
+  b.orders = orders;
+  CHECK(read_demo_mesh("bear", b.e.mesh));
+  if(orders.size() == 3) // (test_cli.sh, cone_orders)
+    for(Mesh::size_type v : {8768u, 4116u, 9726u})
+      b.e.landmarks.push_back(vertex_descriptor(v));
+  else
+    b.e.landmarks = farthest_point_landmarks(b.e.mesh, static_cast<int>(orders.size()));
+  auto uv = b.e.mesh.add_property_map<halfedge_descriptor, K::Point_2>("h:uv").first;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    b.e.mesh, b.e.landmarks, uv,
+    HOT::parameters::cone_orders(orders, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&b.e.stats))));
+  CHECK_MSG(ec == HOT::OK, b.e.stats.message);
+  CHECK(HOT::make_corner_embedding(b.e.mesh, uv, b.e.E) == HOT::OK);
+  b.e.ok = ec == HOT::OK && b.e.E.number_of_faces() == num_faces(b.e.mesh);
+  return b;
+}
+
+Cert certify_with_orders(const Embedded& e, const HOT::Corner_embedding& E, const std::vector<int>& orders,
+                         HOT::Error_code expected = HOT::OK, std::string* message = nullptr)
+{
+  Cert c;
+  std::string m;
+  const HOT::Error_code ec = HOT::certify_corner_embedding(e.mesh, e.landmarks, E, c, &m, HOT::parameters::cone_orders(orders));
+  CHECK_MSG(ec == expected, m);
+  std::cout << "  orders";
+  for(int p : orders)
+    std::cout << " " << p;
+  std::cout << ": " << m << std::endl;
+  if(message)
+    *message = m;
+  return c;
+}
+
+const std::vector<std::vector<int> >& mixed_orders()
+{
+  static const std::vector<std::vector<int> > o{{2, 3, 7}, {2, 2, 2, 3}, {2, 2, 3, 3, 4}};
+  return o;
+}
+
+} // namespace
+
+TEST_CASE(mixed_orders_accepted_with_the_orders_found)
+{
+  for(const std::vector<int>& orders : mixed_orders()) {
+    const Ordered_bear& b = ordered_bear(orders);
+    if(!b.e.ok)
+      continue;
+    const int k = static_cast<int>(orders.size());
+    const Cert c = certify_with_orders(b.e, b.e.E, orders);
+    expect_certified(c);
+    // the cone order found is the cut's: landmark landmark_order[j] is tile cone j, of the
+    // order the solver gave tile cone j (Embedding_statistics::cone_orders)
+    for(int j = 0; j < k; ++j) {
+      CHECK(c.cone_order[b.e.stats.landmark_order[j]] == j);
+      CHECK(b.e.stats.cone_orders[j] == orders[b.e.stats.landmark_order[j]]);
+    }
+    CHECK(c.cone_orders == orders);
+    double sum = 0;
+    for(int i = 0; i < k; ++i) {
+      CHECK_MSG(std::abs(c.measured_cone_orders[i] - orders[i]) < 1e-9, c.measured_cone_orders[i]);
+      sum += 1.0 - 1.0 / orders[i];
+    }
+    // Gauss-Bonnet: 2 pi (sum (1 - 1/p) - 2)
+    const double area = 2 * CGAL_PI * (sum - 2);
+    CHECK_MSG(c.area_lower <= area && area <= c.area_upper, c.area_lower << " " << area << " " << c.area_upper);
+    CHECK(std::abs(c.expected_area - area) < 1e-12);
+    CHECK(c.max_angle_sum_deviation < 1e-9);
+    CHECK(c.max_cone_distance < 1e-12);
+    // the cut is a simple path through the cones
+    CHECK(c.number_of_seam_edges == b.e.E.points.size() - num_vertices(b.e.mesh) + 1);
+  }
+}
+
+TEST_CASE(mixed_orders_half_turn_and_frame_accepted)
+{
+  // z -> -z maps the tile of orders (p_1 .. p_k) onto the tile of (p_k .. p_1) (the k-gon
+  // mirrored in the imaginary axis): the same map onto the orbifold, its cones in the reverse
+  // sequence along the tile's boundary, which the certificate must read from the points
+  for(const std::vector<int>& orders : mixed_orders()) {
+    const Ordered_bear& b = ordered_bear(orders);
+    if(!b.e.ok)
+      continue;
+    const int k = static_cast<int>(orders.size());
+    const Cert c0 = certify_with_orders(b.e, b.e.E, orders);
+    const Cert c = certify_with_orders(b.e, map_all_points(b.e.E, [](const C& z) { return -z; }), orders);
+    expect_certified(c);
+    for(int i = 0; i < k; ++i)
+      CHECK(c.cone_order[i] == k - 1 - c0.cone_order[i]);
+    // moved by a Mobius map: certified in that frame, not without it
+    const Isometry f = Isometry::translation_from_origin(C(-0.25, 0.3)) * Isometry::rotation(2.1);
+    const HOT::Corner_embedding R = map_all_points(b.e.E, [&](const C& z) { return f.apply(z); });
+    Cert cf;
+    CHECK(HOT::certify_corner_embedding(b.e.mesh, b.e.landmarks, R, cf, nullptr,
+                                        HOT::parameters::cone_orders(orders, HOT::parameters::frame(f))) == HOT::OK);
+    expect_certified(cf);
+    CHECK(cf.cone_order == c0.cone_order);
+    expect_rejected(certify_with_orders(b.e, R, orders), HOT::Cone_check);
+  }
+}
+
+TEST_CASE(mixed_orders_wrong_orders_rejected)
+{
+  for(const std::vector<int>& orders : mixed_orders()) {
+    const Ordered_bear& b = ordered_bear(orders);
+    if(!b.e.ok)
+      continue;
+    const int k = static_cast<int>(orders.size());
+    std::string msg;
+    // the orders on other cones: every distinct permutation but the right one is rejected by
+    // the cones check, the message naming a cone whose measured order is not the one given
+    std::vector<int> p = orders;
+    std::sort(p.begin(), p.end());
+    int permutations = 0;
+    do {
+      if(p == orders)
+        continue;
+      ++permutations;
+      const Cert c = certify_with_orders(b.e, b.e.E, p, HOT::OK, &msg);
+      expect_rejected(c, HOT::Cone_check);
+      CHECK_MSG(msg.find("the cones' points give other orders than those given") != std::string::npos ||
+                  msg.find("but its given order is") != std::string::npos,
+                msg);
+    } while(std::next_permutation(p.begin(), p.end()));
+    CHECK(permutations >= 2);
+    // the largest order one more: no tile of those orders has the cones at its corners
+    std::vector<int> more = orders;
+    const std::size_t last = std::max_element(more.begin(), more.end()) - more.begin();
+    ++more[last];
+    const Cert c = certify_with_orders(b.e, b.e.E, more, HOT::OK, &msg);
+    expect_rejected(c, HOT::Cone_check);
+    CHECK_MSG(msg.find("at no corner of the tile") != std::string::npos, msg);
+    CHECK_MSG(msg.find("has order " + std::to_string(orders[last]) + ".0000, not " + std::to_string(more[last])) != std::string::npos, msg);
+    // all 2: too few cones for 3 or 4, the wrong tile for 5
+    Cert c2;
+    const HOT::Error_code ec2 = HOT::certify_corner_embedding(b.e.mesh, b.e.landmarks, b.e.E, c2, &msg);
+    if(k < 5)
+      CHECK(ec2 == HOT::ERROR_TOO_FEW_LANDMARKS);
+    else {
+      CHECK(ec2 == HOT::OK);
+      expect_rejected(c2, HOT::Cone_check);
+    }
+  }
+  // input errors: not hyperbolic, an order below 2, one order too few, a disk
+  const Ordered_bear& b = ordered_bear({2, 3, 7});
+  if(!b.e.ok)
+    return;
+  std::string msg;
+  certify_with_orders(b.e, b.e.E, {2, 3, 6}, HOT::ERROR_NOT_HYPERBOLIC, &msg);
+  CHECK_MSG(msg.find("not hyperbolic") != std::string::npos, msg);
+  certify_with_orders(b.e, b.e.E, {1, 3, 7}, HOT::ERROR_WRONG_PARAMETER, &msg);
+  certify_with_orders(b.e, b.e.E, {3, 7}, HOT::ERROR_WRONG_PARAMETER, &msg);
+  const Embedded& m = mushroom();
+  if(m.ok) {
+    Cert c;
+    CHECK(HOT::certify_corner_embedding(m.mesh, m.landmarks, m.E, c, &msg, HOT::parameters::cone_orders(std::vector<int>{2, 2, 2, 2, 2, 3})) ==
+          HOT::ERROR_WRONG_PARAMETER);
+    CHECK_MSG(msg.find("sphere-type") != std::string::npos, msg);
+  }
+}
+
+TEST_CASE(mixed_orders_cone_moved_off_its_corner_rejected)
+{
+  // each cone's point moved by 1e-6 (far below its triangles, far above the tolerance): the
+  // cones check names it, at no corner; the orders measured still round to the given ones
+  const Ordered_bear& b = ordered_bear({2, 3, 7});
+  if(!b.e.ok)
+    return;
+  const std::vector<std::set<std::size_t> > pts = points_of(b.e.E, num_vertices(b.e.mesh));
+  for(std::size_t i = 0; i < 3; ++i) {
+    HOT::Corner_embedding E = b.e.E;
+    const std::size_t p = *pts[b.e.landmarks[i].idx()].begin();
+    set_point(E, p, point(E, p) + C(1e-6, -1e-6));
+    std::string msg;
+    const Cert c = certify_with_orders(b.e, E, b.orders, HOT::OK, &msg);
+    expect_rejected(c, HOT::Cone_check);
+    CHECK_MSG(msg.find("cone " + std::to_string(i) + " (vertex " + std::to_string(b.e.landmarks[i].idx()) + ") is at") != std::string::npos &&
+                msg.find("at no corner of the tile") != std::string::npos && msg.find("other orders") == std::string::npos,
+              msg);
+  }
+}
+
+TEST_CASE(orders_of_2_given_change_nothing)
+{
+  // cone_orders of 2 for every cone is the default: the same verdict and numbers; the orders
+  // found and measured are 2
+  const Embedded& e = bear();
+  if(!e.ok)
+    return;
+  const Cert a = certify(e, e.E);
+  const Cert b = certify_with_orders(e, e.E, std::vector<int>(7, 2));
+  expect_certified(b);
+  CHECK(a.summary() == b.summary() && a.cone_order == b.cone_order && a.area_lower == b.area_lower && a.area_upper == b.area_upper &&
+        a.max_angle_sum_deviation == b.max_angle_sum_deviation && a.max_seam_mismatch == b.max_seam_mismatch);
+  CHECK(b.cone_orders == std::vector<int>(7, 2));
+  for(double m : b.measured_cone_orders)
+    CHECK_MSG(std::abs(m - 2) < 1e-9, m);
+  const Embedded& m = mushroom();
+  if(m.ok) {
+    const Cert d = certify(m, m.E);
+    CHECK(d.cone_orders == std::vector<int>(6, 2));
+    for(double x : d.measured_cone_orders)
+      CHECK_MSG(std::abs(x - 2) < 1e-9, x);
+  }
+}
+
+// ------------------------------------------------------------------------------------------
 // wrong embeddings: rejected, by the right check
 // ------------------------------------------------------------------------------------------
 

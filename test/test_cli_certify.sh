@@ -18,10 +18,10 @@ expect_error() { # expect_error STATUS OUTFILE ARGS...: that exit status, one li
   echo "ok (exit $rc): $(cat "$tmp/stderr")"
 }
 
-expect_rejected() { # expect_rejected CHECK MESH OBJ CONES: exit 4, one line naming CHECK, the report saying so
-  local check="$1" mesh="$2" obj="$3" cones="$4"
+expect_rejected() { # expect_rejected CHECK MESH OBJ CONES [ARGS...]: exit 4, one line naming CHECK, the report saying so
+  local check="$1" mesh="$2" obj="$3" cones="$4"; shift 4
   rm -f "$tmp/r.json"
-  "$prog" certify --mesh "$mesh" --embedding "$obj" --cones "$cones" --report "$tmp/r.json" >"$tmp/stdout" 2>"$tmp/stderr"; local rc=$?
+  "$prog" certify --mesh "$mesh" --embedding "$obj" --cones "$cones" --report "$tmp/r.json" "$@" >"$tmp/stdout" 2>"$tmp/stderr"; local rc=$?
   [ $rc -eq 4 ] || fail "exit $rc (expected 4) for $obj -- $(cat "$tmp/stderr")"
   [ "$(wc -l <"$tmp/stderr")" -eq 1 ] || fail "stderr is not one line for $obj -- $(cat "$tmp/stderr")"
   grep -q "not certified: $check: " "$tmp/stderr" || fail "$obj: expected check $check -- $(cat "$tmp/stderr")"
@@ -81,6 +81,9 @@ case "$case_name" in
     nb=$(boundary_vertices "$mushroom")
     grep -q "\"border_vertices\": $nb," "$tmp/m.json" || fail "report boundary vertices ($nb expected)"
     grep -q "\"border\": {\"run\": true, \"checked\": $((nb - 6)), \"failures\": 0" "$tmp/m.json" || fail "report border check"
+    # a disk's corners are right angles: other orders are refused (the tiles are not built)
+    expect_error 3 "$tmp/r2.json" certify --mesh "$mushroom" --embedding "$tmp/m.obj" --cones "$tmp/m.cones" --cone-orders 2,2,2,2,2,3 --report "$tmp/r2.json"
+    grep -q -- "--cone-orders: .*sphere-type" "$tmp/stderr" || fail "orders on a disk refused without saying why"
     echo ok ;;
   recentred)
     # a capsule whose far end is too squeezed for the tile (test_cli.sh, embed_recentre): embed
@@ -232,9 +235,12 @@ case "$case_name" in
     for c in four dup range; do
       expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/$c.cones" --report "$r"
     done
-    # --cone-orders: only 2 (the tiles of other orders are not built), one per cone
-    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders 3,2,2,2,2,2,2 --report "$r"
-    grep -q "only order 2" "$tmp/stderr" || fail "the refusal of order 3 does not say why"
+    # --cone-orders: one per cone, at least 2, hyperbolic (orders that are not the map's: the
+    # case orders)
+    expect_error 2 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders 2,2,2,2,2,2,1 --report "$r"
+    head -n 3 "$tmp/bear.cones" > "$tmp/three.cones"
+    expect_error 3 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/three.cones" --cone-orders 2,3,6 --report "$r"
+    grep -q -- "--cone-orders: .*not hyperbolic" "$tmp/stderr" || fail "(2,3,6) refused without saying why"
     expect_error 2 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders 2,2 --report "$r"
     expect_error 2 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders two --report "$r"
     # the orbifold type the mesh is not; usage
@@ -243,6 +249,71 @@ case "$case_name" in
     expect_error 2 "$r" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --bogus 1
     # the report cannot be written: a file error, nothing left
     expect_error 1 "$tmp/nodir/r.json" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --report "$tmp/nodir/r.json"
+    echo ok ;;
+  orders)
+    # cones of orders other than 2 (issue 22): embed --cone-orders takes one order per landmark
+    # in the cones file's order, and so does certify; the checker finds on the map which tile
+    # corner each cone is at, which gives the sequence of the orders along the tile's boundary
+    # (the cut's order, which embed's report gives as landmark_order_used and cone_orders)
+    echo "8768 4116 9726" > "$tmp/bear.cones"
+    "$prog" embed --mesh "$bear" --cones "$tmp/bear.cones" --cone-orders 2,3,7 --out "$tmp/b.obj" --report "$tmp/e.json" >/dev/null \
+      || fail "embed (2,3,7)"
+    used=$(tr -d ' \n' < "$tmp/e.json" | sed -n 's/.*"landmark_order_used":\[\([0-9,]*\)\].*/\1/p')
+    cut_orders=$(tr -d ' \n' < "$tmp/e.json" | sed -n 's/.*"cone_orders":\[\([0-9,]*\)\].*/\1/p')
+    echo "embed: cut order $used, orders $cut_orders"
+    "$prog" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --cone-orders 2,3,7 --report "$tmp/c.json" >"$tmp/out" \
+      || fail "certify (2,3,7) refused embed's output: $(cat "$tmp/out")"
+    grep -q "^certified: .* with 3 cones of orders 2,3,7 (" "$tmp/out" || fail "stdout: $(cat "$tmp/out")"
+    json_ok "$tmp/c.json"
+    grep -q '"certified": true' "$tmp/c.json" || fail "report verdict"
+    for c in repeated_face mesh_faces finite inside_disk charts cones border degenerate_face orientation angle_sum seams area; do
+      grep -q "\"$c\": {\"run\": true, \"checked\": [0-9]*, \"failures\": 0, \"first_failure\": null}" "$tmp/c.json" || fail "report check $c"
+    done
+    grep -q '"cone_orders": \[2, 3, 7\],' "$tmp/c.json" || fail "report: the orders given"
+    grep -q '"cone_orders_found": \[2, 3, 7\],' "$tmp/c.json" || fail "report: the orders found"
+    measured=$(sed -n 's/.*"cone_orders_measured": \[\([^]]*\)\].*/\1/p' "$tmp/c.json")
+    echo "$measured" | awk -F', ' '{ split("2 3 7", p, " "); for(i = 1; i <= 3; i++) { e = $i - p[i]; if(e < 0) e = -e; if(e > 1e-9) exit 1 } }' \
+      || fail "report: the orders measured, $measured"
+    # the cone order found is the cut's: the j-th landmark of landmark_order_used at tile cone j
+    order=$(tr -d ' \n' < "$tmp/c.json" | sed -n 's/.*"cone_order":\[\([-0-9,]*\)\].*/\1/p')
+    awk -v used="$used" -v order="$order" -v cones="8768,4116,9726" 'BEGIN { split(used, u, ","); split(order, o, ","); split(cones, c, ",")
+        for(i = 1; i <= 3; i++) if(u[o[i] + 1] != c[i]) exit 1 }' || fail "cone order $order is not the cut's ($used)"
+    # the area is 2 pi (sum (1 - 1/p) - 2) = pi / 21
+    grep -q '"expected_area": 0.14959965017094' "$tmp/c.json" || fail "report: expected area $(grep -o '"expected_area": [0-9.e-]*' "$tmp/c.json")"
+    # the cones file in another order, the orders with it
+    echo "9726 8768 4116" > "$tmp/bear2.cones"
+    "$prog" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear2.cones" --cone-orders 7,2,3 >/dev/null \
+      || fail "the cones in another order with their orders"
+    # orders that are not the map's: on other cones (not the right permutation), or another
+    # order; refused by the cones check, which says which cone has which order on the map
+    expect_rejected cones "$bear" "$tmp/b.obj" "$tmp/bear.cones" --cone-orders 3,2,7
+    grep -q "cone 0 (vertex 8768) has order 2.0000, not 3" "$tmp/stderr" || fail "3,2,7: the message does not name cone 0's order"
+    grep -q '"cone_orders": \[3, 2, 7\],' "$tmp/r.json" || fail "report: the orders given (3,2,7)"
+    expect_rejected cones "$bear" "$tmp/b.obj" "$tmp/bear2.cones" --cone-orders 2,7,3
+    expect_rejected cones "$bear" "$tmp/b.obj" "$tmp/bear.cones" --cone-orders 2,3,8
+    grep -q "at no corner of the tile" "$tmp/stderr" || fail "2,3,8: not at a corner"
+    grep -q "cone 2 (vertex 9726) has order 7.0000, not 8" "$tmp/stderr" || fail "2,3,8: the message does not name cone 2's order"
+    # without the orders: three cones of order 2 are too few
+    expect_error 3 "$tmp/r2.json" certify --mesh "$bear" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --report "$tmp/r2.json"
+    grep -q "at least 5 cones" "$tmp/stderr" || fail "3 cones of order 2: not refused as too few"
+    # a cone's point (the first vt of vertex 4116, order 3) moved by 1e-6 off its corner
+    vt=$(awk '/^f / { for(i = 2; i <= 4; i++) { split($i, a, "/"); if(a[1] == 4117) { print a[2]; exit } } }' "$tmp/b.obj")
+    [ -n "$vt" ] || fail "no vt of vertex 4116"
+    awk -v T="$vt" '/^vt / && ++n == T { printf "vt %.17g %.17g\n", $2 + 1e-6, $3; next } { print }' "$tmp/b.obj" > "$tmp/moved.obj"
+    expect_rejected cones "$bear" "$tmp/moved.obj" "$tmp/bear.cones" --cone-orders 2,3,7
+    grep -q "cone 1 (vertex 4116) is at .*, at no corner of the tile" "$tmp/stderr" || fail "the moved cone is not named"
+    # (2,2,2,3) on armadillo with 4 landmarks and (2,2,3,3,4) on homer with 5 (issue 22)
+    for mc in "armadillo 4 2,2,2,3 2,2,3,2" "homer 5 2,2,3,3,4 4,2,3,3,2"; do
+      set -- $mc
+      mesh="$data/meshes/$1.off"
+      "$prog" landmarks --mesh "$mesh" --count $2 --out "$tmp/$1.cones" >/dev/null || fail "landmarks $1"
+      "$prog" embed --mesh "$mesh" --cones "$tmp/$1.cones" --cone-orders $3 --out "$tmp/$1.obj" >/dev/null || fail "embed $1 ($3)"
+      "$prog" certify --mesh "$mesh" --embedding "$tmp/$1.obj" --cones "$tmp/$1.cones" --cone-orders $3 --report "$tmp/$1.json" >"$tmp/out" \
+        || fail "certify $1 ($3) refused embed's output: $(cat "$tmp/out")"
+      grep -q "\"cone_orders_found\": \[$(echo $3 | sed 's/,/, /g')\]," "$tmp/$1.json" || fail "report $1: the orders found"
+      echo "ok: $1: $(cat "$tmp/out")"
+      expect_rejected cones "$mesh" "$tmp/$1.obj" "$tmp/$1.cones" --cone-orders $4
+    done
     echo ok ;;
   *)
     fail "unknown case $case_name" ;;

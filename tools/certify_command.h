@@ -11,6 +11,8 @@
 // stderr: the first failed check, where and why), and the program's other statuses for bad
 // input (2 usage, 3 data, 1 files). The report, when asked for, is written in both cases.
 // A recentred embedding (embed --recentre) is checked in its frame (--frame, from its report).
+// --cone-orders gives each cone's order (in the cones file's order, as embed takes them); the
+// checker finds which tile corner each cone is at, hence the tile of those orders, on the map.
 // Points written in charts around cone images ('# hot chart' and '# hot vtc' lines) are read
 // and checked in their charts' coordinates.
 
@@ -53,7 +55,7 @@ inline std::vector<int> parse_cone_orders(const std::string& s)
     char* end = nullptr;
     const long v = std::strtol(tok.c_str(), &end, 10);
     if(tok.empty() || *end != '\0' || v < 2 || v > 1000000)
-      throw Usage_error{"--cone-orders must list integers of at least 2 (e.g. 2,2,2,2,2), got '" + tok + "'"};
+      throw Usage_error{"--cone-orders must list integers of at least 2 (e.g. 2,3,7), got '" + tok + "'"};
     orders.push_back(static_cast<int>(v));
   }
   if(orders.empty())
@@ -114,12 +116,10 @@ inline int run_certify(int argc, char** argv)
     if(q.cone_orders.size() != q.cones.size())
       throw Usage_error{"--cone-orders lists " + std::to_string(q.cone_orders.size()) + " orders for " +
                         std::to_string(q.cones.size()) + " cones"};
-    for(std::size_t i = 0; i < q.cone_orders.size(); ++i)
-      if(q.cone_orders[i] != 2)
-        throw Failure{HOT::ERROR_WRONG_PARAMETER, "--cone-orders: cone " + std::to_string(i) + " has order " +
-                                                    std::to_string(q.cone_orders[i]) +
-                                                    "; only order 2 (cone angle pi on a sphere, corner angle pi/2 on a disk) is supported, the tiles of other orders are not built yet"};
   }
+  bool mixed = false; // an order other than 2
+  for(int p : q.cone_orders)
+    mixed = mixed || p != 2;
   std::vector<Mesh::Vertex_index> cones;
   for(std::size_t v : q.cones) {
     if(v >= num_vertices(m))
@@ -140,11 +140,17 @@ inline int run_certify(int argc, char** argv)
   std::string why;
   const HOT::Error_code ec =
     type ? HOT::certify_corner_embedding(m, cones, embedding, cert, &why,
-                                         HOT::parameters::frame(frame, HOT::parameters::orbifold_type(*type)))
-         : HOT::certify_corner_embedding(m, cones, embedding, cert, &why, HOT::parameters::frame(frame));
-  if(ec != HOT::OK)
-    throw Failure{ec, (ec == HOT::ERROR_DUPLICATE_LANDMARK || ec == HOT::ERROR_LANDMARK_NOT_ON_BORDER || ec == HOT::ERROR_TOO_FEW_LANDMARKS
+                                         HOT::parameters::cone_orders(q.cone_orders, HOT::parameters::frame(frame, HOT::parameters::orbifold_type(*type))))
+         : HOT::certify_corner_embedding(m, cones, embedding, cert, &why,
+                                         HOT::parameters::cone_orders(q.cone_orders, HOT::parameters::frame(frame)));
+  if(ec != HOT::OK) {
+    // the orders' refusals (not hyperbolic, other than 2 on a disk) name --cone-orders
+    const bool orders_refused =
+      mixed && (ec == HOT::ERROR_NOT_HYPERBOLIC || (ec == HOT::ERROR_WRONG_PARAMETER && why.find("order") != std::string::npos));
+    throw Failure{ec, (orders_refused ? std::string("--cone-orders")
+                       : ec == HOT::ERROR_DUPLICATE_LANDMARK || ec == HOT::ERROR_LANDMARK_NOT_ON_BORDER || ec == HOT::ERROR_TOO_FEW_LANDMARKS
                          ? q.cones_path : q.mesh_path) + ": " + why};
+  }
   q.time_read = seconds(t0, t1);
   q.time_certify = seconds(t1, Clock::now());
   if(report)
@@ -156,7 +162,13 @@ inline int run_certify(int argc, char** argv)
   }
   std::cout << "certified: " << q.embedding_path << " is a bijection of " << q.mesh_path << " onto the "
             << (cert.type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold with " << cert.number_of_cones
-            << " cones (" << cert.number_of_faces << " faces, " << cert.number_of_seam_edges << " seam edges; cone order";
+            << " cones";
+  if(mixed) {
+    std::cout << " of orders";
+    for(std::size_t i = 0; i < cert.cone_orders.size(); ++i)
+      std::cout << (i ? "," : " ") << cert.cone_orders[i];
+  }
+  std::cout << " (" << cert.number_of_faces << " faces, " << cert.number_of_seam_edges << " seam edges; cone order";
   for(int j : cert.cone_order)
     std::cout << " " << j;
   std::cout << "; largest seam mismatch " << cert.max_seam_mismatch << ", angle-sum deviation " << cert.max_angle_sum_deviation

@@ -30,7 +30,7 @@ struct Certify_request
 {
   std::string mesh_path, embedding_path, cones_path;
   std::vector<std::size_t> cones;   // 0-based vertex indices, as given
-  std::vector<int> cone_orders;     // as given (all 2), or empty
+  std::vector<int> cone_orders;     // as given, or empty (all 2)
   double time_read = 0, time_certify = 0; // seconds
   std::size_t chart_points = 0;     // '# hot vtc' lines of the file (points in charts; read)
 };
@@ -89,6 +89,12 @@ inline void write_certificate_report(std::ostream& os, const Certify_request& q,
      << ",\n  \"mixed_faces\": " << c.number_of_mixed_faces << ",\n  \"chart_seam_edges\": " << c.number_of_chart_seam_edges
      << ",\n  \"cone_order\": [";
   for(std::size_t i = 0; i < c.cone_order.size(); ++i) os << (i ? ", " : "") << c.cone_order[i];
+  // per given cone, the order of the tile cone it was found at (0: none), and its order measured
+  // on the cones' points alone (null: not measured)
+  os << "],\n  \"cone_orders_found\": [";
+  for(std::size_t i = 0; i < c.cone_orders.size(); ++i) os << (i ? ", " : "") << c.cone_orders[i];
+  os << "],\n  \"cone_orders_measured\": [";
+  for(std::size_t i = 0; i < c.measured_cone_orders.size(); ++i) os << (i ? ", " : "") << json_number(c.measured_cone_orders[i]);
   os << "],\n  \"seam_edges_per_side\": [";
   for(std::size_t i = 0; i < c.seam_edges_per_side.size(); ++i) os << (i ? ", " : "") << c.seam_edges_per_side[i];
   os << "],\n  \"checks\": {\n";

@@ -107,6 +107,17 @@ struct Corner_embedding_certificate
   std::size_t number_of_chart_seam_edges = 0; ///< seam edges between two charts of one cone (glued by a rotation about the origin)
   /// for each given cone, the tile cone at whose corner it was found (-1: none); the cone order
   std::vector<int> cone_order;
+  /// for each given cone, the order of the tile cone at whose corner it was found (the tile's
+  /// angles at that cone's corners add up to \f$2\pi\f$ over it; \f$\pi\f$ over it at a
+  /// disk's corner), 0 when none: what the certified map has there, checked equal to the given order
+  std::vector<int> cone_orders;
+  /// for each given cone, its order measured on the cones' points alone: \f$2\pi\f$
+  /// (\f$\pi\f$ at a disk's corner) over the sum of the hyperbolic angles at its points of
+  /// the polygon that the cones' points form in the order of their arguments about the tile's
+  /// centre (the tile itself when the map is right); NaN when the points cannot form it (a
+  /// point not valid, more or fewer points than the tile's corners). Informative: no check
+  /// depends on it, the message of a cone at no corner cites it when the orders given differ
+  std::vector<double> measured_cone_orders;
   /// for each side of the tile, the number of seam edges glued by its side pairing
   std::vector<std::size_t> seam_edges_per_side;
 

@@ -21,6 +21,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +36,8 @@ namespace Hyperbolic_orbifold_Tutte {
 
 certifies that a map of a mesh into the Poincar&eacute; disk, given per face corner
 (`Corner_embedding`: an OBJ file's `vt` points and `f v/vt` faces), is a bijection of the mesh
-onto the hyperbolic orbifold whose cones are `cones`, deciding it from the map alone. It
+onto the hyperbolic orbifold whose cones are `cones`, of orders `cone_orders` (2 by default),
+deciding it from the map alone. It
 shares no code with the solver beyond the traits (`Poincare_disk_traits_2`), the isometries
 (`Hyperbolic_isometry_2`) and the tile (`make_orbifold_tile()`): not the cut, nor the seam
 mesh, nor the solver's certificate. The checks, in the order of `Corner_embedding_check` (the
@@ -45,21 +47,51 @@ first failure is the one reported):
   orientation, each one once (in any order, each from any of its corners);
 - *finite*, *inside_disk*: every point is finite and strictly inside the unit disk (exact);
 - *cones*: every point of every cone is at a corner of the tile (`make_orbifold_tile()` for
-  the orbifold type and the number of cones), and all of a cone's points at corners of the
-  same tile cone, each tile cone taken once: this gives the cone order
-  (`Corner_embedding_certificate::cone_order`), found rather than assumed; on a disk, the
-  cones that follow each other counterclockwise along the boundary are at consecutive corners;
+  the orbifold type and the cones' orders, see below), and all of a cone's points at corners
+  of the same tile cone, each tile cone taken once: this gives the cone order
+  (`Corner_embedding_certificate::cone_order`), found rather than assumed; the tile cone's order
+  (its corners' angles add up to \f$2\pi/p\f$) is the cone's given order
+  (`Corner_embedding_certificate::cone_orders`); on a disk, the cones that follow each other
+  counterclockwise along the boundary are at consecutive corners;
 - *border* (disk type): every other boundary vertex is on the segment of the tile side between
   the corners of the cones before and after it (not only on the side's geodesic line);
 - *degenerate_face*, *orientation*: every face is positively oriented, decided exactly;
 - *angle_sum*: per mesh vertex, the hyperbolic angles of all its corners (in every face, across
-  seams) add up to \f$2\pi\f$, to \f$\pi\f$ at a sphere-type cone and along a disk's
-  boundary, and to \f$\pi/2\f$ at a disk's corner;
+  seams) add up to \f$2\pi\f$, to \f$2\pi/p\f$ at a sphere-type cone of order \f$p\f$
+  (\f$\pi\f$ for order 2), to \f$\pi\f$ along a disk's boundary, and to \f$\pi/2\f$ at a
+  disk's corner;
 - *seams*: every edge whose two faces give different points to one of its ends is a seam; the
   orientation-preserving isometry relating its two sides is computed from the copies, and must
   be one of the tile's side pairings (a disk-type map has no seams: its tile's pairings are
   reflections);
-- *area*: the total hyperbolic area of the faces is the orbifold's (Gauss-Bonnet).
+- *area*: the total hyperbolic area of the faces is the orbifold's (Gauss-Bonnet):
+  \f$2\pi(\sum_i (1 - 1/p_i) - 2)\f$ on a sphere, \f$(k-4)\pi\f$ for \f$k\f$ cones of
+  order 2, \f$(k-4)\pi/2\f$ for a disk's \f$k\f$ right-angled corners.
+
+Cones of orders other than 2 (sphere type). The tile of orders \f$(p_1, \dots, p_k)\f$
+(`make_orbifold_tile(Orbifold_signature)`, the solver's for a cut through the cones in that
+sequence) depends on the sequence, not only on the orders: its corners \f$c_1, \dots, c_k\f$
+are the cones in that sequence, and \f$\bar c_2, \dots, \bar c_{k-1}\f$ the second copies
+of the inner ones. The checker does not take the sequence from the solver (it does not read
+the cut): it reads it from the map. In the tile's own frame (the frame's inverse applied), \f$c_1\f$ is on
+the positive real axis, \f$c_k\f$ on the negative one and \f$c_2, \dots, c_{k-1}\f$ in the
+upper half-disk at strictly increasing arguments (the \f$k\f$-gon is convex and the origin is
+the midpoint of its side \f$c_k c_1\f$), their conjugates below them; so the cones are put in
+the order of the arguments of their highest points (the imaginary part clamped at 0, so that a
+point of the real axis rounded below it stays at argument 0 or \f$\pi\f$), and the tile is
+built for the given orders in that sequence. Whenever the cones' points are at the corners of
+the tile of some sequence (within the tolerance, far below the distances between corners),
+this is that sequence (the tolerance is at most \f$10^{-6}\f$ of the edges at the cone, in
+any frame). The sequence is only a choice of the tile: the checks decide, exactly as for
+order 2, whether every cone is at a corner of it, of its given order, and whether the
+map is a bijection onto it; a tile the map does not fit makes the *cones* check fail, never a
+wrong map pass. The orders measured on the cones' points alone
+(`Corner_embedding_certificate::measured_cone_orders`: the angles of the polygon they form,
+which is the tile when the map is right) are reported, and the message of a cone at no
+corner names the cones whose measured order is not the given one (orders given to the wrong
+cones, or wrong orders). Three cones suffice when the orders make the orbifold hyperbolic,
+\f$\sum_i (1 - 1/p_i) > 2\f$ (e.g. (2,3,7)), four for e.g. (2,2,2,3); with orders 2 only,
+everything is as it always was (the paper's tiles, at least 5 cones).
 
 With charts around cone images (`Corner_embedding::charts`: a protrusion ending at a
 landmark, converging onto its cone's image below what `double` resolves in the tile), the map
@@ -85,9 +117,11 @@ a bijection.
 Exactness and tolerances. Orientation and the unit disk are decided exactly on the given
 coordinates. Angles are computed with certified error bounds (interval arithmetic); with every
 face positive and the seams glued by the group, an angle sum can only be its expected value
-plus a multiple of \f$\pi\f$, and the area only a multiple of the orbifold's: the checks
-accept a certified enclosure within \f$\pi/2\f$, and within half the orbifold's area, of the
-expected value, which decides them (`Corner_embedding_certificate::max_angle_sum_deviation`
+plus a multiple of \f$\pi\f$ (at a cone of order \f$p\f$, a multiple of \f$2\pi/p\f$: the
+fan closes up to a rotation of the group about the cone's image), and the area only a multiple
+of the orbifold's: the checks accept a certified enclosure within \f$\pi/2\f$ (within
+\f$\pi/p\f$ at a cone of order \f$p\f$, the same for order 2), and within half the orbifold's
+area, of the expected value, which decides them (`Corner_embedding_certificate::max_angle_sum_deviation`
 reports the actual deviations, \f$10^{-15}\f$ to \f$3\cdot10^{-7}\f$ for the package's
 embeddings). Positions (cones at corners, boundary points on sides, a seam copy against its
 twin's image by the side pairing) are compared with a tolerance of \f$10^{-9}\f$ in disk
@@ -101,19 +135,25 @@ misplacement has to be compared with.
 
 \param tm the mesh: a triangulated closed genus-0 surface or disk (checked)
 \param cones the vertices at the orbifold's cones (sphere type) or corners (disk type), in any
-       order: at least 5, distinct, on the boundary for a disk
+       order: distinct, on the boundary for a disk; at least 5 of order 2, or as many as make
+       the orbifold of the given orders hyperbolic (3 for (2,3,7))
 \param embedding the map; its vertex indices are those of `vertices(tm)` in order
 \param certificate receives the verdict, every count and the first failure of each check
 \param message if not null, receives one line: the error, or `certificate.summary()`
-\param np optional named parameters: `orbifold_type` (default: from the mesh's boundary) and
+\param np optional named parameters: `orbifold_type` (default: from the mesh's boundary),
        `frame` (a `Hyperbolic_isometry_2<double>`, default the identity: the map fills the tile
-       moved by it, as a recentred embedding does; `Embedding_statistics::frame`)
+       moved by it, as a recentred embedding does; `Embedding_statistics::frame`) and
+       `cone_orders` (a `std::vector<int>`, the order of each of `cones`, in their order, as
+       `hyperbolic_orbifold_Tutte_embedding()` takes them; default or empty: 2 for every cone;
+       orders other than 2 for sphere type only)
 
 \pre `cones` are vertices of `tm`
 \return `OK` when the map was checked (read `certificate.is_certified()`); otherwise the input
 error: the mesh is not a triangulated sphere or disk (`ERROR_NON_TRIANGULAR_MESH`,
 `ERROR_NON_MANIFOLD`, `ERROR_SEVERAL_COMPONENTS`, `ERROR_WRONG_TOPOLOGY`, `ERROR_EMPTY_MESH`),
-the cones are too few, repeated or off a disk's boundary, the frame reverses orientation, or
+the cones are too few (`ERROR_TOO_FEW_LANDMARKS`), repeated or off a disk's boundary, the
+orders are not one per cone, below 2 or other than 2 on a disk (`ERROR_WRONG_PARAMETER`) or do
+not make the orbifold hyperbolic (`ERROR_NOT_HYPERBOLIC`), the frame reverses orientation, or
 `embedding` refers to points it does not have (`ERROR_WRONG_PARAMETER`).
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -144,7 +184,22 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
   if(!topology)
     return fail(topology);
   const int k = static_cast<int>(cones.size());
-  if(k < 5)
+  // the cones' orders, as given (per cone of `cones`); `mixed` when one is not 2
+  const std::vector<int> orders = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cone_orders),
+                                                                     std::vector<int>());
+  bool mixed = false;
+  if(!orders.empty()) {
+    if(static_cast<int>(orders.size()) != k)
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " +
+                                                         std::to_string(k) + " cones (one per cone is needed)"));
+    for(int i = 0; i < k; ++i) {
+      if(orders[i] < 2)
+        return fail(Status::failure(ERROR_WRONG_PARAMETER, "cone " + std::to_string(i) + " is given the order " + std::to_string(orders[i]) +
+                                                           ": orders are integers of at least 2 (cone angle 2 pi / order)"));
+      mixed = mixed || orders[i] != 2;
+    }
+  }
+  if(k < 5 && !mixed)
     return fail(Status::failure(ERROR_TOO_FEW_LANDMARKS, "the orbifold needs at least 5 cones, " + std::to_string(k) + " given"));
   std::vector<std::size_t> cone_index;
   std::vector<char> is_cone(M.number_of_vertices(), 0), on_border(M.number_of_vertices(), 0);
@@ -161,10 +216,20 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     cone_index.push_back(v);
   }
   Tile tile;
-  if(make_orbifold_tile(type, k, tile) != OK)
-    return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "no tile for " + std::to_string(k) + " cones"));
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value) {
-    const Hyperbolic_isometry_2<double> frame = CGAL::parameters::get_parameter(np, internal_np::frame);
+  if(!mixed) {
+    if(make_orbifold_tile(type, k, tile) != OK)
+      return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "no tile for " + std::to_string(k) + " cones"));
+  } else {
+    // for now the orders in the given sequence (the area and the refusals do not depend on the
+    // sequence); the tile is built again for the cones' sequence found on the map, below
+    const Status s = internal::tile_of_cone_orders(type, orders, k, tile, Poincare_disk_traits_2<>());
+    if(!s)
+      return fail(s);
+  }
+  Hyperbolic_isometry_2<double> frame; // the identity by default
+  constexpr bool framed = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value;
+  if constexpr(framed) {
+    frame = CGAL::parameters::get_parameter(np, internal_np::frame);
     if(!frame.is_orientation_preserving())
       return fail(Status::failure(ERROR_WRONG_PARAMETER, "the frame must be an orientation-preserving isometry"));
     tile = tile.transformed(frame);
@@ -209,10 +274,14 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
   certificate.absolute_tolerance = cc::absolute_tolerance;
   certificate.relative_tolerance = cc::relative_tolerance;
   certificate.cone_order.assign(k, -1);
+  certificate.cone_orders.assign(k, 0);
+  certificate.measured_cone_orders.assign(k, std::numeric_limits<double>::quiet_NaN());
 
   cc::Certification<TriangleMesh> S(M, embedding, tile, certificate);
   S.is_cone = is_cone;
   S.on_border = on_border;
+  if(mixed)
+    S.orders = orders;
   std::vector<int> rotation;
   if(cc::match_faces(M, embedding, certificate, S.efface, rotation)) {
     S.pid.resize(M.number_of_faces());
@@ -221,9 +290,24 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
         S.pid[f][c] = embedding.face_points[S.efface[f]][(c + rotation[f]) % 3];
     S.charted = embedding.has_charts();
     cc::check_points(S);
+    const std::vector<std::vector<std::size_t> > points_of = cc::points_of_vertices(S);
+    const Hyperbolic_isometry_2<double> to_tile = frame.inverse();
+    if(mixed) {
+      // the tile of the given orders in the sequence of the cones along its boundary, read from
+      // their points (cone_sequence()); S refers to `tile`
+      const std::vector<int> sequence = cc::cone_sequence(S, cone_index, points_of, to_tile);
+      std::vector<int> sequence_orders;
+      for(int i : sequence)
+        sequence_orders.push_back(orders[i]);
+      if(make_orbifold_tile(Orbifold_signature(type, sequence_orders), tile) != OK)
+        return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "no tile for the cone orders given")); // (built above in another sequence)
+      if(framed)
+        tile = tile.transformed(frame);
+      certificate.expected_area = tile.area();
+    }
+    certificate.measured_cone_orders = cc::measure_cone_orders(S, cone_index, points_of, to_tile);
     cc::check_charts(S);
     cc::compute_tolerances(S);
-    const std::vector<std::vector<std::size_t> > points_of = cc::points_of_vertices(S);
     const bool order_known = cc::check_cones(S, cone_index, points_of);
     if(type == Sphere_type)
       certificate.checks[Border_check].run = true; // nothing to check: no boundary

@@ -24,9 +24,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -115,9 +117,123 @@ std::vector<std::vector<std::size_t> > points_of_vertices(const Certification<TM
   return r;
 }
 
+// The sequence of the cones along the boundary of a sphere tile of mixed orders, read from
+// where their points are (the tile of make_orbifold_tile(Orbifold_signature) depends on it:
+// its corners p_1 .. p_k are the cones in the sequence of the signature's orders). In the
+// tile's own frame (`to_tile`, the inverse of the frame), p_1 is on the positive real axis,
+// p_k on the negative one, p_2 .. p_(k-1) in the upper half-disk at strictly increasing
+// arguments between them (the k-gon is convex and the origin is the midpoint of its side
+// p_k p_1), and the other corners are q_j = conj(p_j). So each cone is placed by the argument
+// of its highest point, its imaginary part clamped at 0 (a point of the real axis rounded just
+// below it stays at argument 0 or pi), ties in the given order. Returns the given cones'
+// indices in that sequence; in the given order when a cone has no valid point. A choice of
+// tile only: the checks decide whether the cones are at its corners.
+template <class TM>
+std::vector<int> cone_sequence(const Certification<TM>& S, const std::vector<std::size_t>& cones,
+                               const std::vector<std::vector<std::size_t> >& points_of, const Hyperbolic_isometry_2<double>& to_tile)
+{
+  const int k = static_cast<int>(cones.size());
+  std::vector<int> sequence(k);
+  std::vector<double> key(k, 0);
+  for(int i = 0; i < k; ++i) {
+    sequence[i] = i;
+    double best = -std::numeric_limits<double>::infinity();
+    for(std::size_t p : points_of[cones[i]]) {
+      if(!S.valid[p])
+        return sequence;
+      const C w = to_tile.apply(S.point(p));
+      if(w.imag() > best) {
+        best = w.imag();
+        key[i] = std::atan2((std::max)(w.imag(), 0.0), w.real());
+      }
+    }
+    if(points_of[cones[i]].empty())
+      return sequence;
+  }
+  std::stable_sort(sequence.begin(), sequence.end(), [&](int a, int b) { return key[a] < key[b]; });
+  return sequence;
+}
+
+// The cones' orders measured on their points alone (Corner_embedding_certificate::
+// measured_cone_orders; informative): the points of the cones, moved into the tile's own frame
+// (`to_tile`) and ordered by their arguments about its origin (inside the tile), are the
+// tile's corners in order when the map is right; the hyperbolic angle of that polygon at a
+// point z between its neighbours a (before) and b (after) is the angle from T(b) to T(a),
+// T(w) = (w - z) / (1 - conj(z) w) (an isometry, taking z to the origin); a cone's order is
+// 2 pi (pi at a disk's corner) over the sum of the angles at its points. NaN when a cone's
+// point is not valid or the points are not as many as the tile's corners.
+template <class TM>
+std::vector<double> measure_cone_orders(const Certification<TM>& S, const std::vector<std::size_t>& cones,
+                                        const std::vector<std::vector<std::size_t> >& points_of, const Hyperbolic_isometry_2<double>& to_tile)
+{
+  const int k = static_cast<int>(cones.size());
+  std::vector<double> r(k, std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::pair<double, std::pair<int, C> > > polygon; // (argument, (cone, point))
+  for(int i = 0; i < k; ++i)
+    for(std::size_t p : points_of[cones[i]]) {
+      if(!S.valid[p])
+        return r;
+      const C w = to_tile.apply(S.point(p));
+      polygon.push_back({std::atan2(w.imag(), w.real()), {i, w}});
+    }
+  if(static_cast<int>(polygon.size()) != S.tile.number_of_corners())
+    return r;
+  std::sort(polygon.begin(), polygon.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  const std::size_t n = polygon.size();
+  std::vector<double> sum(k, 0);
+  for(std::size_t j = 0; j < n; ++j) {
+    const C z = polygon[j].second.second, a = polygon[(j + n - 1) % n].second.second, b = polygon[(j + 1) % n].second.second;
+    auto T = [&](const C& w) { return (w - z) / (1.0 - std::conj(z) * w); };
+    double angle = std::arg(T(a) / T(b));
+    if(angle <= 0)
+      angle += 2 * CGAL_PI;
+    sum[polygon[j].second.first] += angle;
+  }
+  const double full = S.tile.type() == Sphere_type ? 2 * CGAL_PI : CGAL_PI;
+  for(int i = 0; i < k; ++i)
+    r[i] = full / sum[i];
+  return r;
+}
+
+// the cones whose measured order (measure_cone_orders()) is not the one given, as a clause to
+// end the message of a cone at no corner with; empty when the orders are all 2 or all match
+template <class TM>
+std::string order_mismatches(const Certification<TM>& S, const std::vector<std::size_t>& cones)
+{
+  if(S.orders.empty())
+    return std::string();
+  std::ostringstream os;
+  os.precision(4);
+  os << std::fixed;
+  int n = 0;
+  for(std::size_t i = 0; i < cones.size(); ++i) {
+    const double m = i < S.cert.measured_cone_orders.size() ? S.cert.measured_cone_orders[i] : 0.0;
+    if(!(m > 0 && m < 1e9) || std::lround(m) == S.orders[i]) // (NaN: not measured)
+      continue;
+    os << (n++ ? ", " : "; the cones' points give other orders than those given (measured on the polygon they form, whose angles at a cone's points add up to 2 pi / its order): ")
+       << "cone " << i << " (vertex " << cones[i] << ") has order " << m << ", not " << S.orders[i];
+  }
+  return os.str();
+}
+
+// a cone's points are all at corners of one tile cone: `c` is the tile cone of its next point,
+// `cone` that of its points so far (-1: none); false, the failure recorded, when they differ
+template <class TM>
+bool at_one_tile_cone(Certification<TM>& S, std::size_t v, const std::string& who, int& cone, int c)
+{
+  if(cone >= 0 && c != cone) {
+    record(S.cert, Cone_check, Corner_embedding_certificate::Vertex, v, 0, who + " has copies at corners of two tile cones, " +
+           std::to_string(cone) + " and " + std::to_string(c));
+    return false;
+  }
+  cone = c;
+  return true;
+}
+
 // cones: each at a corner of the tile, all its points at corners of one tile cone, each tile
-// cone once (which gives the cone order); on a disk, consecutive along the boundary loop
-// (counterclockwise) at consecutive tile corners. Returns true when the cone order is known.
+// cone once (which gives the cone order), of the tile cone's order the given one; on a disk,
+// consecutive along the boundary loop (counterclockwise) at consecutive tile corners. Returns
+// true when the cone order is known.
 template <class TM>
 bool check_cones(Certification<TM>& S, const std::vector<std::size_t>& cones,
                  const std::vector<std::vector<std::size_t> >& points_of)
@@ -127,6 +243,7 @@ bool check_cones(Certification<TM>& S, const std::vector<std::size_t>& cones,
   Cert::Check_result& R = S.cert.checks[Cone_check];
   R.run = true;
   S.cert.cone_order.assign(k, -1);
+  S.cert.cone_orders.assign(k, 0);
   std::vector<int> owner(k, -1);
   for(int i = 0; i < k; ++i) {
     const std::size_t v = cones[i];
@@ -147,14 +264,10 @@ bool check_cones(Certification<TM>& S, const std::vector<std::size_t>& cones,
           ok = false;
           break;
         }
-        const int c = S.tile.corner_cone(S.charts[k].corner);
-        if(cone >= 0 && c != cone) {
-          record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " has copies at corners of two tile cones, " +
-                 std::to_string(cone) + " and " + std::to_string(c));
+        if(!at_one_tile_cone(S, v, who, cone, S.tile.corner_cone(S.charts[k].corner))) {
           ok = false;
           break;
         }
-        cone = c;
         continue;
       }
       const C z = S.point(p);
@@ -167,19 +280,16 @@ bool check_cones(Certification<TM>& S, const std::vector<std::size_t>& cones,
       if(!(best_d <= S.tolerance[v])) {
         record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " is at " + point_string(z) +
                ", at no corner of the tile (the nearest, a corner of tile cone " + std::to_string(S.tile.corner_cone(best)) +
-               ", is " + number_string(best_d) + " away; tolerance " + number_string(S.tolerance[v]) + ")");
+               ", is " + number_string(best_d) + " away; tolerance " + number_string(S.tolerance[v]) + ")" +
+               order_mismatches(S, cones));
         ok = false;
         break;
       }
       S.cert.max_cone_distance = (std::max)(S.cert.max_cone_distance, best_d);
-      const int c = S.tile.corner_cone(best);
-      if(cone >= 0 && c != cone) {
-        record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " has copies at corners of two tile cones, " +
-               std::to_string(cone) + " and " + std::to_string(c));
+      if(!at_one_tile_cone(S, v, who, cone, S.tile.corner_cone(best))) {
         ok = false;
         break;
       }
-      cone = c;
     }
     if(!ok || cone < 0)
       continue;
@@ -190,6 +300,11 @@ bool check_cones(Certification<TM>& S, const std::vector<std::size_t>& cones,
     }
     owner[cone] = i;
     S.cert.cone_order[i] = cone;
+    S.cert.cone_orders[i] = S.tile.signature().order(cone);
+    if(!S.orders.empty() && S.cert.cone_orders[i] != S.orders[i])
+      record(S.cert, Cone_check, Cert::Vertex, v, 0, who + " is at a corner of tile cone " + std::to_string(cone) + ", of order " +
+             std::to_string(S.cert.cone_orders[i]) + " (cone angle 2 pi / " + std::to_string(S.cert.cone_orders[i]) +
+             "), but its given order is " + std::to_string(S.orders[i]));
   }
   if(R.failures > 0)
     return false;
@@ -308,9 +423,9 @@ void check_faces(Certification<TM>& S)
 
 // angle_sum and area. Every angle of a positively oriented face is enclosed with certified
 // bounds; per vertex whose faces are all positive, the enclosure of its angle sum must lie
-// within pi/2 of its cone angle, and with every face positive, the area's enclosure within half
-// the orbifold's area of it (see certify_corner_embedding(): the possible values are apart by
-// pi and by the orbifold's area, so these decide them).
+// within pi/2 of its cone angle (pi/p at a cone of order p), and with every face positive, the
+// area's enclosure within half the orbifold's area of it (see certify_corner_embedding(): the
+// possible values are apart by pi (2 pi / p) and by the orbifold's area, so these decide them).
 template <class TM>
 void check_angle_sums_and_area(Certification<TM>& S, const std::vector<std::size_t>& cones)
 {
@@ -318,12 +433,22 @@ void check_angle_sums_and_area(Certification<TM>& S, const std::vector<std::size
   const std::size_t V = S.M.number_of_vertices(), F = S.M.number_of_faces();
   const bool disk = S.tile.type() == Disk_type;
   std::vector<double> expected(V, 2 * CGAL_PI);
+  // the half width of the window the enclosure must lie in: pi/2, and pi/p at a cone of order p,
+  // half the spacing of its possible values (multiples of 2 pi / p: the fan closes up to a
+  // rotation about the cone's image, one of the group's, by a multiple of 2 pi / p); the same
+  // pi/2 for order 2
+  std::vector<double> window(V, 0.5 * CGAL_PI);
   if(disk)
     for(std::size_t v : S.M.border_loop)
       expected[v] = CGAL_PI;
   for(std::size_t i = 0; i < cones.size(); ++i) {
     const int j = S.cert.cone_order[i] >= 0 ? S.cert.cone_order[i] : static_cast<int>(i);
-    expected[cones[i]] = S.tile.signature().cone_angle(j); // 2 pi / order on a sphere, pi / order at a disk's corner
+    if(S.orders.empty()) {
+      expected[cones[i]] = S.tile.signature().cone_angle(j); // 2 pi / order on a sphere, pi / order at a disk's corner
+    } else { // (sphere type) the given order's
+      expected[cones[i]] = 2.0 * CGAL_PI / S.orders[i];
+      window[cones[i]] = CGAL_PI / S.orders[i];
+    }
   }
   std::vector<Enclosure> sum(V);
   std::vector<unsigned int> terms(V, 0); // the degree of each vertex
@@ -379,17 +504,17 @@ void check_angle_sums_and_area(Certification<TM>& S, const std::vector<std::size
       continue;
     ++R.checked;
     const Enclosure s = widen_sum(sum[v], terms[v], sum[v].hi);
-    const double e = expected[v];
+    const double e = expected[v], w = window[v];
     S.cert.max_angle_sum_deviation = (std::max)(S.cert.max_angle_sum_deviation, std::abs(0.5 * (s.lo + s.hi) - e));
     S.cert.max_angle_sum_uncertainty = (std::max)(S.cert.max_angle_sum_uncertainty, s.hi - s.lo);
-    if(s.lo > e - 0.5 * CGAL_PI && s.hi < e + 0.5 * CGAL_PI)
+    if(s.lo > e - w && s.hi < e + w)
       continue;
     std::ostringstream os;
     os.precision(6);
     os << "vertex " << v << (S.is_cone[v] ? " (a cone)" : (S.on_border[v] ? " (on the boundary)" : ""))
        << " has an angle sum of " << 0.5 * (s.lo + s.hi) << " (certified in [" << s.lo << ", " << s.hi
        << "]), expected " << e << " = " << e / CGAL_PI << " pi";
-    if(s.lo <= e + 0.5 * CGAL_PI && s.hi >= e - 0.5 * CGAL_PI)
+    if(s.lo <= e + w && s.hi >= e - w)
       os << ": too uncertain to decide";
     else if(s.lo > e)
       os << ": its faces wind around it " << (0.5 * (s.lo + s.hi)) / e << " times";

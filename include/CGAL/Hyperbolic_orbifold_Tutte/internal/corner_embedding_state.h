@@ -64,6 +64,7 @@ struct Certification
   std::vector<double> tolerance;             // per vertex: min(absolute, relative x shortest incident edge)
   std::vector<char> is_cone;                 // per vertex
   std::vector<char> on_border;               // per vertex
+  std::vector<int> orders;                   // per given cone, its order when some order is not 2; empty: all 2
   std::vector<char> face_ok;                 // per mesh face: valid points, positively oriented
   // with charts (E.has_charts()): the charts, and each face's corners in its frame
   bool charted = false;
