@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Tries every mesh of a corpus as a new user would: 7 automatic landmarks, then embed
-# (certified with exact predicates by the embed job itself). Prints one line per mesh
-# (mesh, vertices, verdict, reason) and the totals.
+# (certified with exact predicates by the embed job itself), then the independent checker
+# `certify` on the OBJ (which holds the prepared mesh with --repair). Prints one line per mesh
+# (mesh, vertices, verdict, reason) and the totals: a mesh counts when embed and certify both
+# accept it.
 #   scripts/corpus.sh [--repair [--largest-component] [--max-hole F]] DIR_OR_FILE ...
 # The meshes are read where they are (e.g. ../shared/data, libcgal-demo's data/meshes);
 # nothing is copied. Meshes with fewer than 30 vertices are skipped.
@@ -46,11 +48,16 @@ for f in "${files[@]}"; do
     printf '%-48s %8s  %-8s %s\n' "$name" "$n" refused "landmarks: $(reason)"
     continue
   fi
-  if "$bin" embed --mesh "$f" --cones "$work/c.txt" "${repair[@]}" --out "$work/e.obj" >"$work/out" 2>"$work/err"; then
-    ok=$((ok + 1)); printf '%-48s %8s  %-8s %s\n' "$name" "$n" embedded \
-      "$(grep -o 'certified bijective' "$work/out" | head -1)$(sed -n 's/^repaired [^:]*: / (repair: /p' "$work/out" | head -1 | sed 's/$/)/')"
+  if "$bin" embed --mesh "$f" --cones "$work/c.txt" "${repair[@]}" --out "$work/e.obj" --report "$work/r.json" >"$work/out" 2>"$work/err"; then
+    genus=$(grep -o '"genus": [0-9]*' "$work/r.json" | grep -o '[0-9]*$' || echo 0)
+    if "$bin" certify --mesh "$work/e.obj" --embedding "$work/e.obj" --cones "$work/c.txt" >"$work/cout" 2>"$work/err"; then
+      ok=$((ok + 1)); printf '%-48s %8s  %-8s %s\n' "$name" "$n" certified \
+        "genus ${genus:-0}$(sed -n 's/^repaired [^:]*: / (repair: /p' "$work/out" | head -1 | sed 's/$/)/')"
+    else
+      printf '%-48s %8s  %-8s %s\n' "$name" "$n" uncertified "genus ${genus:-0}, certify: $(reason)"
+    fi
   else
     printf '%-48s %8s  %-8s %s\n' "$name" "$n" refused "$(reason)"
   fi
 done
-echo "embedded $ok of $total meshes"
+echo "embedded and certified $ok of $total meshes"
