@@ -78,7 +78,9 @@ vertex, and is certified: `parameterize()` returns `OK` only when
 `Embedding_certificate::is_bijective()` holds for the written coordinates.
 
 \tparam SeamMesh a `CGAL::Seam_mesh` whose seams cut the underlying closed genus-0 mesh
-        into a disk along a simple path through the landmarks in order (sphere type),
+        into a disk along a simple path through the landmarks in order (sphere type), or a
+        closed mesh of genus \f$ g \ge 1 \f$ along a cut graph through the landmarks (its tile
+        is then the graph's polygon, `make_cut_graph_tile()`; \ref HOT_Genus),
         or a `Seam_mesh` without seams over a mesh with one boundary loop (disk type).
 \tparam Traits a model of `HyperbolicOrbifoldTraits_2`, by default
         `Poincare_disk_traits_2` over the kernel of the mesh's points.

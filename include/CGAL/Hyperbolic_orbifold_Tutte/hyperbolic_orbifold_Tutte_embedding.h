@@ -34,8 +34,9 @@ namespace Hyperbolic_orbifold_Tutte {
 
 computes, in one call, the hyperbolic orbifold Tutte embedding of a triangle mesh with
 landmarks: checks the input, orders the landmarks, cuts a closed mesh open through
-them (shortest paths that are pairwise disjoint except at shared landmarks), builds
-the `Seam_mesh`, embeds with `Hyperbolic_orbifold_Tutte_parameterizer_3` and certifies
+them (genus 0: shortest paths that are pairwise disjoint except at shared landmarks; genus
+\f$ g \ge 1 \f$: a cut graph of \f$2g\f$ handle loops and paths to the landmarks, \ref HOT_Genus),
+builds the `Seam_mesh`, embeds with `Hyperbolic_orbifold_Tutte_parameterizer_3` and certifies
 the result.
 
 The output is a halfedge map of `tm`: for every halfedge `h` of a face, the Poincar&eacute;
@@ -48,9 +49,10 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
         `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key and `Point_2` of the
         traits as value type
 \tparam NamedParameters a sequence of named parameters
-\param tm a closed genus-0 triangle mesh (sphere type) or a triangulated disk (disk type)
-\param landmarks at least 5 distinct vertices (3 with cone orders above 2); for the disk type, on
-       the boundary, in boundary order (either orientation)
+\param tm a closed triangle mesh (sphere type, any genus) or a triangulated disk (disk type)
+\param landmarks distinct vertices: on a closed genus-0 mesh at least 5 (3 with cone orders above
+       2); of genus 1 at least 1; of genus 2 or more any number, also none; for the disk type at
+       least 5, on the boundary, in boundary order (either orientation)
 \param uvmap receives the coordinates; unchanged unless `OK` is returned
 \param np an optional sequence of named parameters among the ones listed below
 
@@ -72,6 +74,11 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     hyperbolic, \f$\sum (1 - 1/p) > 2\f$ (`ERROR_NOT_HYPERBOLIC` otherwise). `Embedding_statistics::cone_orders`
     receives them in the order of the cut}
     \cgalParamDefault{2 for every cone (angle \f$\pi\f$)} \cgalParamNEnd
+  \cgalParamNBegin{cut_graph} \cgalParamDescription{`std::vector<std::vector<vertex_descriptor> >`: a closed
+    mesh of genus \f$ g \ge 1 \f$ is cut along this graph, given as vertex paths (`check_cut_graph()`); its
+    first edge sets the tile's corner 0, so two meshes cut along corresponding graphs are embedded in one
+    tile and can be mapped. `Embedding_statistics::cut_graph` receives the graph used}
+    \cgalParamDefault{`compute_cut_graph()`} \cgalParamNEnd
   \cgalParamNBegin{gradient_tolerance} \cgalParamDescription{relative gradient norm to reach}
     \cgalParamDefault{`1e-10`} \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{maximum number of Newton iterations}
