@@ -10,10 +10,12 @@
 //   2. a fan of k triangles around one vertex (a disk), k = 50K to 400K (2x per step;
 //      Euler::add_face would be quadratic there: 4).
 // The sizes and the results' sanity (OK, vertex counts) are asserted by the test suite's
-// test_input_checks.large_meshes_are_built_and_checked (n = 200, k = 200K), without timings.
+// test_input_checks.large_meshes_are_built_and_checked (n = 200, k = 200K), without timings,
+// on the same generated meshes (test/generated_meshes.h).
 // Run by scripts/benchmark.sh.
 
 #include "bench_common.h"
+#include "generated_meshes.h" // (test/: the meshes the test suite checks)
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <io/polygon_soup_to_mesh.h>
@@ -24,57 +26,6 @@
 #include <vector>
 
 namespace {
-
-hot_tools::Polygon_soup cube_surface(int n)
-{
-  hot_tools::Polygon_soup soup;
-  std::vector<int> id(std::size_t(n + 1) * (n + 1) * (n + 1), -1);
-  auto vid = [&](int x, int y, int z) {
-    int& i = id[(std::size_t(x) * (n + 1) + y) * (n + 1) + z];
-    if(i < 0) {
-      i = int(soup.points.size());
-      soup.points.push_back({ { double(x), double(y), double(z) } });
-    }
-    return std::size_t(i);
-  };
-  for(int axis = 0; axis < 3; ++axis)
-    for(int side = 0; side < 2; ++side)
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j) {
-          auto pt = [&](int u, int v) {
-            int c[3];
-            c[axis] = side ? n : 0;
-            c[(axis + 1) % 3] = u;
-            c[(axis + 2) % 3] = v;
-            return vid(c[0], c[1], c[2]);
-          };
-          const std::size_t a = pt(i, j), b = pt(i + 1, j), c = pt(i + 1, j + 1), d = pt(i, j + 1);
-          const std::size_t t[2][3] = { { a, b, c }, { a, c, d } };
-          for(auto& tri : t) {
-            if(side)
-              soup.face_vertices.insert(soup.face_vertices.end(), { tri[0], tri[1], tri[2] });
-            else
-              soup.face_vertices.insert(soup.face_vertices.end(), { tri[0], tri[2], tri[1] });
-            soup.end_face();
-          }
-        }
-  return soup;
-}
-
-hot_tools::Polygon_soup fan(std::size_t k)
-{
-  hot_tools::Polygon_soup f;
-  f.points.push_back({ { 0, 0, 0 } });
-  for(std::size_t i = 0; i <= k; ++i) {
-    const double a = 3.0 * double(i) / double(k); // less than a full turn
-    f.points.push_back({ { std::cos(a), std::sin(a), 0 } });
-  }
-  for(std::size_t i = 1; i <= k; ++i) {
-    f.face_vertices.insert(f.face_vertices.end(), { 0, i, i + 1 });
-    f.end_face();
-  }
-  return f;
-}
 
 [[noreturn]] void fail(const char* what)
 {
@@ -89,7 +40,7 @@ int main()
   std::printf("%-26s %10s %10s %10s %10s %8s\n", "mesh", "vertices", "build_s", "check_s", "total_s", "ratio");
   double previous = 0;
   for(const int n : { 50, 100, 200, 400 }) {
-    const hot_tools::Polygon_soup soup = cube_surface(n);
+    const hot_tools::Polygon_soup soup = hot_generated::cube_surface(n);
     SM sm;
     Clock::time_point t0 = Clock::now();
     if(!hot_tools::polygon_soup_to_mesh(soup, sm)) fail("building the cube");
@@ -107,7 +58,7 @@ int main()
   std::printf("(ratio: time over the previous size's; the size grows 4x per line, linear code gives about 4)\n");
   previous = 0;
   for(const std::size_t k : { 50000, 100000, 200000, 400000 }) {
-    const hot_tools::Polygon_soup f = fan(k);
+    const hot_tools::Polygon_soup f = hot_generated::fan(k);
     SM sm;
     Clock::time_point t0 = Clock::now();
     if(!hot_tools::polygon_soup_to_mesh(f, sm)) fail("building the fan");

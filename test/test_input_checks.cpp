@@ -7,6 +7,7 @@
 // Real meshes come from Debian's libcgal-demo (`--data DIR` with DIR/meshes/*.off).
 
 #include "test_harness.h"
+#include "generated_meshes.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -1114,39 +1115,9 @@ TEST_CASE(landmarks_end_to_end)
 TEST_CASE(large_meshes_are_built_and_checked)
 {
   // a closed genus-0 mesh: the surface of an n x n x n grid cube (6 n^2 + 2 vertices,
-  // 12 n^2 triangles: Euler's formula V - E + F = 2 with E = 3F/2)
+  // 12 n^2 triangles)
   const int n = 200;
-  hot_tools::Polygon_soup soup;
-  std::vector<int> id((n + 1) * (n + 1) * (n + 1), -1);
-  auto vid = [&](int x, int y, int z) {
-    int& i = id[(x * (n + 1) + y) * (n + 1) + z];
-    if(i < 0) {
-      i = int(soup.points.size());
-      soup.points.push_back({ { double(x), double(y), double(z) } });
-    }
-    return std::size_t(i);
-  };
-  for(int axis = 0; axis < 3; ++axis)
-    for(int side = 0; side < 2; ++side)
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j) {
-          auto pt = [&](int u, int v) {
-            int c[3];
-            c[axis] = side ? n : 0;
-            c[(axis + 1) % 3] = u;
-            c[(axis + 2) % 3] = v;
-            return vid(c[0], c[1], c[2]);
-          };
-          const std::size_t a = pt(i, j), b = pt(i + 1, j), c = pt(i + 1, j + 1), d = pt(i, j + 1);
-          const std::size_t t[2][3] = { { a, b, c }, { a, c, d } };
-          for(auto& tri : t) {
-            if(side)
-              soup.face_vertices.insert(soup.face_vertices.end(), { tri[0], tri[1], tri[2] });
-            else
-              soup.face_vertices.insert(soup.face_vertices.end(), { tri[0], tri[2], tri[1] });
-            soup.end_face();
-          }
-        }
+  const hot_tools::Polygon_soup soup = hot_generated::cube_surface(n);
   SM sm;
   CHECK_RESULT(hot_tools::polygon_soup_to_mesh(soup, sm), HOT::OK, "");
   HOT::Mesh_info info;
@@ -1157,17 +1128,8 @@ TEST_CASE(large_meshes_are_built_and_checked)
 
   // a fan of 200K triangles around one vertex (a disk; Euler::add_face would be quadratic
   // here, the builder is not: benchmark/bench_input_checks.cpp times it)
-  hot_tools::Polygon_soup fan;
   const std::size_t k = 200000;
-  fan.points.push_back({ { 0, 0, 0 } });
-  for(std::size_t i = 0; i <= k; ++i) {
-    const double a = 3.0 * double(i) / double(k); // less than a full turn
-    fan.points.push_back({ { std::cos(a), std::sin(a), 0 } });
-  }
-  for(std::size_t i = 1; i <= k; ++i) {
-    fan.face_vertices.insert(fan.face_vertices.end(), { 0, i, i + 1 });
-    fan.end_face();
-  }
+  const hot_tools::Polygon_soup fan = hot_generated::fan(k);
   CHECK_RESULT(hot_tools::polygon_soup_to_mesh(fan, sm), HOT::OK, "");
   CHECK(num_vertices(sm) == k + 2 && num_faces(sm) == k);
   CHECK_RESULT(HOT::check_mesh(sm, HOT::Disk_type), HOT::OK, "");

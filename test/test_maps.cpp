@@ -788,6 +788,51 @@ TEST_CASE(folded_embedding_terminates)
 
 // the locator over a Polyhedron_3 with an unordered_map as corner map: hand -> the same hand
 // as a polyhedron, embedded with the same landmarks (the same critical point): the identity
+// The constructors from an orbifold type and a number of cones are those from the signature of
+// k cones of angle pi (disk: corners of angle pi/2), with or without charts: the same tile and
+// the same answers; and a refusal says why (a regular orbifold with too few cones, or a
+// signature without a tile)
+TEST_CASE(locator_from_type_and_k_is_the_one_from_the_signature)
+{
+  typedef Mesh::Property_map<halfedge_descriptor, HOT::Chart_point<Point_2> > Chart_map;
+  const std::vector<Isometry> no_charts;
+  for(Embedded* e : {sphere_family().homer.get(), disk_family().mushroom.get()}) {
+    if(!ready({e})) continue;
+    const HOT::Orbifold_type type = is_closed(e->mesh) ? HOT::Sphere_type : HOT::Disk_type;
+    const int k = static_cast<int>(e->landmarks.size());
+    const HOT::Orbifold_signature sig = type == HOT::Sphere_type ? HOT::Orbifold_signature::sphere(k) : HOT::Orbifold_signature::disk(k);
+    Chart_map cm = e->mesh.add_property_map<halfedge_descriptor, HOT::Chart_point<Point_2> >("h:no_chart").first;
+    const Locator a(e->mesh, e->uv, type, k), b(e->mesh, e->uv, sig);
+    const Locator c(e->mesh, e->uv, cm, no_charts, type, k), d(e->mesh, e->uv, cm, no_charts, sig);
+    for(const Locator* l : {&a, &b, &c, &d}) {
+      CHECK_MSG(l->is_valid(), e->name << ": " << l->message());
+      CHECK(l->tile().corners() == e->locator_h->tile().corners());
+      CHECK(l->interpolation_model() == HOT::Hyperboloid_linear);
+    }
+    for(int i = 0; i < 200; ++i) {
+      const Point_2 z = e->locator_h->disk_point(random_face_point(*e));
+      const Location la = a.locate(z), lb = b.locate(z), lc = c.locate(z), ld = d.locate(z);
+      CHECK(la.success && la.face_index == lb.face_index && la.face_index == lc.face_index && la.face_index == ld.face_index);
+      CHECK(la.barycentric == lb.barycentric && la.barycentric == lc.barycentric && la.barycentric == ld.barycentric);
+    }
+    e->mesh.remove_property_map(cm);
+  }
+  Disk_family& d = disk_family();
+  if(!ready({d.mushroom.get()})) return;
+  const Embedded& e = *d.mushroom;
+  Chart_map cm = d.mushroom->mesh.add_property_map<halfedge_descriptor, HOT::Chart_point<Point_2> >("h:no_chart").first;
+  for(const Locator& l : {Locator(e.mesh, e.uv, HOT::Disk_type, 4), Locator(e.mesh, e.uv, cm, no_charts, HOT::Sphere_type, 4)}) {
+    CHECK(!l.is_valid());
+    CHECK_MSG(l.message() == "the orbifold with 4 cones is not hyperbolic", l.message());
+  }
+  const HOT::Orbifold_signature small(HOT::Sphere_type, {2, 3, 3});
+  for(const Locator& l : {Locator(e.mesh, e.uv, small), Locator(e.mesh, e.uv, cm, no_charts, small)}) {
+    CHECK(!l.is_valid());
+    CHECK_MSG(l.message() == "the orbifold of the signature has no tile (not hyperbolic, or not built)", l.message());
+  }
+  d.mushroom->mesh.remove_property_map(cm);
+}
+
 TEST_CASE(polyhedron_3_locator)
 {
   typedef CGAL::Polyhedron_3<K> Polyhedron;

@@ -154,28 +154,17 @@ public:
   /// builds the locator of the embedding `uv` of `tm` into the orbifold of the given type with `k` cones
   Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, Orbifold_type type, int k,
                     Interpolation_model model = Hyperboloid_linear)
-  {
-    lt_.model = model;
-    Tile tile;
-    if(make_orbifold_tile(type, k, tile) != OK) {
-      lt_.fail("the orbifold with " + std::to_string(k) + " cones is not hyperbolic");
-      return;
-    }
-    build(tm, uv, tile);
-  }
+    : Embedding_locator(tm, uv, regular_signature(type, k), model)
+  {}
 
   /// builds the locator of the embedding `uv` of `tm` into the orbifold of `signature` (cones
   /// of any orders, `make_orbifold_tile()`)
   Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, const Orbifold_signature& signature,
                     Interpolation_model model = Hyperboloid_linear)
   {
-    lt_.model = model;
     Tile tile;
-    if(make_orbifold_tile(signature, tile) != OK) {
-      lt_.fail("the orbifold of the signature has no tile (not hyperbolic, or not built)");
-      return;
-    }
-    build(tm, uv, tile);
+    if(set_up_tile(signature, model, tile))
+      build(tm, uv, tile);
   }
 
   /// builds the locator of an embedding written partly in charts around cone images
@@ -187,15 +176,8 @@ public:
   Embedding_locator(const TriangleMesh& tm, HalfedgeUVMap uv, HalfedgeChartMap chart_map,
                     const std::vector<Isometry>& charts, Orbifold_type type, int k,
                     Interpolation_model model = Hyperboloid_linear)
-  {
-    lt_.model = model;
-    Tile tile;
-    if(make_orbifold_tile(type, k, tile) != OK) {
-      lt_.fail("the orbifold with " + std::to_string(k) + " cones is not hyperbolic");
-      return;
-    }
-    build_with_charts(tm, uv, chart_map, charts, tile);
-  }
+    : Embedding_locator(tm, uv, chart_map, charts, regular_signature(type, k), model)
+  {}
 
   /// the same for the orbifold of `signature` (cones of any orders, `make_orbifold_tile()`)
   template <class HalfedgeChartMap>
@@ -203,13 +185,9 @@ public:
                     const std::vector<Isometry>& charts, const Orbifold_signature& signature,
                     Interpolation_model model = Hyperboloid_linear)
   {
-    lt_.model = model;
     Tile tile;
-    if(make_orbifold_tile(signature, tile) != OK) {
-      lt_.fail("the orbifold of the signature has no tile (not hyperbolic, or not built)");
-      return;
-    }
-    build_with_charts(tm, uv, chart_map, charts, tile);
+    if(set_up_tile(signature, model, tile))
+      build_with_charts(tm, uv, chart_map, charts, tile);
   }
 
   /// \name Access
@@ -357,6 +335,27 @@ public:
 
 private:
   // the faces in charts, then the tile's
+  // the signature of `k` cones of angle pi (sphere type) or corners of angle pi/2 (disk type)
+  static Orbifold_signature regular_signature(Orbifold_type type, int k)
+  {
+    return type == Sphere_type ? Orbifold_signature::sphere(k) : Orbifold_signature::disk(k);
+  }
+
+  // the interpolation model, and the tile of `signature`; false (the locator failed, saying
+  // why) when it has none
+  bool set_up_tile(const Orbifold_signature& signature, Interpolation_model model, Tile& tile)
+  {
+    lt_.model = model;
+    if(make_orbifold_tile(signature, tile) == OK)
+      return true;
+    bool regular = true;
+    for(int i = 0; i < signature.number_of_cones(); ++i)
+      regular = regular && signature.order(i) == 2;
+    lt_.fail(regular ? "the orbifold with " + std::to_string(signature.number_of_cones()) + " cones is not hyperbolic"
+                     : std::string("the orbifold of the signature has no tile (not hyperbolic, or not built)"));
+    return false;
+  }
+
   template <class HalfedgeChartMap>
   void build_with_charts(const TriangleMesh& tm, HalfedgeUVMap uv, HalfedgeChartMap chart_map,
                          const std::vector<Isometry>& charts, const Tile& tile)
