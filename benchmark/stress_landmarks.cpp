@@ -62,7 +62,7 @@ static const char* error_code_name(HOT::Error_code ec)
     "ERROR_DUPLICATE_LANDMARK", "ERROR_LANDMARK_OUT_OF_RANGE", "ERROR_LANDMARK_NOT_ON_BORDER",
     "ERROR_DEGENERATE_FACE", "ERROR_NON_FINITE_COORDINATES", "ERROR_CUT_FAILED", "ERROR_CANNOT_SOLVE_LINEAR_SYSTEM",
     "ERROR_NOT_CONVERGED", "ERROR_NO_1_TO_1_MAPPING", "ERROR_POINT_NOT_LOCATED", "ERROR_READ_FAILED",
-    "ERROR_WRITE_FAILED", "ERROR_BOUNDARY_CHORD"};
+    "ERROR_WRITE_FAILED", "ERROR_BOUNDARY_CHORD", "ERROR_POLYGON_NOT_CONVEX", "ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER"};
   static_assert(sizeof(names) / sizeof(names[0]) == HOT::number_of_error_codes, "one name per Error_code");
   const int i = static_cast<int>(ec);
   return (i >= 0 && i < HOT::number_of_error_codes) ? names[i] : "UNKNOWN_ERROR_CODE";

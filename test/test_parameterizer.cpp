@@ -4,7 +4,8 @@
 // The hyperbolic orbifold Tutte parameterizer: derivatives checked by finite
 // differences, certified embeddings of real meshes, the critical point's defining
 // property (every vertex is the weighted hyperbolic centre of mass of its
-// neighbours), and the paper's Figure 8 comparison.
+// neighbours), the paper's Figure 8 comparison, and the fixed-boundary embedding onto a
+// convex polygon (Theorem 1).
 
 #include "test_harness.h"
 #include "test_common_meshes.h"
@@ -13,9 +14,11 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/fixed_boundary_hyperbolic_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Random.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <map>
@@ -635,47 +638,439 @@ static bool make_disk_problem(Mesh& m, const std::vector<vertex_descriptor>& lm,
   return HOT::internal::initialize_embedding(D.P, D.tile, D.pts, D.x) == HOT::OK;
 }
 
+// ---- the fixed-boundary hyperbolic Tutte embedding (Theorem 1, Figure 8) ---------
+
+// the vertex coordinates of a fixed-boundary embedding
+typedef Mesh::Property_map<vertex_descriptor, Point_2> Vertex_UV_map;
+
+struct Fixed_run
+{
+  HOT::Error_code ec;
+  HOT::Embedding_statistics st;
+};
+
+// the fixed-boundary embedding into the "v:fixed" map (reset to (2, 2) first)
+template <class NP = CGAL::parameters::Default_named_parameters>
+static Fixed_run embed_fixed(Mesh& m, const std::vector<vertex_descriptor>& corners, const std::vector<C>& polygon,
+                             const NP& np = CGAL::parameters::default_values())
+{
+  Vertex_UV_map uv = m.add_property_map<vertex_descriptor, Point_2>("v:fixed").first;
+  for(vertex_descriptor v : vertices(m)) put(uv, v, Point_2(2, 2));
+  std::vector<Point_2> pts;
+  for(const C& z : polygon) pts.push_back(Point_2(z.real(), z.imag()));
+  Fixed_run r;
+  r.ec = HOT::fixed_boundary_hyperbolic_Tutte_embedding(m, corners, pts, uv, HOT::parameters::embedding_statistics(&r.st, np));
+  return r;
+}
+
+static C vertex_uv(const Mesh& m, vertex_descriptor v)
+{
+  const Point_2 p = get(m.property_map<vertex_descriptor, Point_2>("v:fixed").first, v);
+  return C(p.x(), p.y());
+}
+
+// the corners of the disk orbifold's tile that landmark c goes to (clockwise landmarks: corner -c)
+static std::vector<C> orbifold_corners(int k, bool reversed)
+{
+  HOT::Orbifold_tile<> tile;
+  HOT::make_orbifold_tile(HOT::Disk_type, k, tile);
+  std::vector<C> p;
+  for(int c = 0; c < k; ++c) {
+    const Point_2& q = tile.corner(reversed ? (k - c) % k : c);
+    p.push_back(C(q.x(), q.y()));
+  }
+  return p;
+}
+
 TEST_CASE(disk_orbifold_energy_below_fixed_boundary_figure_8)
 {
   // The paper's Figure 8: letting boundary vertices slide on the tile's sides (disk
   // orbifold) gives a lower Dirichlet energy than fixing them (hyperbolic Tutte onto the
-  // same convex polygon), for the same mesh, weights and corners.
+  // same convex polygon), for the same mesh, weights and corners: the fixed boundary is one
+  // of the positions the orbifold's boundary may take.
   for(const std::string name : {"mushroom", "nefertiti", "grid"}) {
     Mesh m;
     if(name == "grid") m = grid_mesh(12, 0.5);
     else CHECK(read_demo_mesh(name, m));
     std::vector<vertex_descriptor> lm = (name == "grid") ? std::vector<vertex_descriptor>{vertex_descriptor(0), vertex_descriptor(11), vertex_descriptor(143), vertex_descriptor(138), vertex_descriptor(132)}
                                                           : boundary_landmarks(m, 6, 0.3);
-    Disk_problem D;
-    CHECK_MSG(make_disk_problem(m, lm, D), name);
-    HOT::internal::Flat_problem F = D.P; // fixed boundary: the On_line vertices frozen at the initial positions
-    std::vector<double> xf;
-    {
-      std::vector<std::complex<double> > z0(F.n);
-      for(int v = 0; v < F.n; ++v) z0[v] = HOT::internal::position(D.P, D.x, v);
-      int nv = 0;
-      for(int v = 0; v < F.n; ++v) {
-        if(F.kind[v] == HOT::internal::On_line) { F.kind[v] = HOT::internal::Fixed; F.fixed[v] = z0[v]; }
-        if(F.kind[v] == HOT::internal::Free) { F.var[v] = nv; nv += 2; xf.push_back(z0[v].real()); xf.push_back(z0[v].imag()); }
-      }
-      F.n_vars = nv;
+    const Embedding_run orbifold = embed(m, lm, HOT::Cotangent);
+    CHECK_MSG(orbifold.ec == HOT::OK, name << ": " << orbifold.st.message);
+    CHECK_MSG(orbifold.st.certificate.is_bijective(), orbifold.st.certificate);
+    // onto the orbifold's tile, each landmark at the corner the orbifold gave it
+    const Fixed_run fixed = embed_fixed(m, lm, orbifold_corners(int(lm.size()), orbifold.st.landmark_order_reversed));
+    CHECK_MSG(fixed.ec == HOT::OK, name << ": " << fixed.st.message);
+    CHECK_MSG(fixed.st.certificate.is_bijective(), fixed.st.certificate); // Theorem 1
+    CHECK(!fixed.st.orientation_reversed); // (the orbifold's correspondence keeps the orientation)
+    std::cout << "  " << name << ": disk orbifold energy " << orbifold.st.energy << " < fixed boundary "
+              << fixed.st.energy << " (" << fixed.st.iterations << " Newton iterations, " << fixed.st.time_optimization
+              << " s)" << std::endl;
+    CHECK(orbifold.st.energy < fixed.st.energy);
+  }
+}
+
+// Klein point of a Poincare point
+static C klein(const C& z) { return 2.0 * z / (1.0 + std::norm(z)); }
+
+// hyperbolic distance (eq. (6), as 2 asinh: no cancellation for near points)
+static double hdist(const C& z, const C& w)
+{
+  return 2 * std::asinh(std::abs(z - w) / std::sqrt((1 - std::norm(z)) * (1 - std::norm(w))));
+}
+
+// hyperbolic angle at p between the geodesics to q and r (the model is conformal)
+static double hangle(const C& p, const C& q, const C& r)
+{
+  const Isometry to0 = Isometry::translation_to_origin(p);
+  return std::abs(std::arg(to0.apply(q) / to0.apply(r)));
+}
+
+// the boundary loop from corner 0 in the direction of the corners (they are in boundary order)
+static std::vector<vertex_descriptor> loop_along_corners(const Mesh& m, const std::vector<vertex_descriptor>& corners)
+{
+  halfedge_descriptor b;
+  for(halfedge_descriptor h : halfedges(m))
+    if(is_border(h, m) && target(h, m) == corners[0]) { b = h; break; }
+  std::vector<vertex_descriptor> loop;
+  halfedge_descriptor h = b;
+  do { loop.push_back(target(h, m)); h = next(h, m); } while(h != b);
+  const std::size_t at1 = std::find(loop.begin(), loop.end(), corners[1]) - loop.begin();
+  const std::size_t at2 = std::find(loop.begin(), loop.end(), corners[2]) - loop.begin();
+  if(at2 < at1) // the corners go the other way
+    std::reverse(loop.begin() + 1, loop.end());
+  return loop;
+}
+
+// a convex polygon: n corners at uneven angles on a circle about the origin, moved off the
+// origin by an isometry (convexity and angles are kept)
+static std::vector<C> uneven_polygon(int n, double radius, const C& moved_to)
+{
+  const Isometry move = Isometry::translation_from_origin(moved_to);
+  std::vector<C> p;
+  for(int j = 0; j < n; ++j)
+    p.push_back(move.apply(std::polar(radius, 2 * CGAL_PI * (j + 0.3 * std::sin(2.0 * j + 1)) / n)));
+  return p;
+}
+
+// corners 0, k-1, ..., 1: the same correspondence the other way round the boundary
+template <class T>
+static std::vector<T> other_way(std::vector<T> v)
+{
+  std::reverse(v.begin() + 1, v.end());
+  return v;
+}
+
+// Facts about the embedding onto `polygon` known from outside the solver: every face of one
+// orientation (exact), the corners on their corners, every boundary vertex on its side's
+// geodesic (collinear in the Klein model), in order, at its side's fraction of 3D arc
+// length, the area that of the polygon (Gauss-Bonnet), and every interior vertex the
+// weighted hyperbolic centre of mass of its neighbours. Returns the largest hyperbolic
+// distance between this embedding and `reference` (if given, through `f`).
+static void check_fixed_boundary_embedding(Mesh& m, const std::string& what, const std::vector<vertex_descriptor>& corners,
+                                           const std::vector<C>& polygon, const Fixed_run& r, HOT::Weight_type w = HOT::Cotangent)
+{
+  CHECK_MSG(r.ec == HOT::OK, what << ": " << r.st.message);
+  if(r.ec != HOT::OK) return;
+  CHECK_MSG(r.st.certificate.is_bijective(), what << ": " << r.st.certificate);
+  CHECK(r.st.converged && r.st.relative_gradient_norm <= 1e-10);
+  const std::size_t n = polygon.size();
+  // orientation, exact: all faces counterclockwise, or all clockwise when the map reverses it
+  const HOT::Poincare_disk_traits_2<> tr;
+  const auto orient = tr.hyperbolic_orientation_2_object();
+  std::size_t wrong = 0;
+  for(auto f : faces(m)) {
+    std::vector<Point_2> t;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, m), m)) {
+      const C z = vertex_uv(m, target(h, m));
+      t.push_back(Point_2(z.real(), z.imag()));
     }
-    HOT::internal::Solver_options opt;
-    opt.verbose = std::getenv("HOT_VERBOSE") != nullptr;
-    HOT::Solver_statistics s1, s2;
-    std::vector<double> x = D.x;
-    CHECK(HOT::internal::minimize_energy(D.P, x, opt, s1) == HOT::OK);
-    const HOT::Error_code ec2 = HOT::internal::minimize_energy(F, xf, opt, s2);
-    CHECK_MSG(ec2 == HOT::OK, HOT::error_message(ec2) << " after " << s2.iterations << " iterations, imbalance " << s2.relative_gradient_norm);
-    std::cout << "  " << name << ": disk orbifold energy " << s1.energy << " < fixed boundary " << s2.energy << std::endl;
-    CHECK(s1.energy < s2.energy);
-    // both are bijective (Theorems 1 and 2)
-    std::vector<std::complex<double> > u1(D.P.n), u2(F.n);
-    for(int v = 0; v < D.P.n; ++v) { u1[v] = HOT::internal::position(D.P, x, v); u2[v] = HOT::internal::position(F, xf, v); }
-    const HOT::Embedding_certificate c1 = HOT::internal::certify_flat(D.P, D.tile, u1);
-    CHECK_MSG(c1.is_bijective(), c1);
-    const HOT::Embedding_certificate c2 = HOT::internal::certify_flat(F, D.tile, u2);
-    CHECK_MSG(c2.flipped_faces == 0 && c2.degenerate_faces == 0 && c2.angle_sum_failures == 0, c2);
+    wrong += orient(t[0], t[1], t[2]) != (r.st.orientation_reversed ? CGAL::NEGATIVE : CGAL::POSITIVE);
+  }
+  CHECK_MSG(wrong == 0, what << ": " << wrong << " faces not of the map's orientation");
+  // corners exactly on the given corners
+  for(std::size_t i = 0; i < n; ++i)
+    CHECK_MSG(vertex_uv(m, corners[i]) == polygon[i], what << ": corner " << i);
+  // the boundary on the sides, in order, spaced as in 3D
+  const std::vector<vertex_descriptor> loop = loop_along_corners(m, corners);
+  std::size_t i = 0, on_sides = 0;
+  double worst_line = 0, worst_fraction = 0;
+  for(std::size_t a = 0; a < loop.size();) {
+    std::size_t b = a + 1;
+    while(b < loop.size() && std::find(corners.begin(), corners.end(), loop[b]) == corners.end()) ++b;
+    const vertex_descriptor va = loop[a], vb = loop[b % loop.size()];
+    CHECK(va == corners[i] && vb == corners[(i + 1) % n]);
+    const C ka = klein(polygon[i]), kb = klein(polygon[(i + 1) % n]), D = kb - ka;
+    std::vector<double> acc(1, 0.0);
+    for(std::size_t q = a; q < b; ++q)
+      acc.push_back(acc.back() + std::sqrt(CGAL::squared_distance(m.point(loop[q]), m.point(loop[(q + 1) % loop.size()]))));
+    double last = 0;
+    for(std::size_t q = a + 1; q < b; ++q) {
+      const C z = vertex_uv(m, loop[q]), k = klein(z) - ka;
+      worst_line = std::max(worst_line, std::abs(D.real() * k.imag() - D.imag() * k.real()) / std::abs(D));
+      const double t = (k.real() * D.real() + k.imag() * D.imag()) / std::norm(D); // along the Klein chord
+      CHECK_MSG(t > last && t < 1, what << ": boundary vertex " << loop[q].idx() << " out of order on side " << i);
+      last = t;
+      const double fraction = hdist(polygon[i], z) / hdist(polygon[i], polygon[(i + 1) % n]);
+      worst_fraction = std::max(worst_fraction, std::abs(fraction - acc[q - a] / acc.back()));
+      ++on_sides;
+    }
+    a = b;
+    ++i;
+  }
+  CHECK(i == n);
+  CHECK_MSG(worst_line < 1e-12, what << ": a boundary vertex is " << worst_line << " off its side in Klein");
+  CHECK_MSG(worst_fraction < 1e-9, what << ": boundary spacing off the 3D arc length by " << worst_fraction);
+  // Gauss-Bonnet
+  double angles = 0;
+  for(std::size_t j = 0; j < n; ++j) angles += hangle(polygon[j], polygon[(j + 1) % n], polygon[(j + n - 1) % n]);
+  CHECK_NEAR(r.st.certificate.total_area, (n - 2) * CGAL_PI - angles, 1e-7);
+  // harmonic: the centre-of-mass test of the orbifold embeddings, on corner coordinates
+  UV_map huv = m.add_property_map<halfedge_descriptor, Point_2>("h:fixed").first;
+  for(halfedge_descriptor h : halfedges(m)) {
+    const C z = vertex_uv(m, target(h, m));
+    put(huv, h, Point_2(z.real(), z.imag()));
+  }
+  Defect_statistics ds;
+  const double defect = worst_centre_of_mass_defect(m, huv, w, corners, 1e3, &ds);
+  CHECK_MSG(defect <= 1, what << ": an interior vertex is off the centre of mass of its neighbours (" << defect << ")");
+  CHECK(ds.checked + on_sides + n == num_vertices(m));
+  m.remove_property_map(huv);
+  std::cout << "  " << what << ": " << num_vertices(m) << " vertices, " << n << " corners, " << r.st.iterations
+            << " Newton iterations, " << r.st.time_initialization + r.st.time_optimization << " s (+ " << r.st.time_certificate
+            << " s certificate), largest balance defect " << ds.largest << std::endl;
+}
+
+// the largest hyperbolic distance between f(the "v:fixed" coordinates of a) and those of b
+template <class F>
+static double largest_distance(const Mesh& a, const Mesh& b, F f)
+{
+  double d = 0;
+  for(vertex_descriptor v : vertices(a)) d = std::max(d, hdist(f(vertex_uv(a, v)), vertex_uv(b, v)));
+  return d;
+}
+
+static void check_fixed_boundary_mesh(Mesh& m, const std::string& name, const std::vector<vertex_descriptor>& corners_cw)
+{
+  const int n = int(corners_cw.size());
+  // counterclockwise around the mesh (boundary_landmarks follows next(): clockwise)
+  const std::vector<vertex_descriptor> corners = other_way(corners_cw);
+  const std::vector<C> polygon = uneven_polygon(n, 0.7, C(0.25, -0.15));
+  const Fixed_run r = embed_fixed(m, corners, polygon);
+  CHECK(!r.st.orientation_reversed && !r.st.landmark_order_reversed);
+  check_fixed_boundary_embedding(m, name, corners, polygon, r);
+  if(r.ec != HOT::OK) return;
+  Mesh ref = m;
+  // The energy is invariant under isometries, and so is the boundary's spacing: onto the
+  // polygon moved by an isometry, the embedding is the moved one
+  const Isometry g = Isometry::translation_from_origin(C(-0.3, 0.4)) * Isometry::rotation(1.0);
+  std::vector<C> moved;
+  for(const C& z : polygon) moved.push_back(g.apply(z));
+  const Fixed_run rg = embed_fixed(m, corners, moved);
+  CHECK_MSG(rg.ec == HOT::OK, rg.st.message);
+  const double dg = largest_distance(ref, m, [&](const C& z) { return g.apply(z); });
+  CHECK_MSG(dg < 1e-8, name << ": moved polygon, embedding off the moved one by " << dg);
+  CHECK_NEAR(rg.st.energy, r.st.energy, 1e-9 * r.st.energy);
+  // the same correspondence listed the other way round: the same embedding
+  const Fixed_run rr = embed_fixed(m, other_way(corners), other_way(polygon));
+  CHECK_MSG(rr.ec == HOT::OK, rr.st.message);
+  CHECK(rr.st.landmark_order_reversed && !rr.st.orientation_reversed);
+  const double dr = largest_distance(ref, m, [](const C& z) { return z; });
+  CHECK_MSG(dr < 1e-8, name << ": corners listed the other way, embedding off by " << dr);
+  // onto the mirror image: the mirrored embedding, orientation reversed (all faces clockwise)
+  std::vector<C> mirror;
+  for(const C& z : polygon) mirror.push_back(std::conj(z));
+  const Fixed_run rm = embed_fixed(m, corners, mirror);
+  CHECK(rm.st.orientation_reversed);
+  check_fixed_boundary_embedding(m, name + " mirrored", corners, mirror, rm);
+  const double dm = largest_distance(ref, m, [](const C& z) { return std::conj(z); });
+  CHECK_MSG(dm < 1e-8, name << ": mirrored polygon, embedding off the mirrored one by " << dm);
+}
+
+// `corners` (clockwise, as boundary_landmarks gives them) with, for each boundary chord
+// the embedding refuses, the boundary vertex halfway between the chord's ends made a corner
+// too, as the refusal's message advises (checking its claim first)
+static std::vector<vertex_descriptor> corners_without_chords(Mesh& m, std::vector<vertex_descriptor> corners)
+{
+  std::vector<vertex_descriptor> loop; // along next(), from the first border halfedge (as boundary_landmarks)
+  {
+    halfedge_descriptor b;
+    for(halfedge_descriptor h : halfedges(m))
+      if(is_border(h, m)) { b = h; break; }
+    halfedge_descriptor h = b;
+    do { loop.push_back(target(h, m)); h = next(h, m); } while(h != b);
+  }
+  auto at = [&](vertex_descriptor v) { return long(std::find(loop.begin(), loop.end(), v) - loop.begin()); };
+  for(int attempt = 0; attempt < 20; ++attempt) {
+    const Fixed_run r = embed_fixed(m, other_way(corners), uneven_polygon(int(corners.size()), 0.7, C(0, 0)));
+    if(r.ec != HOT::ERROR_BOUNDARY_CHORD)
+      break;
+    CHECK(r.st.problem_vertices.size() == 2);
+    if(r.st.problem_vertices.size() != 2) break;
+    const vertex_descriptor a(r.st.problem_vertices[0]), b(r.st.problem_vertices[1]);
+    const auto e = edge(a, b, m);
+    CHECK(is_border(a, m) && is_border(b, m) && e.second && !is_border(e.first, m));
+    const long nl = long(loop.size()), ia = at(a), ib = at(b);
+    const long fwd = (ib - ia + nl) % nl, bwd = (ia - ib + nl) % nl;
+    const vertex_descriptor mid = loop[(fwd <= bwd ? ia + fwd / 2 : ia - bwd / 2 + nl) % nl];
+    CHECK(std::find(corners.begin(), corners.end(), mid) == corners.end());
+    corners.push_back(mid);
+    std::sort(corners.begin(), corners.end(), [&](vertex_descriptor u, vertex_descriptor v) { return at(u) < at(v); });
+  }
+  return corners;
+}
+
+TEST_CASE(fixed_boundary_onto_convex_polygons)
+{
+  // Theorem 1 on real disks and a generated one, with 3 to 8 corners (the mannequin's
+  // boundary has ears: each needs a corner)
+  const std::pair<std::string, int> cases[] = {{"mushroom", 3}, {"nefertiti", 5}, {"lion-head", 6}, {"mannequin-devil", 6}};
+  for(const auto& c : cases) {
+    Mesh m;
+    CHECK_MSG(read_demo_mesh(c.first, m), "cannot read " << c.first);
+    if(num_vertices(m) == 0) continue;
+    check_fixed_boundary_mesh(m, c.first, corners_without_chords(m, boundary_landmarks(m, c.second, 0.3)));
+  }
+  // the bumped grid onto a quadrilateral: its corners at the grid's corners (two are ears)
+  const int g = 12;
+  Mesh m = grid_mesh(g, 0.5);
+  auto V = [&](int i, int j) { return vertex_descriptor(j * g + i); };
+  check_fixed_boundary_mesh(m, "grid", {V(0, 0), V(0, g - 1), V(g - 1, g - 1), V(g - 1, 0)});
+}
+
+TEST_CASE(fixed_boundary_every_boundary_vertex_a_corner)
+{
+  // the boundary onto a polygon inscribed in a circle, one corner per boundary vertex (the
+  // hyperbolic counterpart of Tutte's embedding onto a circle); and the smallest disk, one
+  // triangle onto a triangle (no interior vertex)
+  Mesh m;
+  CHECK(read_demo_mesh("mushroom", m));
+  std::vector<vertex_descriptor> loop;
+  {
+    halfedge_descriptor b;
+    for(halfedge_descriptor h : halfedges(m))
+      if(is_border(h, m)) { b = h; break; }
+    halfedge_descriptor h = b;
+    do { loop.push_back(target(h, m)); h = prev(h, m); } while(h != b); // counterclockwise
+  }
+  const int n = int(loop.size());
+  std::vector<C> circle;
+  for(int j = 0; j < n; ++j) circle.push_back(std::polar(0.9, 2 * CGAL_PI * j / n));
+  check_fixed_boundary_embedding(m, "mushroom on a circle", loop, circle, embed_fixed(m, loop, circle));
+
+  Mesh t;
+  const vertex_descriptor a = t.add_vertex(K::Point_3(0, 0, 0)), b = t.add_vertex(K::Point_3(1, 0, 0)),
+                          c = t.add_vertex(K::Point_3(0, 1, 1));
+  t.add_face(a, b, c);
+  const std::vector<C> tri = {C(-0.5, -0.3), C(0.6, -0.2), C(0.0, 0.7)};
+  check_fixed_boundary_embedding(t, "one triangle", {a, b, c}, tri, embed_fixed(t, {a, b, c}, tri));
+}
+
+TEST_CASE(fixed_boundary_weights)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("mushroom", m));
+  const std::vector<vertex_descriptor> corners = other_way(boundary_landmarks(m, 5, 0.3));
+  const std::vector<C> polygon = uneven_polygon(5, 0.8, C(0, 0));
+  // uniform weights: the centre-of-mass test with weight 1
+  check_fixed_boundary_embedding(m, "mushroom, uniform weights", corners, polygon,
+                                 embed_fixed(m, corners, polygon, HOT::parameters::weight_type(HOT::Uniform)), HOT::Uniform);
+  const Fixed_run mv = embed_fixed(m, corners, polygon, HOT::parameters::weight_type(HOT::Mean_value));
+  CHECK_MSG(mv.ec == HOT::OK && mv.st.certificate.is_bijective(), mv.st.message);
+  // the user's weights: 1 on every edge is the uniform embedding
+  Mesh ref = m;
+  auto ones = m.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, double>("e:one", 1.0).first;
+  const Fixed_run u = embed_fixed(m, corners, polygon, HOT::parameters::edge_weight_map(ones));
+  CHECK_MSG(u.ec == HOT::OK, u.st.message);
+  embed_fixed(ref, corners, polygon, HOT::parameters::weight_type(HOT::Uniform));
+  CHECK(largest_distance(ref, m, [](const C& z) { return z; }) < 1e-12);
+}
+
+TEST_CASE(fixed_boundary_bad_input_is_refused)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("mushroom", m));
+  const std::vector<vertex_descriptor> corners = other_way(boundary_landmarks(m, 5, 0.3));
+  const std::vector<C> polygon = uneven_polygon(5, 0.8, C(0, 0));
+  // refused with its code and a one-line message, the uv map untouched
+  auto refused = [&](Mesh& mesh, const std::vector<vertex_descriptor>& cv, const std::vector<C>& p, HOT::Error_code expected,
+                     const std::string& what) {
+    const Fixed_run r = embed_fixed(mesh, cv, p);
+    CHECK_MSG(r.ec == expected, what << ": " << HOT::error_message(r.ec) << " (" << r.st.message << ")");
+    CHECK_MSG(!r.st.message.empty() && r.st.message.find('\n') == std::string::npos, what << ": " << r.st.message);
+    std::size_t written = 0;
+    for(vertex_descriptor v : vertices(mesh)) written += vertex_uv(mesh, v) != C(2, 2);
+    CHECK_MSG(written == 0, what << ": " << written << " coordinates written");
+    std::cout << "  " << what << ": " << r.st.message << std::endl;
+  };
+  // not a disk: closed, and two boundary loops
+  {
+    Mesh closed;
+    CHECK(read_demo_mesh("bear", closed));
+    refused(closed, {vertex_descriptor(0), vertex_descriptor(1), vertex_descriptor(2)}, {C(0, 0), C(0.5, 0), C(0, 0.5)},
+            HOT::ERROR_WRONG_TOPOLOGY, "closed mesh");
+    Mesh annulus = grid_mesh(6);
+    CGAL::Euler::remove_face(halfedge(*std::next(faces(annulus).begin(), 24), annulus), annulus);
+    annulus.collect_garbage();
+    refused(annulus, {vertex_descriptor(0), vertex_descriptor(5), vertex_descriptor(35)}, {C(0, 0), C(0.5, 0), C(0, 0.5)},
+            HOT::ERROR_WRONG_TOPOLOGY, "two boundary loops");
+  }
+  // corners
+  refused(m, {corners[0], corners[1]}, {polygon[0], polygon[1]}, HOT::ERROR_TOO_FEW_LANDMARKS, "two corners");
+  refused(m, corners, std::vector<C>(polygon.begin(), polygon.end() - 1), HOT::ERROR_WRONG_PARAMETER, "one polygon corner too few");
+  std::vector<vertex_descriptor> bad = corners;
+  bad[2] = vertex_descriptor(num_vertices(m) + 10);
+  refused(m, bad, polygon, HOT::ERROR_LANDMARK_OUT_OF_RANGE, "corner not a vertex");
+  bad = corners;
+  bad[3] = bad[1];
+  refused(m, bad, polygon, HOT::ERROR_DUPLICATE_LANDMARK, "corner given twice");
+  bad = corners;
+  for(vertex_descriptor v : vertices(m))
+    if(!is_border(v, m)) { bad[1] = v; break; }
+  refused(m, bad, polygon, HOT::ERROR_LANDMARK_NOT_ON_BORDER, "corner inside the mesh");
+  bad = corners;
+  std::swap(bad[1], bad[2]);
+  refused(m, bad, polygon, HOT::ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER, "corners out of boundary order");
+  // the polygon
+  std::vector<C> p = polygon;
+  p[2] = HOT::internal::klein_to_poincare(0.25 * (klein(p[1]) + klein(p[3]))); // a reflex corner (the origin is inside)
+  refused(m, corners, p, HOT::ERROR_POLYGON_NOT_CONVEX, "reflex corner");
+  p = polygon;
+  p[2] = HOT::internal::klein_to_poincare(0.5 * (klein(p[1]) + klein(p[3]))); // on the geodesic p1 p3 up to rounding
+  {
+    const Fixed_run r = embed_fixed(m, corners, p);
+    CHECK_MSG(r.ec == HOT::ERROR_POLYGON_NOT_CONVEX || r.ec == HOT::OK, r.st.message); // decided exactly on the doubles
+  }
+  p = {C(-0.5, 0), C(0, 0), C(0.5, 0), C(0.3, 0.5), C(-0.3, 0.5)}; // corners 0, 1, 2 on the real axis
+  refused(m, corners, p, HOT::ERROR_POLYGON_NOT_CONVEX, "three corners on one geodesic");
+  p.clear();
+  for(int j = 0; j < 5; ++j) p.push_back(std::polar(0.6, 4 * CGAL_PI * j / 5)); // pentagram: winds twice
+  refused(m, corners, p, HOT::ERROR_POLYGON_NOT_CONVEX, "star polygon");
+  p = polygon;
+  p[0] = C(1, 0);
+  refused(m, corners, p, HOT::ERROR_POLYGON_NOT_CONVEX, "corner on the unit circle");
+  p[0] = C(0.8, 0.7);
+  refused(m, corners, p, HOT::ERROR_POLYGON_NOT_CONVEX, "corner outside the disk");
+  p[0] = C(std::nan(""), 0);
+  refused(m, corners, p, HOT::ERROR_POLYGON_NOT_CONVEX, "NaN corner");
+  // a boundary ear between two corners: its inner edge would be flat
+  {
+    const int g = 8;
+    Mesh grid = grid_mesh(g, 0.3);
+    auto V = [&](int i, int j) { return vertex_descriptor(j * g + i); };
+    refused(grid, {V(0, 0), V(0, g - 1), V(g - 1, g - 1), V(g - 1, 3)}, {C(-0.5, -0.5), C(-0.5, 0.5), C(0.5, 0.5), C(0.5, -0.5)},
+            HOT::ERROR_BOUNDARY_CHORD, "boundary ear inside a side");
+  }
+  // weights and the solver
+  {
+    auto neg = m.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, double>("e:neg", 1.0).first;
+    put(neg, *edges(m).begin(), -1.0);
+    const Fixed_run r = embed_fixed(m, corners, polygon, HOT::parameters::edge_weight_map(neg));
+    CHECK_MSG(r.ec == HOT::ERROR_WRONG_PARAMETER, r.st.message);
+    const Fixed_run s = embed_fixed(m, corners, polygon, CGAL::parameters::number_of_iterations(1));
+    CHECK_MSG(s.ec == HOT::ERROR_NOT_CONVERGED, HOT::error_message(s.ec) << ": " << s.st.message);
+    std::size_t written = 0;
+    for(vertex_descriptor v : vertices(m)) written += vertex_uv(m, v) != C(2, 2);
+    CHECK(written == 0);
   }
 }
 

@@ -94,7 +94,11 @@ struct Embedding_statistics : public Solver_statistics
   std::vector<Hyperbolic_isometry_2<double> > charts;
   /// the tile corner at the origin of each chart
   std::vector<int> chart_corners;
-  bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise
+  bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise (fixed boundary: the corner vertices)
+  /// `fixed_boundary_hyperbolic_Tutte_embedding()`: the corner vertices go around the mesh
+  /// in the other direction than the polygon's corners around the polygon, so the map
+  /// reverses orientation (every face is clockwise in the output)
+  bool orientation_reversed = false;
   std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
   /// the order of every cone of the tile (cone angle \f$2\pi/p\f$), in the order of the cut
   /// (the landmarks as `landmark_order` lists them): 2 for all unless `cone_orders` was given

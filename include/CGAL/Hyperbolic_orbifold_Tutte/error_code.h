@@ -45,11 +45,13 @@ enum Error_code
   ERROR_POINT_NOT_LOCATED,       ///< a point could not be located in an embedding
   ERROR_READ_FAILED,             ///< an input file could not be read or parsed
   ERROR_WRITE_FAILED,            ///< an output file could not be written
-  ERROR_BOUNDARY_CHORD           ///< disk type: an inner edge joins two boundary vertices of one tile side (e.g. a boundary ear), whose triangles would be degenerate
+  ERROR_BOUNDARY_CHORD,          ///< disk type: an inner edge joins two boundary vertices of one tile side (e.g. a boundary ear), whose triangles would be degenerate
+  ERROR_POLYGON_NOT_CONVEX,      ///< fixed boundary: the target polygon is not strictly convex, or a corner is not strictly inside the unit disk
+  ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER ///< fixed boundary: the corner vertices are not in the order of the boundary loop
 };
 
 /// the number of values of `Error_code`
-constexpr int number_of_error_codes = ERROR_BOUNDARY_CHORD + 1;
+constexpr int number_of_error_codes = ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER + 1;
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteEnums
@@ -81,7 +83,9 @@ inline const char* error_message(Error_code code)
     "A point could not be located in the embedding",
     "An input file could not be read",
     "An output file could not be written",
-    "An inner edge joins two boundary vertices that map to the same side of the disk orbifold's tile (e.g. a boundary ear); its triangles would be degenerate: put a landmark on the boundary between its ends, or split the triangle"
+    "An inner edge joins two boundary vertices that map to the same side of the disk orbifold's tile (e.g. a boundary ear); its triangles would be degenerate: put a landmark on the boundary between its ends, or split the triangle",
+    "The target polygon is not strictly convex, or a corner is not strictly inside the unit disk",
+    "The corner vertices are not in the order of the boundary loop (in either direction)"
   };
   static_assert(sizeof(messages) / sizeof(messages[0]) == number_of_error_codes,
                 "error_message(): one message per Error_code value");

@@ -13,6 +13,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/statistics_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
 #include <CGAL/boost/graph/Seam_mesh.h>
@@ -122,14 +123,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
 
   Embedding_statistics local;
-  Embedding_statistics* stp = choose_parameter(get_parameter(np, internal_np::embedding_statistics),
-                                               static_cast<Embedding_statistics*>(nullptr));
-  Embedding_statistics& st = stp ? *stp : local;
-  st = Embedding_statistics();
-  auto fail = [&](Error_code ec, const std::string& msg) {
-    st.message = msg.empty() ? std::string(error_message(ec)) : msg;
-    return ec;
-  };
+  Embedding_statistics& st = internal::statistics_parameter(np, local);
+  auto fail = [&](Error_code ec, const std::string& msg) { return internal::record_failure(st, ec, msg); };
   typedef std::chrono::steady_clock Clock;
   const auto t0 = Clock::now();
 
