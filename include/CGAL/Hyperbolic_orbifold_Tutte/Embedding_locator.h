@@ -348,7 +348,7 @@ private:
     lt_.model = model;
     if(make_orbifold_tile(signature, tile) == OK)
       return true;
-    bool regular = true;
+    bool regular = signature.genus() == 0; // (genus g >= 1: the cut graph's tile, given as a tile)
     for(int i = 0; i < signature.number_of_cones(); ++i)
       regular = regular && signature.order(i) == 2;
     lt_.fail(regular ? "the orbifold with " + std::to_string(signature.number_of_cones()) + " cones is not hyperbolic"
