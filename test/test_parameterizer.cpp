@@ -985,6 +985,40 @@ TEST_CASE(fixed_boundary_weights)
   CHECK(largest_distance(ref, m, [](const C& z) { return z; }) < 1e-12);
 }
 
+TEST_CASE(fixed_boundary_polyhedron_3_gives_the_same_embedding)
+{
+  typedef CGAL::Polyhedron_3<K> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor P_vertex;
+  Mesh sm;
+  CHECK(read_demo_mesh("nefertiti", sm));
+  Polyhedron poly;
+  std::ifstream in(data_dir() + "/meshes/nefertiti.off");
+  CHECK(bool(in >> poly));
+  std::vector<P_vertex> pv;
+  for(P_vertex v : vertices(poly)) pv.push_back(v);
+  CHECK(pv.size() == num_vertices(sm));
+  if(pv.size() != num_vertices(sm)) return;
+  const std::vector<vertex_descriptor> corners = boundary_landmarks(sm, 5, 0.3);
+  const std::vector<C> polygon = uneven_polygon(5, 0.75, C(0.1, 0.2));
+  const Fixed_run r = embed_fixed(sm, corners, polygon);
+  CHECK_MSG(r.ec == HOT::OK, r.st.message);
+  std::vector<P_vertex> pc;
+  for(vertex_descriptor v : corners) pc.push_back(pv[v.idx()]);
+  std::vector<Point_2> pts;
+  for(const C& z : polygon) pts.push_back(Point_2(z.real(), z.imag()));
+  std::unordered_map<P_vertex, Point_2> uvp;
+  HOT::Embedding_statistics st;
+  const HOT::Error_code ec = HOT::fixed_boundary_hyperbolic_Tutte_embedding(poly, pc, pts, boost::make_assoc_property_map(uvp),
+                                                                            HOT::parameters::embedding_statistics(&st));
+  CHECK_MSG(ec == HOT::OK && st.certificate.is_bijective(), st.message);
+  CHECK(uvp.size() == pv.size());
+  double d = 0;
+  for(std::size_t i = 0; i < pv.size() && uvp.count(pv[i]); ++i)
+    d = std::max(d, hdist(C(uvp[pv[i]].x(), uvp[pv[i]].y()), vertex_uv(sm, vertex_descriptor(i))));
+  CHECK_MSG(d < 1e-9, "Polyhedron_3 and Surface_mesh embeddings differ by " << d);
+  CHECK_NEAR(st.energy, r.st.energy, 1e-9 * r.st.energy);
+}
+
 TEST_CASE(fixed_boundary_bad_input_is_refused)
 {
   Mesh m;
