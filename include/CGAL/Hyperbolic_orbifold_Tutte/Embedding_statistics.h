@@ -112,10 +112,10 @@ struct Embedding_statistics : public Solver_statistics
   /// mesh vertex is `cut_node_vertices[n]` (its index in `vertices(tm)`) and whose cone (in the
   /// order of the cut) is `cut_node_cones[n]` or -1; side `i` is glued to side `cut_paired_sides[i]`.
   /// @{
-  std::vector<int> cut_corner_nodes;
-  std::vector<int> cut_node_vertices;
-  std::vector<int> cut_node_cones;
-  std::vector<int> cut_paired_sides;
+  std::vector<int> cut_corner_nodes;  ///< the node of which each corner of the tile is a copy
+  std::vector<int> cut_node_vertices; ///< the mesh vertex of each node (its index in `vertices(tm)`)
+  std::vector<int> cut_node_cones;    ///< the cone of each node (in the order of the cut), or -1
+  std::vector<int> cut_paired_sides;  ///< the side glued to each side of the tile
   /// the one-call function: the cut graph as vertex paths (vertex positions in `vertices(tm)`),
   /// the given one or the computed one (`compute_cut_graph()`)
   std::vector<std::vector<std::size_t> > cut_graph;
