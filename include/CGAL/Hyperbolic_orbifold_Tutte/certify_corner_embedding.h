@@ -14,6 +14,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_topology.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
@@ -180,7 +181,8 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     required = CGAL::parameters::get_parameter(np, internal_np::orbifold_type);
   cc::Indexed_mesh<TriangleMesh> M(tm);
   Orbifold_type type = Sphere_type;
-  const Status topology = cc::index_and_check_mesh(M, required, type);
+  int genus = 0;
+  const Status topology = cc::index_and_check_mesh(M, required, type, &genus);
   if(!topology)
     return fail(topology);
   const int k = static_cast<int>(cones.size());
@@ -199,7 +201,10 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
       mixed = mixed || orders[i] != 2;
     }
   }
-  if(k < 5 && !mixed)
+  if(genus > 0 && !Orbifold_signature(genus, orders.empty() ? std::vector<int>(k, 2) : orders).is_hyperbolic())
+    return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "a closed surface of genus 1 needs at least one cone to be hyperbolic, " +
+                                                      std::to_string(k) + " given"));
+  if(k < 5 && !mixed && genus == 0)
     return fail(Status::failure(ERROR_TOO_FEW_LANDMARKS, "the orbifold needs at least 5 cones, " + std::to_string(k) + " given"));
   std::vector<std::size_t> cone_index;
   std::vector<char> is_cone(M.number_of_vertices(), 0), on_border(M.number_of_vertices(), 0);
@@ -216,7 +221,9 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     cone_index.push_back(v);
   }
   Tile tile;
-  if(!mixed) {
+  if(genus > 0) {
+    // no tile: the checks do without one (certify_closed_genus())
+  } else if(!mixed) {
     if(make_orbifold_tile(type, k, tile) != OK)
       return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "no tile for " + std::to_string(k) + " cones"));
   } else {
@@ -232,7 +239,8 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     frame = CGAL::parameters::get_parameter(np, internal_np::frame);
     if(!frame.is_orientation_preserving())
       return fail(Status::failure(ERROR_WRONG_PARAMETER, "the frame must be an orientation-preserving isometry"));
-    tile = tile.transformed(frame);
+    if(genus == 0)
+      tile = tile.transformed(frame);
   }
 
   // the embedding's arrays
@@ -262,6 +270,14 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
         return fail(Status::failure(ERROR_WRONG_PARAMETER, "point " + std::to_string(p) + " is in chart " +
                                                             std::to_string(embedding.point_charts[p]) + ", but the embedding has " +
                                                             std::to_string(embedding.charts.size()) + " charts"));
+  }
+
+  if(genus > 0) {
+    if(embedding.has_charts())
+      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has charts around cone images, which are for genus 0 only"));
+    cc::certify_closed_genus(M, genus, cone_index, orders, is_cone, embedding, certificate);
+    msg = certificate.summary();
+    return OK;
   }
 
   certificate.type = type;
