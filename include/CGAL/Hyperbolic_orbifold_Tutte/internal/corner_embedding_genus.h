@@ -57,7 +57,6 @@ void check_closed_genus_seams(Certification<TM>& S)
 {
   typedef Corner_embedding_certificate Cert;
   typedef Hyperbolic_isometry_2<long double> Iso;
-  const TM& tm = S.M.tm;
   Cert::Check_result& R = S.cert.checks[Seam_check];
   R.run = true;
   auto same = [&](std::size_t p, std::size_t q) { return same_point(S, p, q); };
@@ -69,46 +68,30 @@ void check_closed_genus_seams(Certification<TM>& S)
     double tol;
   };
   std::vector<Seam> seams;
-  for(std::size_t f = 0; f < S.M.number_of_faces(); ++f) {
-    for(int c = 0; c < 3; ++c) {
-      const auto he = S.M.face_halfedges[f][c];
-      const auto o = opposite(he, tm);
-      if(is_border(o, tm))
-        continue;
-      const std::size_t g = S.M.index(face(o, tm));
-      if(g < f)
-        continue; // each edge once
-      const std::size_t u = S.M.face_vertices[f][(c + 2) % 3], w = S.M.face_vertices[f][c];
-      int cu = 0, cw = 0;
-      while(S.M.face_vertices[g][cu] != u) ++cu;
-      while(S.M.face_vertices[g][cw] != w) ++cw;
-      const std::size_t pa1 = S.pid[f][(c + 2) % 3], pb1 = S.pid[f][c], pa2 = S.pid[g][cu], pb2 = S.pid[g][cw];
-      if(same(pa1, pa2) && same(pb1, pb2))
-        continue;
-      ++S.cert.number_of_seam_edges;
-      if(!(S.valid[pa1] && S.valid[pb1] && S.valid[pa2] && S.valid[pb2]))
-        continue;
-      ++R.checked;
-      const C a1 = S.point(pa1), b1 = S.point(pb1), a2 = S.point(pa2), b2 = S.point(pb2);
-      const double length = (std::min)(std::abs(a1 - b1), std::abs(a2 - b2));
-      const double tol = (std::min)(absolute_tolerance, relative_tolerance * length);
-      const Iso h = isometry_from_copies(a1, b1, a2, b2);
-      const double m = image_distance(h, b1, b2);
-      S.cert.max_seam_mismatch = (std::max)(S.cert.max_seam_mismatch, m);
-      S.cert.max_seam_length_mismatch = (std::max)(S.cert.max_seam_length_mismatch, m);
-      S.cert.max_relative_seam_mismatch = (std::max)(S.cert.max_relative_seam_mismatch, m / length);
-      if(!(m <= tol)) {
-        std::ostringstream os;
-        os.precision(6);
-        os << "edge (" << u << ", " << w << ") between faces " << S.efface[f] << " and " << S.efface[g]
-           << ": its two copies have different hyperbolic lengths (the isometry taking one copy of vertex " << u
-           << " and its direction to the other's misplaces vertex " << w << " by " << m << ", tolerance " << tol << ")";
-        record(S.cert, Seam_check, Cert::Edge, u, w, os.str());
-        continue;
-      }
-      seams.push_back(Seam{u, w, f, g, pa1, pb1, pa2, pb2, h, tol});
+  for_each_seam_edge(S, [&](const Seam_edge& e) {
+    const std::size_t u = e.u, w = e.w, f = e.f, g = e.g;
+    if(!(S.valid[e.pa1] && S.valid[e.pb1] && S.valid[e.pa2] && S.valid[e.pb2]))
+      return;
+    ++R.checked;
+    const C a1 = S.point(e.pa1), b1 = S.point(e.pb1), a2 = S.point(e.pa2), b2 = S.point(e.pb2);
+    const double length = (std::min)(std::abs(a1 - b1), std::abs(a2 - b2));
+    const double tol = (std::min)(absolute_tolerance, relative_tolerance * length);
+    const Iso h = isometry_from_copies(a1, b1, a2, b2);
+    const double m = image_distance(h, b1, b2);
+    S.cert.max_seam_mismatch = (std::max)(S.cert.max_seam_mismatch, m);
+    S.cert.max_seam_length_mismatch = (std::max)(S.cert.max_seam_length_mismatch, m);
+    S.cert.max_relative_seam_mismatch = (std::max)(S.cert.max_relative_seam_mismatch, m / length);
+    if(!(m <= tol)) {
+      std::ostringstream os;
+      os.precision(6);
+      os << "edge (" << u << ", " << w << ") between faces " << S.efface[f] << " and " << S.efface[g]
+         << ": its two copies have different hyperbolic lengths (the isometry taking one copy of vertex " << u
+         << " and its direction to the other's misplaces vertex " << w << " by " << m << ", tolerance " << tol << ")";
+      record(S.cert, Seam_check, Cert::Edge, u, w, os.str());
+      return;
     }
-  }
+    seams.push_back(Seam{u, w, f, g, e.pa1, e.pb1, e.pa2, e.pb2, h, tol});
+  });
 
   // the seam edges by (vertex, lower point, higher point) of an end whose two copies differ,
   // each with its isometry oriented from the lower point's side to the higher's
