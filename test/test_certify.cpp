@@ -1184,6 +1184,112 @@ TEST_CASE(input_errors)
   }
 }
 
+// ------------------------------------------------------------------------------------------
+// closed meshes of genus g >= 1: certified without a tile (issue 22)
+// ------------------------------------------------------------------------------------------
+
+// a closed mesh of genus g >= 1 with `k` landmarks (farthest-point sampling), embedded in the
+// polygon of its cut graph
+const Embedded& closed_genus(const std::string& name, int k)
+{
+  static std::map<std::string, Embedded> cache;
+  Embedded& e = cache[name];
+  if(!e.ok && num_faces(e.mesh) == 0) {
+    CHECK(read_demo_mesh(name, e.mesh));
+    if(k > 0)
+      e.landmarks = farthest_point_landmarks(e.mesh, k);
+    auto uv = e.mesh.add_property_map<halfedge_descriptor, K::Point_2>("h:uv").first;
+    const HOT::Error_code ec =
+      HOT::hyperbolic_orbifold_Tutte_embedding(e.mesh, e.landmarks, uv, HOT::parameters::embedding_statistics(&e.stats));
+    CHECK_MSG(ec == HOT::OK, name << ": " << e.stats.message);
+    CHECK(HOT::make_corner_embedding(e.mesh, uv, e.E) == HOT::OK);
+    e.ok = ec == HOT::OK && e.E.number_of_faces() == num_faces(e.mesh);
+  }
+  return e;
+}
+
+TEST_CASE(closed_genus_package_embeddings_accepted)
+{
+  // eight (genus 2, no cone), elk (genus 1, one cone), helmet (genus 3, one cone)
+  const struct { const char* name; int genus, cones; } cases[] = {{"eight", 2, 0}, {"elk", 1, 1}, {"helmet", 3, 1}};
+  for(const auto& t : cases) {
+    const Embedded& e = closed_genus(t.name, t.cones);
+    if(!e.ok)
+      continue;
+    const Cert c = certify(e, e.E);
+    expect_certified(c);
+    CHECK(c.genus == t.genus);
+    // Gauss-Bonnet: 2 pi (2g - 2 + k / 2)
+    const double area = 2 * CGAL_PI * (2 * t.genus - 2 + 0.5 * t.cones);
+    CHECK_MSG(c.area_lower <= area && area <= c.area_upper, t.name << ": area [" << c.area_lower << ", " << c.area_upper << "]");
+    CHECK(std::abs(c.expected_area - area) < 1e-12);
+    CHECK(c.max_angle_sum_deviation < 1e-9);
+    CHECK(c.angle_sum_tolerance > 0);
+    CHECK(c.number_of_seam_edges > 0 && c.number_of_seam_isometries > 0 && c.number_of_seam_consistency_checks > 0);
+    CHECK(c.max_seam_mismatch < 1e-12);
+    for(int o : c.cone_orders)
+      CHECK(o == 2);
+  }
+}
+
+TEST_CASE(closed_genus_tampered_rejected)
+{
+  const Embedded& e = closed_genus("elk", 1);
+  if(!e.ok)
+    return;
+  const std::size_t V = num_vertices(e.mesh);
+  const std::vector<std::set<std::size_t> > pts = points_of(e.E, V);
+  const std::size_t cone = e.landmarks[0].idx();
+  // an interior vertex (one point, its neighbours too) moved across a neighbour: flipped faces
+  for(std::size_t v = 0; v < V; ++v) {
+    const std::vector<std::size_t> nb = neighbours(e.mesh, v);
+    bool interior = pts[v].size() == 1;
+    for(std::size_t w : nb)
+      interior = interior && pts[w].size() == 1;
+    if(!interior)
+      continue;
+    HOT::Corner_embedding E = e.E;
+    const C z = point(E, *pts[v].begin()), n = point(E, *pts[nb[0]].begin());
+    set_point(E, *pts[v].begin(), 2.0 * n - z);
+    expect_rejected(certify(e, E), HOT::Orientation_check);
+    break;
+  }
+  // one copy of a seam vertex (not the cone) moved by 1e-6: its seams' isometries break
+  for(std::size_t v = 0; v < V; ++v) {
+    if(pts[v].size() < 2 || v == cone)
+      continue;
+    HOT::Corner_embedding E = e.E;
+    set_point(E, *pts[v].begin(), point(E, *pts[v].begin()) + C(1e-6, 0));
+    const Cert c = certify(e, E);
+    CHECK(!c.is_certified());
+    CHECK_MSG(c.checks[HOT::Seam_check].failures > 0, c.summary());
+    break;
+  }
+  // a cone claimed at one more vertex: its angle sum is 2 pi, not pi
+  {
+    Cert c;
+    std::string msg;
+    std::vector<vertex_descriptor> more = e.landmarks;
+    more.push_back(vertex_descriptor(static_cast<Mesh::size_type>(cone == 0 ? 1 : 0)));
+    CHECK(HOT::certify_corner_embedding(e.mesh, more, e.E, c, &msg) == HOT::OK);
+    expect_rejected(c, HOT::Angle_sum_check);
+    // and the wrong order: 3
+    CHECK(HOT::certify_corner_embedding(e.mesh, e.landmarks, e.E, c, &msg, HOT::parameters::cone_orders(std::vector<int>{3})) == HOT::OK);
+    expect_rejected(c, HOT::Angle_sum_check);
+    // the cone dropped: a torus without cone is not hyperbolic
+    CHECK(HOT::certify_corner_embedding(e.mesh, std::vector<vertex_descriptor>(), e.E, c, &msg) == HOT::ERROR_NOT_HYPERBOLIC);
+  }
+  // another mesh's embedding (eight's): not its faces
+  const Embedded& other = closed_genus("eight", 0);
+  if(other.ok) {
+    Cert c;
+    std::string msg;
+    CHECK(HOT::certify_corner_embedding(e.mesh, e.landmarks, other.E, c, &msg) == HOT::OK);
+    CHECK(!c.is_certified());
+    CHECK(c.checks[HOT::Mesh_face_check].failures > 0);
+  }
+}
+
 TEST_CASE(obj_file_round_trip)
 {
   // the OBJ file embed writes (faces from another corner, vt shared per vertex), read back

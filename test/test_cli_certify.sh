@@ -315,6 +315,90 @@ case "$case_name" in
       expect_rejected cones "$mesh" "$tmp/$1.obj" "$tmp/$1.cones" --cone-orders $4
     done
     echo ok ;;
+  genus_*)
+    # closed meshes of genus g >= 1 (issue 22): embed's OBJ of the cut graph's polygon is
+    # certified without a tile (the seams' isometries are read from the map); the mesh, its
+    # landmark count and orders (empty: 2) per case
+    name="${case_name#genus_}"
+    case "$name" in
+      eight) n=0; orders="" ;;
+      elk) n=1; orders="" ;;
+      knot1) n=2; orders="3,5" ;;
+      femur) n=3; orders="" ;;
+      joint) n=3; orders="2,3,7" ;;
+      helmet) n=1; orders="" ;;
+      *) fail "unknown mesh $name" ;;
+    esac
+    mesh="$data/meshes/$name.off"
+    if [ "$n" -gt 0 ]; then
+      "$prog" landmarks --mesh "$mesh" --count $n --out "$tmp/m.cones" >/dev/null || fail "landmarks $name"
+    else
+      : > "$tmp/m.cones"
+    fi
+    oo=(); [ -n "$orders" ] && oo=(--cone-orders "$orders")
+    "$prog" embed --mesh "$mesh" --cones "$tmp/m.cones" "${oo[@]}" --out "$tmp/m.obj" >/dev/null || fail "embed $name"
+    "$prog" certify --mesh "$mesh" --embedding "$tmp/m.obj" --cones "$tmp/m.cones" "${oo[@]}" --report "$tmp/c.json" >"$tmp/out" \
+      || fail "certify $name refused embed's output: $(cat "$tmp/out")"
+    grep -q "^certified: .* onto the closed genus-[1-9][0-9]* orbifold with $n cone" "$tmp/out" || fail "stdout: $(cat "$tmp/out")"
+    echo "ok: $(cat "$tmp/out")"
+    json_ok "$tmp/c.json"
+    grep -q '"certified": true' "$tmp/c.json" || fail "report verdict"
+    grep -q '"genus": [1-9]' "$tmp/c.json" || fail "report genus"
+    for c in repeated_face mesh_faces finite inside_disk charts cones border degenerate_face orientation angle_sum seams area; do
+      grep -q "\"$c\": {\"run\": true, \"checked\": [0-9]*, \"failures\": 0, \"first_failure\": null}" "$tmp/c.json" || fail "report check $c"
+    done
+    grep -q '"seam_isometries": [1-9]' "$tmp/c.json" || fail "report: seam isometries"
+    [ -n "$orders" ] && { grep -q "\"cone_orders_found\": \[$(echo $orders | sed 's/,/, /g')\]," "$tmp/c.json" || fail "report: orders found"; }
+    # tampered files, each refused for its reason
+    # (1) a vt of an interior vertex (one point, in no seam) moved across a neighbour: flipped faces
+    awk 'FNR == NR { if($1 == "f") for(i = 2; i <= 4; i++) { split($i, a, "/"); if(!((a[1], a[2]) in seen)) { seen[a[1], a[2]] = 1; nvt[a[1]]++ } }
+                     next }
+         FNR == 1 { pass2 = 1 }
+         { lines[FNR] = $0 }
+         $1 == "vt" { nt++; x[nt] = $2; y[nt] = $3 }
+         $1 == "f" && !done { split($2, a, "/"); split($3, b, "/"); split($4, c, "/")
+                              if(nvt[a[1]] == 1 && nvt[b[1]] == 1 && nvt[c[1]] == 1) { T = a[2]; N = b[2]; done = 1 } }
+         END { t = 0; for(i = 1; i <= FNR; i++) { $0 = lines[i]
+                 if($1 == "vt" && ++t == T) printf "vt %.17g %.17g\n", 2 * x[N] - x[T], 2 * y[N] - y[T]; else print lines[i] } }' \
+      "$tmp/m.obj" "$tmp/m.obj" > "$tmp/flip.obj"
+    cmp -s "$tmp/m.obj" "$tmp/flip.obj" && fail "no interior vertex to move"
+    expect_rejected orientation "$mesh" "$tmp/flip.obj" "$tmp/m.cones" "${oo[@]}"
+    # (2) one vt of a seam vertex (two points or more, not a cone) moved by 1e-6: the seam's isometry is broken
+    vt=$(awk -v cones="$(cat "$tmp/m.cones")" 'BEGIN { n = split(cones, c); for(i = 1; i <= n; i++) cone[c[i] + 1] = 1 }
+              $1 == "f" { for(i = 2; i <= 4; i++) { split($i, a, "/"); if(cone[a[1]]) continue
+                          if(!((a[1], a[2]) in seen)) { seen[a[1], a[2]] = 1; if(++nvt[a[1]] == 2) { print a[2]; exit } } } }' \
+         "$tmp/m.obj")
+    [ -n "$vt" ] || fail "no seam vertex"
+    awk -v T="$vt" '/^vt / && ++n == T { printf "vt %.17g %.17g\n", $2 + 1e-6, $3; next } { print }' "$tmp/m.obj" > "$tmp/moved.obj"
+    "$prog" certify --mesh "$mesh" --embedding "$tmp/moved.obj" --cones "$tmp/m.cones" "${oo[@]}" --report "$tmp/r.json" >/dev/null 2>"$tmp/stderr"
+    [ $? -eq 4 ] || fail "a seam copy moved by 1e-6 is certified -- $(cat "$tmp/stderr")"
+    grep -q '"seams": {"run": true, "checked": [0-9]*, "failures": [1-9]' "$tmp/r.json" || fail "the moved seam copy does not fail the seams check"
+    echo "ok (exit 4): seam copy moved: $(cat "$tmp/stderr"); seams: $(grep -o '"seams": {[^}]*' "$tmp/r.json" | head -c 300)"
+    # (3) a cone claimed at one more vertex (an interior vertex): its angle sum is 2 pi, not pi
+    extra=$(awk -v cones="$(cat "$tmp/m.cones")" 'BEGIN { n = split(cones, c); for(i = 1; i <= n; i++) cone[c[i]] = 1
+                                                           for(v = 0; v in cone; v++); print v }')
+    { cat "$tmp/m.cones"; echo "$extra"; } > "$tmp/extra.cones"
+    eo=(); [ -n "$orders" ] && eo=(--cone-orders "$orders,2")
+    expect_rejected angle_sum "$mesh" "$tmp/m.obj" "$tmp/extra.cones" "${eo[@]}"
+    grep -q "(a cone) has an angle sum of 6.28" "$tmp/stderr" || fail "the extra cone is not named"
+    if [ "$n" -gt 0 ]; then
+      # (4) wrong orders: 3 for every cone of order 2 and 2 for the others
+      wrong=$(awk -v n=$n -v o="$orders" 'BEGIN { split(o, p, ","); for(i = 1; i <= n; i++) printf "%s%d", (i > 1 ? "," : ""), (o == "" || p[i] == 2) ? 3 : 2 }')
+      expect_rejected angle_sum "$mesh" "$tmp/m.obj" "$tmp/m.cones" --cone-orders "$wrong"
+      grep -q "(a cone) has an angle sum" "$tmp/stderr" || fail "the wrong order's cone is not named"
+    fi
+    if [ "$name" = elk ]; then
+      # (5) the cone dropped on genus 1: a flat torus, not hyperbolic
+      : > "$tmp/none.cones"
+      expect_error 3 "$tmp/r5.json" certify --mesh "$mesh" --embedding "$tmp/m.obj" --cones "$tmp/none.cones" --report "$tmp/r5.json"
+      grep -q "hyperbolic" "$tmp/stderr" || fail "no cone on genus 1: not refused as not hyperbolic"
+      # (6) the OBJ of another mesh (eight, genus 2)
+      : > "$tmp/e.cones"
+      "$prog" embed --mesh "$data/meshes/eight.off" --cones "$tmp/e.cones" --out "$tmp/eight.obj" >/dev/null || fail "embed eight"
+      expect_error 3 "$tmp/r6.json" certify --mesh "$mesh" --embedding "$tmp/eight.obj" --cones "$tmp/m.cones" --report "$tmp/r6.json"
+      grep -q "not an embedding of this mesh" "$tmp/stderr" || fail "another mesh's OBJ"
+    fi
+    echo ok ;;
   *)
     fail "unknown case $case_name" ;;
 esac

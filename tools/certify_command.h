@@ -14,7 +14,8 @@
 // --cone-orders gives each cone's order (in the cones file's order, as embed takes them); the
 // checker finds which tile corner each cone is at, hence the tile of those orders, on the map.
 // Points written in charts around cone images ('# hot chart' and '# hot vtc' lines) are read
-// and checked in their charts' coordinates.
+// and checked in their charts' coordinates. A closed mesh of genus g >= 1 (embed's OBJ of its
+// cut graph's polygon) is certified without a tile: the seams' isometries come from the map.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -111,7 +112,11 @@ inline int run_certify(int argc, char** argv)
   const Clock::time_point t0 = Clock::now();
   Mesh m;
   require(hot_tools::read_mesh(q.mesh_path, m));
-  require(hot_tools::read_landmarks(q.cones_path, q.cones));
+  // no cone: an empty cones file, for a closed mesh of genus g >= 1 (Euler characteristic below 2;
+  // genus 1 is then refused as not hyperbolic by the checker)
+  const bool closed_genus = CGAL::is_closed(m) && static_cast<long long>(num_vertices(m)) - static_cast<long long>(num_edges(m)) +
+                                                      static_cast<long long>(num_faces(m)) < 2;
+  require(hot_tools::read_landmarks(q.cones_path, q.cones, closed_genus));
   if(!q.cone_orders.empty()) {
     if(q.cone_orders.size() != q.cones.size())
       throw Usage_error{"--cone-orders lists " + std::to_string(q.cone_orders.size()) + " orders for " +
@@ -159,6 +164,20 @@ inline int run_certify(int argc, char** argv)
   if(!cert.is_certified()) {
     std::cerr << "hyperbolic_orbifold_tutte: not certified: " << cert.summary() << std::endl;
     return not_certified_status;
+  }
+  if(cert.genus > 0) {
+    std::cout << "certified: " << q.embedding_path << " is a bijection of " << q.mesh_path << " onto the closed genus-"
+              << cert.genus << " orbifold with " << cert.number_of_cones << " cone" << (cert.number_of_cones == 1 ? "" : "s");
+    if(cert.number_of_cones > 0) {
+      std::cout << " of orders";
+      for(std::size_t i = 0; i < cert.cone_orders.size(); ++i)
+        std::cout << (i ? "," : " ") << cert.cone_orders[i];
+    }
+    std::cout << " (" << cert.number_of_faces << " faces, " << cert.number_of_seam_edges << " seam edges glued by "
+              << cert.number_of_seam_isometries << " isometries; largest seam mismatch " << cert.max_seam_mismatch
+              << ", angle-sum deviation " << cert.max_angle_sum_deviation << "; read in " << q.time_read << " s, certified in "
+              << q.time_certify << " s)" << std::endl;
+    return EXIT_SUCCESS;
   }
   std::cout << "certified: " << q.embedding_path << " is a bijection of " << q.mesh_path << " onto the "
             << (cert.type == HOT::Sphere_type ? "sphere" : "disk") << "-type orbifold with " << cert.number_of_cones

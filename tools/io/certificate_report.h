@@ -74,6 +74,7 @@ inline void write_certificate_report(std::ostream& os, const Certify_request& q,
   os << "],\n  \"cone_orders\": [";
   for(std::size_t i = 0; i < q.cones.size(); ++i) os << (i ? ", " : "") << (q.cone_orders.empty() ? 2 : q.cone_orders[i]);
   os << "],\n  \"orbifold\": \"" << (c.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n"
+     << "  \"genus\": " << c.genus << ",\n"
      << "  \"certified\": " << (c.is_certified() ? "true" : "false") << ",\n"
      << "  \"first_failed_check\": ";
   if(first >= 0)
@@ -126,11 +127,16 @@ inline void write_certificate_report(std::ostream& os, const Certify_request& q,
      << ",\n    \"max_chart_origin_offset\": " << json_number(c.max_chart_origin_offset)
      << ", \"max_chart_point_offset_relative_to_bound\": " << json_number(c.max_chart_point_offset)
      << ",\n    \"max_chart_seam_mismatch_relative\": " << json_number(c.max_chart_seam_mismatch)
-     << ", \"max_mixed_corner_error\": " << json_number(c.max_mixed_corner_error) << "},\n"
+     << ", \"max_mixed_corner_error\": " << json_number(c.max_mixed_corner_error)
+     << ",\n    \"seam_consistency_checks\": " << c.number_of_seam_consistency_checks
+     << ", \"seam_isometries\": " << c.number_of_seam_isometries
+     << ", \"max_seam_length_mismatch\": " << json_number(c.max_seam_length_mismatch)
+     << ", \"max_seam_consistency_mismatch\": " << json_number(c.max_seam_consistency_mismatch) << "},\n"
      << "  \"tolerances\": {\"position_absolute\": " << json_number(c.absolute_tolerance)
      << ", \"position_relative_to_shortest_edge\": " << json_number(c.relative_tolerance)
      << ", \"angle_sum\": " << json_number(0.5 * CGAL_PI) << ", \"area_relative\": 0.5"
-     << ", \"chart_origin\": " << json_number(64 * 1.1102230246251565e-16) << "},\n"
+     << ", \"chart_origin\": " << json_number(64 * 1.1102230246251565e-16)
+     << ", \"angle_sum_closed_genus\": " << json_number(c.angle_sum_tolerance) << "},\n"
      << "  \"time_seconds\": {\"read\": " << json_number(q.time_read) << ", \"certify\": " << json_number(q.time_certify) << "}\n}\n";
 }
 

@@ -136,6 +136,16 @@ struct Corner_embedding_certificate
   double area_upper = 0;                 ///< and at most this
   double expected_area = 0;              ///< the orbifold's area (Gauss-Bonnet)
 
+  /// the genus of the closed surface (0 for a sphere or a disk); for genus \f$g \ge 1\f$ the
+  /// map is certified without a tile (see `certify_corner_embedding()`): the seams' isometries
+  /// are computed from their copies, and the fields below report them
+  int genus = 0;
+  std::size_t number_of_seam_consistency_checks = 0; ///< genus \f$g \ge 1\f$: pairs of seam edges at a common vertex copy checked to share their isometry
+  std::size_t number_of_seam_isometries = 0;  ///< genus \f$g \ge 1\f$: classes of seam edges sharing one isometry (linked by those checks): the cut's sides glued pairwise
+  double max_seam_length_mismatch = 0;        ///< genus \f$g \ge 1\f$: largest distance of a seam edge's far copy from its image by the isometry fixed by the near ends (unequal hyperbolic lengths; disk coordinates)
+  double max_seam_consistency_mismatch = 0;   ///< genus \f$g \ge 1\f$: largest distance of a seam copy from its twin's image by the isometry of an adjacent seam edge (disk coordinates)
+  double angle_sum_tolerance = 0;             ///< genus \f$g \ge 1\f$: the largest accepted |angle sum - cone angle| (radians, certified); 0: the window of genus 0 (\f$\pi/2\f$, \f$\pi/p\f$)
+
   double absolute_tolerance = 0; ///< the positions' tolerance (disk coordinates)
   double relative_tolerance = 0; ///< the positions' tolerance relative to the shortest incident edge
 

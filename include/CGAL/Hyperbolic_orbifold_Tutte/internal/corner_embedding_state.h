@@ -66,6 +66,8 @@ struct Certification
   std::vector<char> on_border;               // per vertex
   std::vector<int> orders;                   // per given cone, its order when some order is not 2; empty: all 2
   std::vector<char> face_ok;                 // per mesh face: valid points, positively oriented
+  double angle_tolerance = 0;                // > 0 (closed genus g >= 1): the angle sums' window, for every vertex
+  std::vector<double> angle_sum;             // per vertex: the middle of its angle sum's enclosure (NaN: not checked)
   // with charts (E.has_charts()): the charts, and each face's corners in its frame
   bool charted = false;
   std::vector<Chart_model> charts;

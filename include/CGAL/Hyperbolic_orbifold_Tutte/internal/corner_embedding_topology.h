@@ -6,8 +6,9 @@
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_CORNER_EMBEDDING_TOPOLOGY_H
 
 // The combinatorics of certify_corner_embedding(), written for it alone (it does not use the
-// solver's input checks, cut or seam mesh): the mesh's own topology (a triangulated sphere or
-// disk, from its Euler characteristic, boundary loops, components and vertex fans), dense
+// solver's input checks, cut or seam mesh): the mesh's own topology (a triangulated closed
+// surface of any genus, or a disk, from its Euler characteristic, boundary loops, components
+// and vertex fans), dense
 // indices of its elements, its boundary loop in counterclockwise order, and the match of the
 // embedding's faces with the mesh's.
 
@@ -79,12 +80,15 @@ struct Indexed_mesh
   std::size_t number_of_faces() const { return face_vertices.size(); }
 };
 
-// Indexes the mesh and checks that it is a triangulated closed sphere (no boundary) or disk
-// (one boundary loop), as `required` says or as found; `type` receives it. Own checks: every
-// face a triangle, every vertex on a face with one fan of faces, one component, and the Euler
-// characteristic V - E + F = 2 - (boundary loops).
+// Indexes the mesh and checks that it is a triangulated closed surface (no boundary) or disk
+// (one boundary loop), as `required` says or as found; `type` receives it, `genus` the closed
+// surface's genus (0 for a sphere or a disk; a closed mesh of genus g >= 1 only when `genus` is
+// not null, else it is refused as before). Own checks: every face a triangle, every vertex on a
+// face with one fan of faces, one component, and the Euler characteristic
+// V - E + F = 2 - 2g - (boundary loops), with g = 0 unless the mesh is closed.
 template <class TriangleMesh>
-Status index_and_check_mesh(Indexed_mesh<TriangleMesh>& M, std::optional<Orbifold_type> required, Orbifold_type& type)
+Status index_and_check_mesh(Indexed_mesh<TriangleMesh>& M, std::optional<Orbifold_type> required, Orbifold_type& type,
+                            int* genus = nullptr)
 {
   typedef typename Indexed_mesh<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename Indexed_mesh<TriangleMesh>::vertex_descriptor vertex_descriptor;
@@ -173,8 +177,11 @@ Status index_and_check_mesh(Indexed_mesh<TriangleMesh>& M, std::optional<Orbifol
   }
   const long long chi = static_cast<long long>(V) - static_cast<long long>(H / 2) + static_cast<long long>(F);
   const long long twice_genus = 2 - static_cast<long long>(loops) - chi;
-  if(twice_genus != 0 || loops > 1)
-    return Status::failure(ERROR_WRONG_TOPOLOGY, "the mesh is neither a closed genus-0 surface nor a disk (Euler characteristic " +
+  const bool closed_genus = genus != nullptr && loops == 0 && twice_genus > 0 && twice_genus % 2 == 0;
+  if(genus != nullptr)
+    *genus = closed_genus ? static_cast<int>(twice_genus / 2) : 0;
+  if(!closed_genus && (twice_genus != 0 || loops > 1))
+    return Status::failure(ERROR_WRONG_TOPOLOGY, "the mesh is neither a closed surface nor a disk (Euler characteristic " +
                                                    std::to_string(chi) + ", " + std::to_string(loops) + " boundary loops)");
   type = loops == 0 ? Sphere_type : Disk_type;
   if(required && *required != type)
