@@ -584,7 +584,12 @@ TEST_CASE(bad_input)
   CHECK_CODE(prepare(range), HOT::ERROR_WRONG_PARAMETER);
   CHECK_CODE(prepare(Soup{tetra.points, {}}), HOT::ERROR_EMPTY_MESH);
   CHECK_CODE(prepare(Soup{tetra.points, {{0, 1, 0}, {2, 2, 2}}}), HOT::ERROR_EMPTY_MESH);
-  CHECK_CODE(prepare(torus(12)), HOT::ERROR_WRONG_TOPOLOGY);
+  { // a closed torus needs no preparation: kept as it is, of genus 1 (the closed type cuts it along a graph)
+    const Run t = prepare(torus(12));
+    CHECK_OK(t);
+    CHECK(t.F() == torus(12).faces.size() &&
+          static_cast<long long>(t.V()) - static_cast<long long>(num_edges(t.out)) + static_cast<long long>(t.F()) == 0);
+  }
   CHECK_CODE(prepare(tetra, HOT::parameters::maximum_hole_length(-1.0)), HOT::ERROR_WRONG_PARAMETER);
   CHECK_CODE(prepare(tetra, HOT::parameters::orbifold_type(HOT::Disk_type)), HOT::ERROR_WRONG_TOPOLOGY);
 }

@@ -100,8 +100,8 @@ In this order, each step doing nothing on a mesh that does not need it:
  -# disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
     a boundary ear) is split at its midpoint and the midpoint joined to the two opposite
     corners (Euler operations), so no triangle gets flat on a side of the disk orbifold's tile;
- -# `check_mesh()` on the result, whose failure (e.g. a closed mesh of genus 1, which no repair
-    makes genus 0) is returned with its own code.
+ -# `check_mesh()` on the result, whose failure (e.g. a disk of genus 1, for which there is no
+    orbifold) is returned with its own code; a closed mesh keeps its genus (\ref HOT_Genus).
 
 The input's geometry is kept: no input vertex is moved. Faces are added only by the
 triangulation of polygons, the filling of holes and the splitting of chords.
