@@ -16,6 +16,10 @@ PACKAGES=(
   libopenblas0-pthread # an optimised BLAS for CHOLMOD (Debian's default, the reference BLAS, is 2-3x slower)
   doxygen            # the reference manual
   librsvg2-bin       # rsvg-convert: SVG -> PNG for looking at pictures
+  libjs-mathjax      # MathJax for the manual's formulas, offline (no CDN)
+  python3-dev pybind11-dev python3-numpy   # the Python module (python/)
+  python3-dask python3-distributed          # collections on a Dask cluster
+  python3-pytest     # the Python tests
 )
 
 missing=()
