@@ -16,6 +16,32 @@ expect_error() { # expect_error OUTFILE ARGS...: non-zero exit, one line on stde
   echo "ok (exit $rc): $(cat "$tmp/stderr")"
 }
 
+make_hands() { # make_hands LETTERS...: $tmp/hand_<letter>.off, smooth deformations of hand.off (same triangulation)
+  local src="$data/meshes/hand.off" d
+  local nv; nv=$(awk 'NR==2 {print $1}' "$src")
+  for d in "$@"; do
+    awk -v n="$nv" -v d="$d" 'NR<=2 || NF==0 {print; next}
+      NF==3 && c<n { x=$1; y=$2; z=$3; c++;
+        if(d=="b") { x=x+0.1*sin(3*y); z=1.2*z } else if(d=="c") { x=0.9*x; y=y+0.05*cos(4*x) }
+        else if(d=="e") { y=1.1*y; z=z+0.05*sin(2*x) }
+        printf "%.9g %.9g %.9g\n", x, y, z; next } {print}' "$src" > "$tmp/hand_$d.off"
+  done
+}
+
+# same_files DIR1 DIR2: the same file names, the same bytes, report.json apart from its times
+same_files() {
+  [ "$(cd "$1" && ls -A)" = "$(cd "$2" && ls -A)" ] || fail "other files: $(cd "$1" && ls -A | tr '\n' ' ') / $(cd "$2" && ls -A | tr '\n' ' ')"
+  local f
+  for f in "$1"/*; do
+    if [ "$(basename "$f")" = report.json ]; then
+      diff <(sed -E 's/"(embedding_seconds|map_seconds)": [0-9.e+-]+/"\1": T/g' "$f") \
+           <(sed -E 's/"(embedding_seconds|map_seconds)": [0-9.e+-]+/"\1": T/g' "$2/report.json") >/dev/null || fail "report.json differs beyond its times"
+    else
+      cmp -s "$f" "$2/$(basename "$f")" || fail "$(basename "$f") differs"
+    fi
+  done
+}
+
 case "$case_name" in
   tile_sphere|tile_disk)
     kind="${case_name#tile_}"
@@ -377,14 +403,8 @@ case "$case_name" in
     echo "ok ($count of $nv source vertices listed)" ;;
   collection)
     # hand.off and two smooth deformations of it (same triangulation, same landmarks)
-    src="$data/meshes/hand.off"
-    nv=$(awk 'NR==2 {print $1}' "$src")
-    for d in a b c; do
-      awk -v n="$nv" -v d="$d" 'NR<=2 || NF==0 {print; next}
-        NF==3 && c<n { x=$1; y=$2; z=$3; c++;
-          if(d=="b") { x=x+0.1*sin(3*y); z=1.2*z } else if(d=="c") { x=0.9*x; y=y+0.05*cos(4*x) }
-          printf "%.9g %.9g %.9g\n", x, y, z; next } {print}' "$src" > "$tmp/hand_$d.off"
-    done
+    nv=$(awk 'NR==2 {print $1}' "$data/meshes/hand.off")
+    make_hands a b c
     "$prog" landmarks --mesh "$tmp/hand_a.off" --count 9 --out "$tmp/cones.txt" >/dev/null || fail "landmarks"
     printf '# a collection\nhand_a.off cones.txt\nhand_b.off cones.txt\nhand_c.off cones.txt\n' > "$tmp/list.txt"
     "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/out" --all-pairs || fail "collection"
@@ -400,6 +420,72 @@ case "$case_name" in
     printf 'hand_a.off cones.txt\nhand_b.off five.txt\n' > "$tmp/bad.txt"
     expect_error "$tmp/o3/report.json" collection --manifest "$tmp/bad.txt" --out "$tmp/o3"
     echo "ok (cycle consistency $cc)" ;;
+  collection_shards)
+    # the collection as separate jobs (--stage embed|maps --shard I/N, then --stage merge) writes
+    # the files of the single-process run, byte for byte (report.json apart from its times)
+    make_hands a b c e
+    "$prog" landmarks --mesh "$tmp/hand_a.off" --count 9 --out "$tmp/cones.txt" >/dev/null || fail "landmarks"
+    printf 'hand_a.off cones.txt\nhand_b.off cones.txt\nhand_c.off cones.txt\nhand_e.off cones.txt\n' > "$tmp/list.txt"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/one" --all-pairs 2>/dev/null || fail "collection"
+    [ "$(ls "$tmp/one"/*.map.txt | wc -l)" -eq 12 ] || fail "12 ordered pairs"
+    for i in 0 1; do "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/jobs" --all-pairs --stage embed --shard $i/2 2>/dev/null || fail "embed shard $i"; done
+    [ "$(ls "$tmp/jobs"/*.obj | wc -l)" -eq 4 ] || fail "4 embeddings after the embed stage"
+    expect_error "$tmp/jobs/report.json" collection --manifest "$tmp/list.txt" --out "$tmp/jobs" --all-pairs --stage merge
+    grep -q "not computed" "$tmp/stderr" || fail "the merge before the maps should say a map is missing"
+    for i in 0 1 2; do "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/jobs" --all-pairs --stage maps --shard $i/3 2>/dev/null || fail "maps shard $i"; done
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/jobs" --all-pairs --stage merge > "$tmp/stdout" || fail "merge"
+    [ ! -e "$tmp/jobs/.parts" ] || fail "the merge leaves the jobs' parts behind"
+    same_files "$tmp/one" "$tmp/jobs"
+    # with --repair (holes filled, isolated vertices) and cones of orders (2,3,7)
+    echo "10138 5326 2877" > "$tmp/c3.txt"
+    awk -v centres=1000,6000 -v rings=1 -f "$(dirname "$0")/punch_holes.awk" "$data/meshes/bear.off" > "$tmp/holes.off"
+    awk -v R=3 -f "$(dirname "$0")/bend.awk" "$data/meshes/bear.off" > "$tmp/bent.off"
+    printf 'holes.off c3.txt\nbent.off c3.txt\nholes.off c3.txt\n' > "$tmp/l2.txt"
+    "$prog" collection --manifest "$tmp/l2.txt" --out "$tmp/one2" --repair --cone-orders 2,3,7 --all-pairs >/dev/null 2>&1 || fail "collection --repair"
+    "$prog" collection --manifest "$tmp/l2.txt" --out "$tmp/jobs2" --repair --cone-orders 2,3,7 --all-pairs --stage embed >/dev/null 2>&1 || fail "embed stage --repair"
+    "$prog" collection --manifest "$tmp/l2.txt" --out "$tmp/jobs2" --all-pairs --stage maps >/dev/null 2>&1 || fail "maps stage"
+    "$prog" collection --manifest "$tmp/l2.txt" --out "$tmp/jobs2" --all-pairs --stage merge >/dev/null || fail "merge"
+    same_files "$tmp/one2" "$tmp/jobs2"
+    grep -q '^-1 0 0 0$' "$tmp/jobs2/0_to_1.map.txt" || fail "the isolated vertices of holes.off have no image"
+    # usage errors
+    expect_error "$tmp/x/report.json" collection --manifest "$tmp/list.txt" --out "$tmp/x" --shard 0/2
+    expect_error "$tmp/x/report.json" collection --manifest "$tmp/list.txt" --out "$tmp/x" --stage maps --shard 2/2
+    expect_error "$tmp/x/report.json" collection --manifest "$tmp/list.txt" --out "$tmp/x" --stage embed --shard a/2
+    expect_error "$tmp/x/report.json" collection --manifest "$tmp/list.txt" --out "$tmp/x" --stage sideways
+    expect_error "$tmp/x/report.json" collection --manifest "$tmp/list.txt" --out "$tmp/x" --stage merge --shard 0/2
+    echo ok ;;
+  map_stored)
+    # map --source-embedding/--target-embedding: the numbers of map on the meshes, without embedding again
+    off="$data/meshes/bear.off"
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/c.txt"
+    awk -v R=3 -f "$(dirname "$0")/bend.awk" "$off" > "$tmp/bent.off"
+    "$prog" map --source "$off" --source-cones "$tmp/c.txt" --target "$tmp/bent.off" --target-cones "$tmp/c.txt" --out "$tmp/m.txt" >/dev/null || fail "map"
+    "$prog" embed --mesh "$off" --cones "$tmp/c.txt" --out "$tmp/a.obj" --report "$tmp/a.json" >/dev/null || fail "embed source"
+    grep -q '^# hot orbifold sphere genus 0 cones 7 reversed 0$' "$tmp/a.obj" || fail "no orbifold line"
+    [ "$(grep -c '^# hot cone ' "$tmp/a.obj")" -eq 7 ] || fail "7 cone lines"
+    pos=$(sed -n 's/.*"landmark_positions_used": \[\(.*\)\].*/\1/p' "$tmp/a.json" | tr -d ' ')
+    [ -n "$pos" ] || fail "no landmark_positions_used"
+    # each cone line names the landmark at that cone: its vertex is that line of the landmark file
+    awk 'NR==FNR { for(i = 1; i <= NF; ++i) v[i-1] = $i; next } /^# hot cone / { if(v[$5] != $6) bad++ } END { exit bad > 0 }' \
+      "$tmp/c.txt" "$tmp/a.obj" || fail "a cone line's vertex is not its landmark's"
+    "$prog" embed --mesh "$tmp/bent.off" --cones "$tmp/c.txt" --order "$pos" --out "$tmp/b.obj" >/dev/null || fail "embed target --order $pos"
+    "$prog" map --source-embedding "$tmp/a.obj" --target-embedding "$tmp/b.obj" --out "$tmp/s.txt" --report "$tmp/s.json" >/dev/null || fail "map from stored embeddings"
+    cmp -s "$tmp/m.txt" "$tmp/s.txt" || fail "the map from stored embeddings differs from map's"
+    grep -q '"unreliable_vertex_count": 0' "$tmp/s.json" || fail "report"
+    # another cone order: refused
+    rev=$(echo "$pos" | tr ',' '\n' | tac | paste -sd, -)
+    "$prog" embed --mesh "$tmp/bent.off" --cones "$tmp/c.txt" --order "$rev" --out "$tmp/r.obj" >/dev/null || fail "embed --order $rev"
+    expect_error "$tmp/x.txt" map --source-embedding "$tmp/a.obj" --target-embedding "$tmp/r.obj" --out "$tmp/x.txt"
+    grep -q "different cones" "$tmp/stderr" || fail "the other cone order is not named"
+    # a file without the orbifold line, a mix with meshes, a wrong --order
+    grep -v '^# hot orbifold' "$tmp/b.obj" > "$tmp/n.obj"
+    expect_error "$tmp/x.txt" map --source-embedding "$tmp/a.obj" --target-embedding "$tmp/n.obj" --out "$tmp/x.txt"
+    grep -q "orbifold" "$tmp/stderr" || fail "the missing orbifold line is not named"
+    expect_error "$tmp/x.txt" map --source-embedding "$tmp/a.obj" --target "$tmp/bent.off" --out "$tmp/x.txt"
+    expect_error "$tmp/x.txt" map --source-embedding "$tmp/a.obj" --out "$tmp/x.txt"
+    expect_error "$tmp/x.obj" embed --mesh "$off" --cones "$tmp/c.txt" --order 0,1,2,3,4,5,5 --out "$tmp/x.obj"
+    expect_error "$tmp/x.obj" embed --mesh "$off" --cones "$tmp/c.txt" --order 0,1,2 --out "$tmp/x.obj"
+    echo ok ;;
   cut)
     # CGAL's selection file of the cut of bear.off through 7 landmarks: line 1 the cones in the
     # cut's order, line 2 empty, line 3 the seam as vertex pairs "s0 t0 s1 t1 ...", which must be

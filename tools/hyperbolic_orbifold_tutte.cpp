@@ -24,6 +24,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 
 #include "command_line.h"
+#include "cli_types.h"
+#include "collection_jobs.h"
 #include "certify_command.h"
 #include "io/cut_graph_file.h"
 #include "io/embedding_obj.h"
@@ -61,12 +63,15 @@ const char* const usage_text =
   "      draws the basic tile of the orbifold with K cones and its images under the group\n"
   "      (products of at most D side pairings, default 3) in the Poincare disk\n"
   "  hyperbolic_orbifold_tutte embed --mesh IN --cones CONES [--orbifold sphere|disk]\n"
-  "      [--weights cotan|mvc|uniform] [--order given|tsp] --out OUT.obj [--svg PICTURE.svg]\n"
+  "      [--weights cotan|mvc|uniform] [--order given|tsp|I0,I1,...] --out OUT.obj [--svg PICTURE.svg]\n"
   "      [--report REPORT.json] [--recentre] [--cone-orders P1,P2,...] [REPAIR]\n"
   "      embeds the mesh into the hyperbolic orbifold whose cones are the landmarks CONES\n"
   "      (0-based vertex indices); OUT.obj holds the input vertices (v), one Poincare point\n"
   "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
-  "      bijective or the program fails. --order defaults to tsp for sphere type.\n"
+  "      bijective or the program fails. --order defaults to tsp for sphere type; --order\n"
+  "      I0,I1,... puts the landmarks (0-based lines of CONES) in that order (e.g. another\n"
+  "      embedding's \"landmark_positions_used\", for a map between stored embeddings).\n"
+  "      OUT.obj's head says the orbifold and the cones ('# hot orbifold', '# hot cone' lines).\n"
   "      --cone-orders: the order p of every landmark's cone (angle 2 pi/p), in the order of\n"
   "      CONES (default 2 for all: angle pi); sphere type; the orbifold must be hyperbolic,\n"
   "      sum(1 - 1/p) > 2: 3 cones (2,3,7), (3,3,4), (2,4,5), 4 cones (2,2,2,3), 5 of any orders\n"
@@ -86,9 +91,18 @@ const char* const usage_text =
   "      both embeddings below their disagreement) get a one-line warning on stderr;\n"
   "      REPORT.json lists them (\"unreliable_vertices\", numbered as MAP.txt's lines), with\n"
   "      the squeezed regions, the sizes and the times\n"
+  "  hyperbolic_orbifold_tutte map --source-embedding A.obj --target-embedding B.obj --out MAP.txt [--report REPORT.json]\n"
+  "      the same map from two embeddings stored by embed or collection (no embedding again):\n"
+  "      they must put the same landmarks at the same cones (embed B with --order given and\n"
+  "      its landmarks listed in A's landmark_order_used); MAP.txt has one line per v line of A.obj\n"
   "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [REPAIR]\n"
+  "      [--stage embed|maps|merge [--shard I/N]]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
-  "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt)\n"
+  "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt).\n"
+  "      As separate jobs (array jobs of a batch scheduler; the same options in every job):\n"
+  "      --stage embed --shard I/N embeds meshes I, I+N, ...; then --stage maps --shard I/N maps\n"
+  "      its share of the pairs from the stored embeddings; then --stage merge writes\n"
+  "      DIR/report.json (the same files as one process; DIR/.parts holds the jobs' results)\n"
   "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES [REPAIR]\n"
   "      writes K well-spread landmarks of the mesh (vertices of the file, also with --repair)\n"
   "  hyperbolic_orbifold_tutte cut --mesh IN --cones CONES [--order given|tsp] --out OUT.selection.txt\n"
@@ -161,47 +175,6 @@ int run_tile(int argc, char** argv)
   std::cout << "wrote " << svg << " (" << (type == HOT::Sphere_type ? "sphere" : "disk") << ", " << k << " cones"
             << (orders.empty() ? std::string() : " of the given orders") << ", depth " << depth << ")" << std::endl;
   return EXIT_SUCCESS;
-}
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Surface_mesh;
-typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
-typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor SM_halfedge;
-typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
-
-typedef Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> UV_map;
-typedef Surface_mesh::Property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> > Chart_map;
-
-// a mesh file read for a job (as is, or prepared with --repair), its addressing by the file's
-// vertices, and the landmarks moved by --snap-landmarks
-struct Input
-{
-  hot_tools::Input_mesh file;
-  std::vector<hot_tools::Landmark_snap_record> snaps;
-};
-
-// reads and checks (or prepares) a mesh and its landmarks (without --repair the same calls as
-// the fuzz target, fuzz/fuzz_mesh_reader.cpp); returns the orbifold type (required or detected)
-HOT::Orbifold_type read_mesh_and_landmarks(const std::string& mesh_path, const std::string& cones_path,
-                                           std::optional<HOT::Orbifold_type> required_type,
-                                           const hot_tools::Repair_options& repair, Surface_mesh& m,
-                                           std::vector<SM_vertex>& landmarks, Input& in,
-                                           std::size_t minimum = HOT::minimum_number_of_landmarks)
-{
-  HOT::Mesh_info info;
-  require(hot_tools::read_input_mesh(mesh_path, required_type, repair, m, in.file, &info));
-  require(hot_tools::read_input_landmarks(cones_path, m, in.file, info.type, repair.snap_landmarks, landmarks, &in.snaps, minimum));
-  return info.type;
-}
-
-// the 0-based indices, in the files (the input file's, then the added ones), of vertices of a
-// mesh read by read_mesh_and_landmarks()
-std::vector<std::size_t> file_indices(const std::vector<SM_vertex>& vs, const hot_tools::Input_mesh& in)
-{
-  std::vector<std::size_t> r;
-  for(SM_vertex v : vs)
-    r.push_back(hot_tools::output_vertex(v, &in));
-  return r;
 }
 
 // the cut graph of a file (--cut-graph: vertex paths of the mesh file, with --repair of the
@@ -312,7 +285,32 @@ struct Embed_job
   std::vector<int> orders; // --cone-orders, per landmark of the file (empty: 2 for all)
   hot_tools::Repair_options repair;
   std::optional<std::string> cut_graph_path, cut_graph_out; // genus g >= 1: --cut-graph, --cut-graph-out
+  std::vector<std::size_t> explicit_order; // --order I0,I1,...: the landmarks' positions in the order of the cut
 };
+
+// --order I0,I1,...: a permutation of the k landmarks' positions (0-based lines of the landmark file)
+std::vector<std::size_t> parse_landmark_positions(const std::string& s, std::size_t k)
+{
+  std::vector<std::size_t> perm;
+  std::vector<char> seen(k, 0);
+  std::istringstream in(s);
+  for(std::string t; std::getline(in, t, ',');) {
+    const bool digits = !t.empty() && t.size() <= 9 && t.find_first_not_of("0123456789") == std::string::npos;
+    if(!digits)
+      throw Usage_error{"--order: '" + t + "' is not a landmark position (given, tsp, or a comma-separated permutation of 0.." +
+                        std::to_string(k == 0 ? 0 : k - 1) + ")"};
+    const std::size_t i = std::stoul(t);
+    if(i >= k || seen[i])
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, "--order must list each of the " + std::to_string(k) + " landmark positions 0.." +
+                                                  std::to_string(k - 1) + " once, got '" + s + "'"};
+    seen[i] = 1;
+    perm.push_back(i);
+  }
+  if(perm.size() != k)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "--order lists " + std::to_string(perm.size()) + " landmark positions for " + std::to_string(k) +
+                                                " landmarks"};
+  return perm;
+}
 
 Embed_job parse_embed_options(int argc, char** argv)
 {
@@ -332,7 +330,10 @@ Embed_job parse_embed_options(int argc, char** argv)
     else throw Usage_error{"--weights must be cotan, mvc or uniform, got '" + w + "'"};
     job.request.weights = w;
   }
-  job.request.order = parse_order(opt, std::string());
+  if(opt.has("order") && opt.get("order").find_first_of("0123456789") != std::string::npos)
+    job.request.order = opt.get("order"); // (a list: parsed once the landmarks are read)
+  else
+    job.request.order = parse_order(opt, std::string());
   if(opt.has("orbifold"))
     job.required_type = parse_orbifold(opt.get("orbifold"));
   if(opt.has("svg"))
@@ -380,7 +381,16 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
 
   Output_files files;
   const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
-  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr, &ch); });
+  hot_tools::Embedding_cones cones; // (what a map from the stored embedding needs)
+  cones.type = type;
+  cones.genus = st.genus;
+  cones.reversed = st.landmark_order_reversed;
+  cones.landmark = st.landmark_order;
+  for(std::size_t i = 0; i < st.landmark_order.size(); ++i) {
+    cones.vertex.push_back(job.request.cones[st.landmark_order[i]]);
+    cones.order.push_back(i < st.cone_orders.size() ? st.cone_orders[i] : 2);
+  }
+  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr, &ch, &cones); });
   if(job.svg_path) {
     std::ostringstream title;
     if(st.genus > 0)
@@ -412,6 +422,18 @@ int run_embed(int argc, char** argv)
     read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, job.repair, m, landmarks, in, minimum_landmarks(job.orders));
   print_repair(job.request.mesh_path, in);
   job.request.type = type;
+  if(job.request.order.find_first_of("0123456789") != std::string::npos) { // --order I0,I1,...: the landmarks in that order
+    job.explicit_order = parse_landmark_positions(job.request.order, landmarks.size());
+    std::vector<SM_vertex> reordered;
+    std::vector<int> reordered_orders;
+    for(std::size_t i : job.explicit_order) {
+      reordered.push_back(landmarks[i]);
+      if(!job.orders.empty()) reordered_orders.push_back(job.orders[i]);
+    }
+    landmarks = reordered;
+    job.orders = reordered_orders;
+    job.request.order = "given";
+  }
   const long long genus = type == HOT::Sphere_type ? HOT::internal::closed_mesh_genus(m) : 0;
   if(job.request.order.empty()) // (genus g >= 1: the cut graph joins the landmarks in any order)
     job.request.order = (type == HOT::Sphere_type && genus == 0) ? "tsp" : "given";
@@ -430,7 +452,13 @@ int run_embed(int argc, char** argv)
       throw Failure{HOT::ERROR_WRONG_PARAMETER, "--cut-graph: the mesh has genus 0; a cut graph is for a closed mesh of genus 1 or more"};
     cut_graph = read_cut_graph_of(*job.cut_graph_path, m, in.file);
   }
-  const HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts, cut_graph);
+  HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts, cut_graph);
+  if(!job.explicit_order.empty()) { // (the positions and the cones as in the file)
+    for(std::size_t& i : st.landmark_order) i = job.explicit_order[i];
+    std::vector<std::size_t> as_given(job.explicit_order.size());
+    for(std::size_t j = 0; j < as_given.size(); ++j) as_given[job.explicit_order[j]] = job.request.cones[j];
+    job.request.cones = as_given;
+  }
   write_embed_outputs(job, m, uv, charts, landmarks, st, in);
   std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
             << (genus > 0 ? "closed, genus " + std::to_string(genus) : std::string(type == HOT::Sphere_type ? "sphere" : "disk") + " type") << ") in "
@@ -488,8 +516,6 @@ void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const st
   if(ec != HOT::OK)
     throw Failure{ec, name + ": " + e.stats.message};
 }
-
-typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
 
 long long genus_of(const Embedded& e)
 {
@@ -610,12 +636,67 @@ hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A, const 
   return m;
 }
 
+// `map --source-embedding A.obj --target-embedding B.obj`: the map from two stored embeddings
+// (stored_embedding.h), without embedding again; the same numbers as `map` on the meshes when
+// the two files were embedded with the same landmarks in the same cone order
+int run_map_stored(const Options& opt)
+{
+  for(const char* o : {"source", "source-cones", "target", "target-cones", "colors-out", "prepared-target", "max-hole", "cone-orders",
+                       "source-cut-graph", "target-cut-graph", "repair", "largest-component", "snap-landmarks"})
+    if(opt.has(o))
+      throw Usage_error{std::string("--") + o + " does not go with --source-embedding/--target-embedding (the stored embeddings hold the meshes,"
+                        " the landmarks and the orbifold)"};
+  if(!opt.has("source-embedding") || !opt.has("target-embedding"))
+    throw Usage_error{"--source-embedding and --target-embedding go together"};
+  const std::string out = opt.get("out");
+  Stored_embedding A, B;
+  read_stored_embedding(opt.get("source-embedding"), A);
+  read_stored_embedding(opt.get("target-embedding"), B);
+  check_stored_pair(A, B);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Locator locB = stored_locator(B);
+  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.chart_isometries, locB);
+  for(std::size_t i = 0; i < f.size(); ++i)
+    if(!f[i].success)
+      throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(A.vertex_line[i]) + " of the source could not be located on the target"};
+  const auto t1 = std::chrono::steady_clock::now();
+  const HOT::Map_reliability reliability = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
+  hot_tools::Map_summary m;
+  m.source_path = A.path;
+  m.target_path = B.path;
+  m.source_vertices = num_vertices(A.mesh);
+  m.target_vertices = num_vertices(B.mesh);
+  m.type = A.cones.type;
+  m.landmarks = A.number_of_cones();
+  for(std::size_t i : reliability.unreliable_vertices)
+    m.unreliable.push_back(A.vertex_line[i]);
+  std::sort(m.unreliable.begin(), m.unreliable.end());
+  m.regions = reliability.regions;
+  for(const HOT::Squeezed_region& g : reliability.regions)
+    m.region_vertices.emplace_back(A.vertex_line[g.source_vertex], B.vertex_line[g.target_vertex]);
+  m.seconds_map = std::chrono::duration<double>(t1 - t0).count();
+  m.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  Output_files files;
+  files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, A.line_vertex); });
+  if(opt.has("report"))
+    files.write(opt.get("report"), [&](std::ostream& os) { hot_tools::write_map_report(os, m); });
+  files.commit();
+  std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << A.path << " onto " << B.path << " (stored embeddings); wrote " << out
+            << std::endl;
+  if(!m.unreliable.empty())
+    std::cerr << "warning: the map cannot resolve the images of " << m.unreliable.size() << " of the " << num_vertices(A.mesh)
+              << " source vertices (a protrusion without a landmark): put a landmark at the tip of such a protrusion" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 int run_map(int argc, char** argv)
 {
   const Options opt(argc, argv, 2,
                     {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole",
-                     "cone-orders", "source-cut-graph", "target-cut-graph"},
+                     "cone-orders", "source-cut-graph", "target-cut-graph", "source-embedding", "target-embedding"},
                     repair_flags());
+  if(opt.has("source-embedding") || opt.has("target-embedding"))
+    return run_map_stored(opt);
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
   const std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
@@ -673,39 +754,7 @@ int run_map(int argc, char** argv)
 }
 
 typedef HOT::Orbifold_collection<Surface_mesh, CGAL::Parallel_tag> Collection;
-typedef std::vector<std::pair<std::string, std::string> > Manifest; // (mesh path, cones path) per line
 typedef hot_tools::Collection_maps Collection_maps;
-
-// the manifest's entries, relative paths resolved against the manifest's folder
-Manifest read_manifest(const std::string& manifest)
-{
-  std::string manifest_text; // a missing file, a directory etc. get their own reason
-  require(hot_tools::read_file_contents(manifest, manifest_text));
-  std::istringstream in(manifest_text);
-  const std::string base = manifest.find('/') == std::string::npos ? std::string(".") : manifest.substr(0, manifest.find_last_of('/'));
-  auto resolve = [&](const std::string& f) { return (!f.empty() && f[0] == '/') ? f : base + "/" + f; };
-  Manifest entries;
-  std::string line;
-  std::size_t line_no = 0;
-  while(std::getline(in, line)) {
-    ++line_no;
-    const std::size_t hash = line.find('#');
-    if(hash != std::string::npos) line = line.substr(0, hash);
-    std::istringstream ls(line);
-    std::vector<std::string> fields;
-    for(std::string f; ls >> f;)
-      fields.push_back(f);
-    if(fields.empty()) continue;
-    if(fields.size() != 2)
-      throw Failure{HOT::ERROR_READ_FAILED, manifest + ": line " + std::to_string(line_no) + ": expected 'mesh_path cones_path', found " +
-                                            std::to_string(fields.size()) + (fields.size() == 1 ? " field" : " fields")};
-    entries.push_back(std::make_pair(resolve(fields[0]), resolve(fields[1])));
-  }
-  if(entries.size() < 2)
-    throw Failure{HOT::ERROR_WRONG_PARAMETER, manifest + ": the manifest lists " + std::to_string(entries.size()) +
-                                              " mesh" + (entries.size() == 1 ? "" : "es") + ", a collection needs at least 2"};
-  return entries;
-}
 
 // reads and checks every mesh of the manifest into the collection; returns the orbifold type
 HOT::Orbifold_type read_collection(const Manifest& entries, const hot_tools::Repair_options& repair, Collection& coll,
@@ -762,27 +811,9 @@ void embed_collection(const Manifest& entries, Collection& coll)
 Collection_maps map_collection(Collection& coll, bool all_pairs)
 {
   const std::size_t N = coll.number_of_meshes();
-  std::vector<std::array<std::size_t, 3> > triples;
-  if(N >= 3) {
-    if(N <= 6) {
-      for(std::size_t a = 0; a < N; ++a)
-        for(std::size_t b = 0; b < N; ++b)
-          for(std::size_t c = 0; c < N; ++c)
-            if(a != b && b != c && a != c) triples.push_back({{a, b, c}});
-    } else {
-      for(std::size_t a = 0; a < N; ++a) triples.push_back({{a, (a + 1) % N, (a + 2) % N}});
-    }
-  }
-  std::vector<std::pair<std::size_t, std::size_t> > pairs;
-  for(const auto& t : triples) {
-    pairs.emplace_back(t[0], t[1]);
-    pairs.emplace_back(t[0], t[2]);
-  }
-  if(all_pairs)
-    for(std::size_t a = 0; a < N; ++a)
-      for(std::size_t b = 0; b < N; ++b)
-        if(a != b) pairs.emplace_back(a, b);
-  coll.compute_maps(pairs); // in parallel
+  const Collection_pairs cp = collection_pairs(N, all_pairs);
+  const auto& triples = cp.triples;
+  coll.compute_maps(cp.pairs); // in parallel
   // failures are reported in the order the maps are used
   Collection_maps r;
   r.used.assign(N, std::vector<char>(N, 0));
@@ -812,58 +843,128 @@ Collection_maps map_collection(Collection& coll, bool all_pairs)
 
 // DIR/<i>_<name>.obj per mesh, with --all-pairs DIR/<a>_to_<b>.map.txt per ordered pair, and
 // DIR/report.json
-void write_collection_files(const std::string& dir, const Manifest& entries, Collection& coll, HOT::Orbifold_type type,
-                            const Collection_maps& maps, bool all_pairs, const std::vector<hot_tools::Input_mesh>& inputs)
+void write_collection_files(const Collection_job& job, Collection& coll, HOT::Orbifold_type type,
+                            const Collection_maps& maps, const std::vector<hot_tools::Input_mesh>& inputs)
 {
   auto addressed = [&](std::size_t i) { return inputs[i].repaired ? &inputs[i] : nullptr; };
-  const std::size_t N = entries.size();
+  const std::size_t N = job.size();
   std::vector<std::string> mesh_paths;
-  for(const auto& e : entries)
+  for(const auto& e : job.entries)
     mesh_paths.push_back(e.first);
-  auto stem = [&](std::size_t i) {
-    std::string f = mesh_paths[i].substr(mesh_paths[i].find_last_of('/') + 1);
-    return std::to_string(i) + "_" + f.substr(0, f.find_last_of('.'));
-  };
-  if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
-    throw std::runtime_error("cannot create the folder '" + dir + "'");
+  make_folder(job.dir);
   Output_files files;
   for(std::size_t i = 0; i < N; ++i) {
-    const hot_tools::Embedding_charts<Collection::Chart_map> ch{coll.chart_map(i), coll.statistics(i).charts,
-                                                                coll.statistics(i).chart_corners};
-    files.write(dir + "/" + stem(i) + ".obj",
-                [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i), addressed(i), &ch); });
+    const HOT::Embedding_statistics& st = coll.statistics(i);
+    const hot_tools::Embedding_charts<Collection::Chart_map> ch{coll.chart_map(i), st.charts, st.chart_corners};
+    hot_tools::Embedding_cones cones;
+    cones.type = type;
+    cones.reversed = st.landmark_order_reversed;
+    cones.landmark = coll.order();
+    for(std::size_t c : coll.order()) {
+      cones.vertex.push_back(hot_tools::output_vertex(coll.landmarks(i)[c], addressed(i)));
+      cones.order.push_back(coll.cone_orders().empty() ? 2 : coll.cone_orders()[c]);
+    }
+    files.write(job.obj_path(i),
+                [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i), addressed(i), &ch, &cones); });
   }
-  if(all_pairs)
+  if(job.all_pairs)
     for(std::size_t a = 0; a < N; ++a)
       for(std::size_t b = 0; b < N; ++b) {
         if(a == b) continue;
         const auto& f = coll.map(a, b);
-        files.write(dir + "/" + std::to_string(a) + "_to_" + std::to_string(b) + ".map.txt",
-                    [&](std::ostream& os) { hot_tools::write_map(os, coll.mesh(b), coll.locator(b), f, addressed(a)); });
+        files.write(job.map_path(a, b), [&](std::ostream& os) { hot_tools::write_map(os, coll.mesh(b), coll.locator(b), f, addressed(a)); });
       }
-  files.write(dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, mesh_paths, coll, type, maps, &inputs); });
+  files.write(job.dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, mesh_paths, coll, type, maps, &inputs); });
   files.commit();
+}
+
+// --shard I/N: this job's share, I in [0, N)
+std::pair<std::size_t, std::size_t> parse_shard(const Options& opt)
+{
+  if(!opt.has("shard"))
+    return std::make_pair(std::size_t(0), std::size_t(1));
+  const std::string s = opt.get("shard");
+  const std::size_t slash = s.find('/');
+  std::size_t i = 0, n = 0;
+  bool ok = slash != std::string::npos && slash > 0 && slash + 1 < s.size();
+  for(std::size_t k = 0; ok && k < s.size(); ++k)
+    if(k != slash) ok = std::isdigit(static_cast<unsigned char>(s[k])) != 0;
+  if(ok && slash <= 9 && s.size() - slash - 1 <= 9) {
+    i = std::stoul(s.substr(0, slash));
+    n = std::stoul(s.substr(slash + 1));
+  } else
+    ok = false;
+  if(!ok || n == 0 || i >= n)
+    throw Usage_error{"--shard must be I/N with 0 <= I < N (e.g. 0/8), got '" + s + "'"};
+  return std::make_pair(i, n);
+}
+
+// `collection --stage embed|maps|merge [--shard I/N]`: the collection as separate jobs
+// (collection_jobs.h): the embed stage embeds meshes I, I + N, ...; the maps stage computes the
+// maps I, I + N, ... of the collection's list of pairs from the stored embeddings; the merge
+// writes report.json once both stages are done for every shard
+int run_collection_stage(const Collection_job& job, const std::string& stage, std::pair<std::size_t, std::size_t> shard)
+{
+  std::size_t done = 0;
+  if(stage == "embed") {
+    const Collection_order co = collection_order(job);
+    for(std::size_t i = shard.first; i < job.size(); i += shard.second) {
+      const double t = embed_collection_mesh(job, co, i);
+      std::cerr << "  embedded " << job.entries[i].first << " (" << t << " s)" << std::endl;
+      ++done;
+    }
+    std::cout << "collection shard " << shard.first << "/" << shard.second << ": embedded " << done << " of " << job.size() << " meshes into "
+              << job.dir << std::endl;
+  } else if(stage == "maps") {
+    const Collection_pairs cp = collection_pairs(job.size(), job.all_pairs);
+    std::size_t mine = 0;
+    for(std::size_t p = shard.first; p < cp.pairs.size(); p += shard.second) ++mine;
+    for(std::size_t p = shard.first; p < cp.pairs.size(); p += shard.second) {
+      const double t = map_collection_pair(job, cp.pairs[p].first, cp.pairs[p].second);
+      ++done;
+      if(done == mine || done % std::max<std::size_t>(1, mine / 20) == 0)
+        std::cerr << "  mapped " << done << "/" << mine << " pairs (last: " << cp.pairs[p].first << " -> " << cp.pairs[p].second << ", " << t
+                  << " s)" << std::endl;
+    }
+    std::cout << "collection shard " << shard.first << "/" << shard.second << ": mapped " << done << " of " << cp.pairs.size() << " pairs in "
+              << job.dir << std::endl;
+  } else if(stage == "merge") {
+    if(shard.second != 1)
+      throw Usage_error{"--stage merge runs once, without --shard"};
+    const hot_tools::Collection_report r = merge_collection(job);
+    std::cout << "collection of " << job.size() << " meshes merged; " << r.triples << " triples checked, cycle consistency " << r.cycle
+              << "; wrote " << job.dir << "/report.json" << std::endl;
+  } else
+    throw Usage_error{"--stage must be embed, maps or merge, got '" + stage + "'"};
+  return EXIT_SUCCESS;
 }
 
 int run_collection(int argc, char** argv)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("all-pairs");
-  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "cone-orders"}, flags);
-  const std::string manifest = opt.get("manifest"), dir = opt.get("out");
-  const bool all_pairs = opt.has("all-pairs");
-  const hot_tools::Repair_options repair = parse_repair_options(opt);
-  const std::vector<int> orders = parse_cone_orders(opt);
-  const Manifest entries = read_manifest(manifest);
+  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "cone-orders", "stage", "shard"}, flags);
+  Collection_job job;
+  job.manifest_path = opt.get("manifest");
+  job.dir = opt.get("out");
+  job.all_pairs = opt.has("all-pairs");
+  job.repair = parse_repair_options(opt);
+  job.orders = parse_cone_orders(opt);
+  const std::pair<std::size_t, std::size_t> shard = parse_shard(opt);
+  if(opt.has("shard") && !opt.has("stage"))
+    throw Usage_error{"--shard needs --stage embed or --stage maps (then --stage merge once)"};
+  job.entries = read_manifest(job.manifest_path);
+  if(opt.has("stage"))
+    return run_collection_stage(job, opt.get("stage"), shard);
   Collection coll;
-  coll.set_cone_orders(orders);
+  coll.set_cone_orders(job.orders);
   std::vector<hot_tools::Input_mesh> inputs;
-  const HOT::Orbifold_type type = read_collection(entries, repair, coll, inputs, minimum_landmarks(orders));
-  embed_collection(entries, coll);
-  const Collection_maps maps = map_collection(coll, all_pairs);
-  write_collection_files(dir, entries, coll, type, maps, all_pairs, inputs);
-  std::cout << "collection of " << entries.size() << " meshes embedded" << (all_pairs ? " and mapped pairwise" : "") << "; "
-            << maps.triples << " triples checked, cycle consistency " << maps.cycle << "; wrote " << dir << std::endl;
+  const HOT::Orbifold_type type = read_collection(job.entries, job.repair, coll, inputs, minimum_landmarks(job.orders));
+  embed_collection(job.entries, coll);
+  const Collection_maps maps = map_collection(coll, job.all_pairs);
+  write_collection_files(job, coll, type, maps, inputs);
+  std::cout << "collection of " << job.size() << " meshes embedded" << (job.all_pairs ? " and mapped pairwise" : "") << "; "
+            << maps.triples << " triples checked, cycle consistency " << maps.cycle << "; wrote " << job.dir << std::endl;
   return EXIT_SUCCESS;
 }
 

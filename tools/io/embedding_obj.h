@@ -14,6 +14,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 
 #include <cstddef>
+#include "embedding_cones.h"
 #include "prepared_input.h"
 
 #include <ostream>
@@ -75,9 +76,13 @@ struct Embedding_charts
 //                                 holds its tile point rounded to double
 // A face is written in the chart of any of its vt that has one (at most one chart per face);
 // its other corners are the chart applied to their tile points (HOT::chart_coordinates()).
+// With `cones`, the orbifold and cone lines (Embedding_cones) follow the first comment line.
+// With `in`, a file vertex on no face of the prepared mesh that became one of its vertices (a
+// merged duplicate) gets a line `# hot same J K` after the v lines (v line J is v line K; 0-based).
 template <class Point_3, class HalfedgeUVMap, class HalfedgeChartMap = std::nullptr_t>
 void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const HalfedgeUVMap& uv,
-                         const Input_mesh* in = nullptr, const Embedding_charts<HalfedgeChartMap>* charts = nullptr)
+                         const Input_mesh* in = nullptr, const Embedding_charts<HalfedgeChartMap>* charts = nullptr,
+                         const Embedding_cones* cones = nullptr)
 {
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
@@ -119,7 +124,15 @@ void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
     }
   os.precision(17);
   os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
+  if(cones)
+    write_embedding_cones(os, *cones);
   write_addressed_vertices(os, m, in, "v ");
+  if(in) // the file's vertices on no face that became a vertex of the mesh (merged duplicates)
+    for(std::size_t i = 0; i < in->prep.prepared_vertex.size(); ++i) {
+      const std::size_t p = in->prep.prepared_vertex[i];
+      if(p != HOT::Mesh_preparation::npos && in->prep.output_index[p] != i)
+        os << "# hot same " << i << " " << in->prep.output_index[p] << "\n";
+    }
   for(const auto& p : vt_points)
     os << "vt " << p.p.x() << " " << p.p.y() << "\n";
   if(with_charts) {

@@ -10,6 +10,7 @@
 // or by any other program.
 
 #include "common.h"
+#include "embedding_cones.h"
 #include "files.h"
 #include "obj.h" // is_ignored_obj_statement()
 
@@ -50,6 +51,15 @@ inline bool obj_index(std::string_view t, std::size_t count, std::size_t& index)
 
 } // namespace io_impl
 
+/// what an OBJ file written by `embed` holds besides the embedding (read_embedding_obj())
+struct Embedding_obj_extras
+{
+  std::vector<std::array<double, 3> > vertex_points;           ///< the v lines
+  Embedding_cones cones;                                       ///< the orbifold and cone lines
+  bool has_cones = false;                                      ///< whether there are such lines
+  std::vector<std::pair<std::size_t, std::size_t> > same;      ///< the `# hot same J K` lines (0-based)
+};
+
 /*!
 Reads the embedding in the OBJ file `path`: `v x y z` lines (counted in `number_of_vertices`;
 they are the mesh's vertices, in its order), `vt x y` lines (the points; "nan" and "inf" are
@@ -65,13 +75,29 @@ read too: `# hot chart I AR AI BR BI C` lines (charts 0, 1, ... in order) into
 (X, Y) of chart I; at most one per vt) into `point_charts` and `chart_points`; a malformed
 one, a vtc line without the chart table or of a chart or vt the file does not have is an
 error like the others. `chart_points` (if not null) receives the number of `# hot vtc` lines.
+`extras` (if not null) receives the `v` lines' points, the orbifold and cone lines `embed`
+writes at the head of the file (`# hot orbifold`, `# hot cone`; tools/io/embedding_cones.h) and
+its `# hot same J K` lines (v line J, on no face, is the same vertex as v line K: a merged
+duplicate of a repaired input); malformed ones are errors.
 */
 inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embedding& embedding,
-                                      std::size_t& number_of_vertices, std::size_t* chart_points = nullptr)
+                                      std::size_t& number_of_vertices, std::size_t* chart_points = nullptr,
+                                      Embedding_obj_extras* extras = nullptr)
 {
+  std::vector<std::array<double, 3> >* vertex_points = extras ? &extras->vertex_points : nullptr;
+  Embedding_cones* cones = extras ? &extras->cones : nullptr;
+  bool* has_cones = extras ? &extras->has_cones : nullptr;
+  if(extras)
+    extras->same.clear();
   using namespace io_impl;
   embedding.clear();
   number_of_vertices = 0;
+  if(vertex_points)
+    vertex_points->clear();
+  if(has_cones)
+    *has_cones = false;
+  if(cones)
+    *cones = Embedding_cones();
   std::string data;
   HOT::Status r = read_file_contents(path, data);
   if(!r)
@@ -93,13 +119,15 @@ inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embed
   for(std::size_t line = 0; next_fields(cur, true, fields, line);) {
     const std::string_view kw = fields[0];
     if(kw == "v") {
-      double q;
+      std::array<double, 3> q;
       if(fields.size() < 4)
         return fail(line, "vertex " + std::to_string(number_of_vertices) + " has " + std::to_string(fields.size() - 1) +
                             " coordinates, 3 expected");
       for(int k = 1; k <= 3; ++k)
-        if(!parse_real(fields[k], q))
+        if(!parse_real(fields[k], q[k - 1]))
           return fail(line, "vertex " + std::to_string(number_of_vertices) + ": coordinate " + quote(fields[k]) + " is not a number");
+      if(vertex_points)
+        vertex_points->push_back(q);
       ++number_of_vertices;
     } else if(kw == "vt") {
       std::array<double, 2> p;
@@ -146,6 +174,7 @@ inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embed
   // the charts around cone images ('# hot chart' and '# hot vtc' comment lines)
   {
     std::size_t line = 0;
+    Embedding_cones ignored_cones; // (the cone lines when `cones` is null: checked all the same)
     for(std::size_t at = 0; at < data.size();) {
       std::size_t end = data.find('\n', at);
       if(end == std::string::npos)
@@ -154,10 +183,54 @@ inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embed
       const std::string_view text(data.data() + at, end - at);
       at = end + 1;
       const bool is_chart = text.substr(0, 12) == "# hot chart ", is_vtc = text.substr(0, 10) == "# hot vtc ";
-      if(!is_chart && !is_vtc)
+      const bool is_orbifold = text.substr(0, 15) == "# hot orbifold ", is_cone = text.substr(0, 11) == "# hot cone ";
+      const bool is_same = text.substr(0, 11) == "# hot same ";
+      if(!is_chart && !is_vtc && !is_orbifold && !is_cone && !is_same)
         continue;
       std::vector<std::string_view> f;
       split(text, f);
+      if(is_same) {
+        std::uint64_t j = 0, k = 0;
+        if(f.size() != 5 || parse_unsigned(f[3], j) != NUMBER_OK || parse_unsigned(f[4], k) != NUMBER_OK || j >= number_of_vertices ||
+           k >= number_of_vertices)
+          return fail(line, "same line: '# hot same J K' expected, J and K vertices of the file (0-based)");
+        if(extras)
+          extras->same.emplace_back(static_cast<std::size_t>(j), static_cast<std::size_t>(k));
+        continue;
+      }
+      if(is_orbifold || is_cone) {
+        Embedding_cones& c = cones ? *cones : ignored_cones;
+        if(is_orbifold) {
+          // # hot orbifold TYPE genus G cones K reversed R
+          std::uint64_t g = 0, k = 0, r = 0;
+          if(f.size() != 10 || (f[3] != "sphere" && f[3] != "disk") || f[4] != "genus" || parse_unsigned(f[5], g) != NUMBER_OK ||
+             f[6] != "cones" || parse_unsigned(f[7], k) != NUMBER_OK || k > 1000000 || f[8] != "reversed" ||
+             parse_unsigned(f[9], r) != NUMBER_OK || r > 1)
+            return fail(line, "orbifold line: '# hot orbifold sphere|disk genus G cones K reversed 0|1' expected");
+          if(has_cones && *has_cones)
+            return fail(line, "a second orbifold line");
+          c.type = f[3] == "sphere" ? HOT::Sphere_type : HOT::Disk_type;
+          c.genus = static_cast<long long>(g);
+          c.reversed = r == 1;
+          c.landmark.assign(k, std::size_t(-1));
+          c.vertex.assign(k, std::size_t(-1));
+          c.order.assign(k, 0);
+          if(has_cones)
+            *has_cones = true;
+        } else {
+          // # hot cone C LANDMARK VERTEX ORDER
+          std::uint64_t i = 0, l = 0, v = 0, p = 0;
+          if(f.size() != 7 || parse_unsigned(f[3], i) != NUMBER_OK || parse_unsigned(f[4], l) != NUMBER_OK ||
+             parse_unsigned(f[5], v) != NUMBER_OK || parse_unsigned(f[6], p) != NUMBER_OK || p < 2 || p > 1000000)
+            return fail(line, "cone line: '# hot cone C LANDMARK VERTEX ORDER' expected (integers, ORDER >= 2)");
+          if(i >= c.landmark.size() || c.order[i] != 0)
+            return fail(line, "cone line: cone " + std::to_string(i) + " is not a cone of the orbifold line before it, or is given twice");
+          c.landmark[i] = static_cast<std::size_t>(l);
+          c.vertex[i] = static_cast<std::size_t>(v);
+          c.order[i] = static_cast<int>(p);
+        }
+        continue;
+      }
       // f[0] = "#", f[1] = "hot", f[2] = "chart" or "vtc"
       if(is_chart) {
         const std::size_t i = embedding.charts.size();
@@ -203,6 +276,14 @@ inline HOT::Status read_embedding_obj(const std::string& path, HOT::Corner_embed
       embedding.chart_points.assign(embedding.points.size(), std::array<double, 2>{{0.0, 0.0}});
     }
   }
+  if(cones)
+    for(std::size_t i = 0; i < cones->order.size(); ++i) {
+      if(cones->order[i] == 0)
+        return read_fail(path + ": cone " + std::to_string(i) + " of the orbifold line has no cone line");
+      if(cones->vertex[i] >= number_of_vertices)
+        return read_fail(path + ": cone " + std::to_string(i) + " is at vertex " + std::to_string(cones->vertex[i]) +
+                         ", beyond the file's " + std::to_string(number_of_vertices) + " vertices");
+    }
   for(std::size_t f = 0; f < embedding.face_vertices.size(); ++f)
     for(int k = 0; k < 3; ++k) {
       if(embedding.face_vertices[f][k] >= number_of_vertices)

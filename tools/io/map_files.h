@@ -47,6 +47,23 @@ std::array<double, 3> input_order_barycentric(const CGAL::Surface_mesh<Point_3>&
   return b;
 }
 
+// Writes the map f as write_map() does, one line per entry of `line_vertex`: the line of source
+// vertex line_vertex[j], or `-1 0 0 0` where it is npos (a vertex of the source's file on no face).
+template <class Point_3, class Locator>
+void write_map(std::ostream& os, const CGAL::Surface_mesh<Point_3>& target_mesh, const Locator& target_locator,
+               const std::vector<typename Locator::Location>& f, const std::vector<std::size_t>& line_vertex)
+{
+  os.precision(17);
+  for(std::size_t v : line_vertex) {
+    if(v == std::size_t(-1)) {
+      os << "-1 0 0 0\n";
+      continue;
+    }
+    const std::array<double, 3> b = input_order_barycentric(target_mesh, target_locator, f[v]);
+    os << f[v].face_index << " " << b[0] << " " << b[1] << " " << b[2] << "\n";
+  }
+}
+
 // Writes the map f from a source mesh onto `target_mesh` (located by `target_locator`): one line
 // `face b0 b1 b2` per source vertex in input order, face = the 0-based face of the target in
 // input order, b = barycentric coordinates w.r.t. that face's vertices in input order.
@@ -56,22 +73,16 @@ template <class Point_3, class Locator>
 void write_map(std::ostream& os, const CGAL::Surface_mesh<Point_3>& target_mesh, const Locator& target_locator,
                const std::vector<typename Locator::Location>& f, const Input_mesh* source = nullptr)
 {
-  os.precision(17);
-  auto line = [&](const typename Locator::Location& l) {
-    const std::array<double, 3> b = input_order_barycentric(target_mesh, target_locator, l);
-    os << l.face_index << " " << b[0] << " " << b[1] << " " << b[2] << "\n";
-  };
+  std::vector<std::size_t> line_vertex;
   if(!source) {
-    for(const typename Locator::Location& l : f) line(l);
-    return;
+    for(std::size_t v = 0; v < f.size(); ++v) line_vertex.push_back(v);
+  } else {
+    const HOT::Mesh_preparation& prep = source->prep;
+    line_vertex = prep.prepared_vertex; // (npos: -1 0 0 0)
+    for(std::size_t p = 0; p < prep.output_index.size(); ++p)
+      if(prep.output_index[p] >= prep.number_of_input_vertices) line_vertex.push_back(p);
   }
-  const HOT::Mesh_preparation& prep = source->prep;
-  for(std::size_t p : prep.prepared_vertex) {
-    if(p == HOT::Mesh_preparation::npos) os << "-1 0 0 0\n";
-    else line(f[p]);
-  }
-  for(std::size_t p = 0; p < prep.output_index.size(); ++p)
-    if(prep.output_index[p] >= prep.number_of_input_vertices) line(f[p]);
+  write_map(os, target_mesh, target_locator, f, line_vertex);
 }
 
 // Writes a mesh read by read_input_mesh() as OFF in the files' addressing (the file's vertices,

@@ -17,7 +17,9 @@
 
 #include <cstdio>
 #include <ostream>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CGAL/disable_warnings.h>
@@ -114,6 +116,9 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
      << "  \"landmark_order_used\": [";
   for(std::size_t i = 0; i < st.landmark_order.size(); ++i)
     os << (i ? ", " : "") << cone_indices[st.landmark_order[i]];
+  os << "],\n  \"landmark_positions_used\": ["; // (the same, as 0-based lines of the landmark file: --order takes them)
+  for(std::size_t i = 0; i < st.landmark_order.size(); ++i)
+    os << (i ? ", " : "") << st.landmark_order[i];
   os << "],\n  \"cone_orders\": ["; // (of the cones of landmark_order_used: cone angle 2 pi / order)
   for(std::size_t i = 0; i < st.cone_orders.size(); ++i)
     os << (i ? ", " : "") << st.cone_orders[i];
@@ -229,42 +234,75 @@ struct Collection_maps
   std::size_t triples = 0;
 };
 
-// Writes the report of `collection`: per mesh (its file, size, embedding time and verdict),
-// the orbifold, the landmark order used, per computed map its time, and the cycle consistency.
-// `mesh_paths[i]` is the file of the collection's mesh i.
+// The entry of mesh i in the report of `collection`: its file, size, embedding time and verdict
+// (and what --repair did), as one JSON object (the collection's jobs write it for the merge).
+inline std::string collection_mesh_entry(std::size_t i, const std::string& mesh_path, std::size_t vertices,
+                                         const HOT::Embedding_statistics& st, const Input_mesh* input = nullptr)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "{\"index\": " << i << ", \"mesh\": \"" << json_escape(mesh_path) << "\", \"vertices\": " << vertices
+     << ", \"embedding_seconds\": " << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate
+     << ", \"iterations\": " << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
+     << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false");
+  if(input && input->repaired) {
+    os << ",\n     \"repair\": ";
+    write_repair_json(os, input->prep, "     ");
+  }
+  os << "}";
+  return os.str();
+}
+
+// What the report of `collection` says: per mesh its entry (collection_mesh_entry()), the
+// orbifold, the landmark order used, per computed map its time, and the cycle consistency.
+struct Collection_report
+{
+  std::vector<std::string> mesh_entries;
+  HOT::Orbifold_type type = HOT::Sphere_type;
+  std::vector<std::size_t> order;
+  std::vector<std::pair<std::pair<std::size_t, std::size_t>, double> > pairs; // ((a, b), seconds), a then b increasing
+  std::size_t triples = 0;
+  double cycle = 0;
+};
+
+// Writes the report of `collection`.
+inline void write_collection_report(std::ostream& os, const Collection_report& r)
+{
+  os.precision(17);
+  os << "{\n  \"meshes\": [\n";
+  for(std::size_t i = 0; i < r.mesh_entries.size(); ++i)
+    os << "    " << r.mesh_entries[i] << (i + 1 < r.mesh_entries.size() ? "," : "") << "\n";
+  os << "  ],\n  \"orbifold\": \"" << (r.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << r.order.size()
+     << ",\n  \"landmark_order_used\": [";
+  for(std::size_t i = 0; i < r.order.size(); ++i) os << (i ? ", " : "") << r.order[i];
+  os << "],\n  \"pairs\": [\n";
+  for(std::size_t p = 0; p < r.pairs.size(); ++p)
+    os << (p ? ",\n" : "") << "    {\"source\": " << r.pairs[p].first.first << ", \"target\": " << r.pairs[p].first.second
+       << ", \"map_seconds\": " << r.pairs[p].second << "}";
+  os << "\n  ],\n  \"triples_checked\": " << r.triples << ",\n  \"cycle_consistency_max_rel_error\": " << r.cycle << "\n}\n";
+}
+
+// Writes the report of `collection` computed in one process: `mesh_paths[i]` is the file of the
+// collection's mesh i.
 template <class Collection>
 void write_collection_report(std::ostream& os, const std::vector<std::string>& mesh_paths, Collection& coll,
                              HOT::Orbifold_type type, const Collection_maps& maps,
                              const std::vector<Input_mesh>* inputs = nullptr)
 {
   const std::size_t N = mesh_paths.size();
-  os.precision(17);
-  os << "{\n  \"meshes\": [\n";
-  for(std::size_t i = 0; i < N; ++i) {
-    const HOT::Embedding_statistics& st = coll.statistics(i);
-    os << "    {\"index\": " << i << ", \"mesh\": \"" << json_escape(mesh_paths[i]) << "\", \"vertices\": "
-       << num_vertices(coll.mesh(i)) << ", \"embedding_seconds\": "
-       << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << ", \"iterations\": "
-       << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
-       << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false");
-    if(inputs && (*inputs)[i].repaired) {
-      os << ",\n     \"repair\": ";
-      write_repair_json(os, (*inputs)[i].prep, "     ");
-    }
-    os << "}" << (i + 1 < N ? "," : "") << "\n";
-  }
-  os << "  ],\n  \"orbifold\": \"" << (type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << coll.order().size()
-     << ",\n  \"landmark_order_used\": [";
-  for(std::size_t i = 0; i < coll.order().size(); ++i) os << (i ? ", " : "") << coll.order()[i];
-  os << "],\n  \"pairs\": [\n";
-  bool first = true;
+  Collection_report r;
+  for(std::size_t i = 0; i < N; ++i)
+    r.mesh_entries.push_back(collection_mesh_entry(i, mesh_paths[i], num_vertices(coll.mesh(i)), coll.statistics(i),
+                                                   inputs ? &(*inputs)[i] : nullptr));
+  r.type = type;
+  r.order = coll.order();
   for(std::size_t a = 0; a < N; ++a)
     for(std::size_t b = 0; b < N; ++b)
-      if(maps.used[a][b]) {
-        os << (first ? "" : ",\n") << "    {\"source\": " << a << ", \"target\": " << b << ", \"map_seconds\": " << coll.map_seconds(a, b) << "}";
-        first = false;
-      }
-  os << "\n  ],\n  \"triples_checked\": " << maps.triples << ",\n  \"cycle_consistency_max_rel_error\": " << maps.cycle << "\n}\n";
+      if(maps.used[a][b])
+        r.pairs.push_back(std::make_pair(std::make_pair(a, b), coll.map_seconds(a, b)));
+  r.triples = maps.triples;
+  r.cycle = maps.cycle;
+  write_collection_report(os, r);
 }
 
 } // namespace hot_tools

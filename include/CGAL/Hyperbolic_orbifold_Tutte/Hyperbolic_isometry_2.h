@@ -86,6 +86,15 @@ public:
   /// the identity
   static Hyperbolic_isometry_2 identity() { return Hyperbolic_isometry_2(); }
 
+  /// the map with coefficients `a` and `b` exactly as given, not rescaled: for coefficients
+  /// of a normalized map read back from a file (written with 17 significant digits they are
+  /// the same numbers, while the constructor's rescaling could change their last bits).
+  /// \pre \f$ |a|^2 - |b|^2 = 1 \f$ up to rounding
+  static Hyperbolic_isometry_2 from_coefficients(const Complex& a, const Complex& b, bool orientation_reversing = false)
+  {
+    return Hyperbolic_isometry_2(a, b, orientation_reversing, Raw());
+  }
+
   /// the rotation about the origin by `angle` (counterclockwise, radians)
   static Hyperbolic_isometry_2 rotation(const FT& angle)
   {

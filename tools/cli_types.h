@@ -1,0 +1,68 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CLI_TYPES_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CLI_TYPES_H
+
+// The mesh types of the command-line program (and of the Python module, which runs its jobs),
+// and reading a job's mesh with its landmarks.
+
+#include "command_line.h"
+#include "io/embedding_obj.h"
+#include "io/prepared_input.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hot_cli {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Surface_mesh;
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
+typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor SM_halfedge;
+typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
+
+typedef Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> UV_map;
+typedef Surface_mesh::Property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> > Chart_map;
+
+// a mesh file read for a job (as is, or prepared with --repair), its addressing by the file's
+// vertices, and the landmarks moved by --snap-landmarks
+struct Input
+{
+  hot_tools::Input_mesh file;
+  std::vector<hot_tools::Landmark_snap_record> snaps;
+};
+
+// reads and checks (or prepares) a mesh and its landmarks (without --repair the same calls as
+// the fuzz target, fuzz/fuzz_mesh_reader.cpp); returns the orbifold type (required or detected)
+inline HOT::Orbifold_type read_mesh_and_landmarks(const std::string& mesh_path, const std::string& cones_path,
+                                           std::optional<HOT::Orbifold_type> required_type,
+                                           const hot_tools::Repair_options& repair, Surface_mesh& m,
+                                           std::vector<SM_vertex>& landmarks, Input& in,
+                                           std::size_t minimum = HOT::minimum_number_of_landmarks)
+{
+  HOT::Mesh_info info;
+  require(hot_tools::read_input_mesh(mesh_path, required_type, repair, m, in.file, &info));
+  require(hot_tools::read_input_landmarks(cones_path, m, in.file, info.type, repair.snap_landmarks, landmarks, &in.snaps, minimum));
+  return info.type;
+}
+
+// the 0-based indices, in the files (the input file's, then the added ones), of vertices of a
+// mesh read by read_mesh_and_landmarks()
+inline std::vector<std::size_t> file_indices(const std::vector<SM_vertex>& vs, const hot_tools::Input_mesh& in)
+{
+  std::vector<std::size_t> r;
+  for(SM_vertex v : vs)
+    r.push_back(hot_tools::output_vertex(v, &in));
+  return r;
+}
+
+} // namespace hot_cli
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CLI_TYPES_H

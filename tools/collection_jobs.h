@@ -1,0 +1,402 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COLLECTION_JOBS_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COLLECTION_JOBS_H
+
+// A collection computed as separate jobs, which may run in different processes or on different
+// machines sharing the output folder (`collection --stage embed|maps --shard I/N`, then
+// `--stage merge`; the Python module's Dask collection):
+//   - an embedding job per mesh: reads it and its landmarks, embeds it with the collection's
+//     cone order (the paper's tour on mesh 0), writes DIR/<i>_<name>.obj and its entry of the
+//     report (DIR/.parts/mesh_<i>.json);
+//   - a map job per pair (a, b) the collection computes: reads the two stored embeddings (no
+//     embedding again), maps a onto b, writes DIR/<a>_to_<b>.map.txt (--all-pairs) and the
+//     map itself for the cycle check (DIR/.parts/map_<a>_<b>.bin) and its time;
+//   - the merge: checks every part is there, computes the cycle consistency over the triples
+//     from the stored maps and embeddings, writes DIR/report.json and removes DIR/.parts.
+// The files are those of the single-process `collection`, byte for byte (report.json apart
+// from its times): the same embedding with the same parameters, maps from embeddings read back
+// exactly (stored_embedding.h), the same writers.
+
+#include "cli_types.h"
+#include "stored_embedding.h"
+#include "io/map_files.h"
+#include "io/reports.h"
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hot_cli {
+
+typedef std::vector<std::pair<std::string, std::string> > Manifest; // (mesh path, cones path) per line
+
+// the manifest's entries, relative paths resolved against the manifest's folder
+inline Manifest read_manifest(const std::string& manifest)
+{
+  std::string manifest_text; // a missing file, a directory etc. get their own reason
+  require(hot_tools::read_file_contents(manifest, manifest_text));
+  std::istringstream in(manifest_text);
+  const std::string base = manifest.find('/') == std::string::npos ? std::string(".") : manifest.substr(0, manifest.find_last_of('/'));
+  auto resolve = [&](const std::string& f) { return (!f.empty() && f[0] == '/') ? f : base + "/" + f; };
+  Manifest entries;
+  std::string line;
+  std::size_t line_no = 0;
+  while(std::getline(in, line)) {
+    ++line_no;
+    const std::size_t hash = line.find('#');
+    if(hash != std::string::npos) line = line.substr(0, hash);
+    std::istringstream ls(line);
+    std::vector<std::string> fields;
+    for(std::string f; ls >> f;)
+      fields.push_back(f);
+    if(fields.empty()) continue;
+    if(fields.size() != 2)
+      throw Failure{HOT::ERROR_READ_FAILED, manifest + ": line " + std::to_string(line_no) + ": expected 'mesh_path cones_path', found " +
+                                            std::to_string(fields.size()) + (fields.size() == 1 ? " field" : " fields")};
+    entries.push_back(std::make_pair(resolve(fields[0]), resolve(fields[1])));
+  }
+  if(entries.size() < 2)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, manifest + ": the manifest lists " + std::to_string(entries.size()) +
+                                              " mesh" + (entries.size() == 1 ? "" : "es") + ", a collection needs at least 2"};
+  return entries;
+}
+
+// the maps a collection computes: over which triples the cycle consistency is measured (all of
+// them up to 6 meshes, else N consecutive ones), and the ordered pairs mapped, without repeats:
+// those of the triples (f_ab, f_ac), then with --all-pairs every ordered pair
+struct Collection_pairs
+{
+  std::vector<std::array<std::size_t, 3> > triples;
+  std::vector<std::pair<std::size_t, std::size_t> > pairs;
+};
+
+inline Collection_pairs collection_pairs(std::size_t N, bool all_pairs)
+{
+  Collection_pairs r;
+  if(N >= 3) {
+    if(N <= 6) {
+      for(std::size_t a = 0; a < N; ++a)
+        for(std::size_t b = 0; b < N; ++b)
+          for(std::size_t c = 0; c < N; ++c)
+            if(a != b && b != c && a != c) r.triples.push_back({{a, b, c}});
+    } else {
+      for(std::size_t a = 0; a < N; ++a) r.triples.push_back({{a, (a + 1) % N, (a + 2) % N}});
+    }
+  }
+  std::vector<std::vector<char> > seen(N, std::vector<char>(N, 0));
+  auto add = [&](std::size_t a, std::size_t b) {
+    if(a != b && !seen[a][b]) {
+      seen[a][b] = 1;
+      r.pairs.emplace_back(a, b);
+    }
+  };
+  for(const auto& t : r.triples) {
+    add(t[0], t[1]);
+    add(t[0], t[2]);
+  }
+  if(all_pairs)
+    for(std::size_t a = 0; a < N; ++a)
+      for(std::size_t b = 0; b < N; ++b) add(a, b);
+  return r;
+}
+
+// what every job of a collection is given
+struct Collection_job
+{
+  std::string manifest_path, dir;
+  Manifest entries;
+  bool all_pairs = false;
+  hot_tools::Repair_options repair;
+  std::vector<int> orders; // --cone-orders, per landmark in the class-wide order (empty: 2 for all)
+
+  std::size_t size() const { return entries.size(); }
+  // <i>_<name>: the name of mesh i's files
+  std::string stem(std::size_t i) const
+  {
+    const std::string& p = entries[i].first;
+    const std::string f = p.substr(p.find_last_of('/') + 1);
+    return std::to_string(i) + "_" + f.substr(0, f.find_last_of('.'));
+  }
+  std::string obj_path(std::size_t i) const { return dir + "/" + stem(i) + ".obj"; }
+  std::string map_path(std::size_t a, std::size_t b) const { return dir + "/" + std::to_string(a) + "_to_" + std::to_string(b) + ".map.txt"; }
+  std::string parts() const { return dir + "/.parts"; }
+  std::string mesh_part(std::size_t i) const { return parts() + "/mesh_" + std::to_string(i) + ".json"; }
+  std::string map_part(std::size_t a, std::size_t b) const { return parts() + "/map_" + std::to_string(a) + "_" + std::to_string(b) + ".bin"; }
+};
+
+inline void make_folder(const std::string& dir)
+{
+  if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
+    throw std::runtime_error("cannot create the folder '" + dir + "'");
+}
+
+// the collection's orbifold, number of landmarks and cone order: mesh 0's type, and the paper's
+// tour on mesh 0 (sphere type), the given order (disk), as Orbifold_collection computes them
+struct Collection_order
+{
+  HOT::Orbifold_type type = HOT::Sphere_type;
+  std::size_t landmarks = 0;
+  std::vector<std::size_t> order;
+};
+
+inline Collection_order collection_order(const Collection_job& job)
+{
+  Surface_mesh m;
+  std::vector<SM_vertex> landmarks;
+  Input in;
+  Collection_order r;
+  r.type = read_mesh_and_landmarks(job.entries[0].first, job.entries[0].second, std::nullopt, job.repair, m, landmarks, in,
+                                   minimum_landmarks(job.orders));
+  r.landmarks = landmarks.size();
+  if(!job.orders.empty() && job.orders.size() != landmarks.size())
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, std::to_string(job.orders.size()) + " cone orders are given for " +
+                                                std::to_string(landmarks.size()) + " landmarks (one per landmark is needed)"};
+  HOT::Status s = r.type == HOT::Sphere_type ? HOT::check_landmark_vertices(m, landmarks, r.type,
+                                                                          job.orders.empty() ? HOT::minimum_number_of_landmarks : 3)
+                                             : HOT::Status();
+  std::vector<SM_vertex> ordered;
+  if(s)
+    s = HOT::internal::order_landmarks(m, get(CGAL::vertex_point, m), landmarks, r.type, HOT::Tsp_order, ordered, r.order);
+  if(!s)
+    throw Failure{s.code, "mesh 0: " + s.message};
+  return r;
+}
+
+// The embedding job of mesh i: DIR/<i>_<name>.obj and DIR/.parts/mesh_<i>.json (its line
+// "reversed 0|1", then its entry of the report). Returns its embedding time.
+inline double embed_collection_mesh(const Collection_job& job, const Collection_order& co, std::size_t i)
+{
+  Surface_mesh m;
+  std::vector<SM_vertex> landmarks;
+  Input in;
+  const std::string& path = job.entries[i].first;
+  const HOT::Orbifold_type type = read_mesh_and_landmarks(path, job.entries[i].second, std::nullopt, job.repair, m, landmarks, in,
+                                                          minimum_landmarks(job.orders));
+  if(type != co.type || landmarks.size() != co.landmarks)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, path + ": its topology or number of landmarks differs from the first mesh's"};
+  if(type == HOT::Sphere_type) {
+    const long long genus = HOT::internal::closed_mesh_genus(m);
+    if(genus > 0)
+      throw Failure{HOT::ERROR_WRONG_TOPOLOGY, path + ": mesh " + std::to_string(i) + " has genus " + std::to_string(genus) +
+                                                 ": collections of closed meshes of genus 1 or more are not built yet; map them in pairs"
+                                                 " along corresponding cut graphs"};
+  }
+  std::vector<SM_vertex> ordered;
+  std::vector<int> cut_orders; // (empty: all 2)
+  for(std::size_t c : co.order) {
+    ordered.push_back(landmarks[c]);
+    if(!job.orders.empty()) cut_orders.push_back(job.orders[c]);
+  }
+  // (as Orbifold_collection::embed() embeds each mesh)
+  const UV_map uv = m.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  const Chart_map charts = m.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
+  HOT::Embedding_statistics st;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    m, ordered, uv,
+    HOT::parameters::cone_orders(cut_orders, HOT::parameters::chart_map(charts, HOT::parameters::orbifold_type(type, HOT::parameters::embedding_statistics(&st)))));
+  if(ec != HOT::OK)
+    throw Failure{ec, path + ": " + st.message};
+  const hot_tools::Input_mesh* addressed = in.file.repaired ? &in.file : nullptr;
+  hot_tools::Embedding_cones cones;
+  cones.type = type;
+  cones.reversed = st.landmark_order_reversed;
+  cones.landmark = co.order;
+  cones.vertex = file_indices(ordered, in.file);
+  cones.order = cut_orders.empty() ? std::vector<int>(co.order.size(), 2) : cut_orders;
+  make_folder(job.dir);
+  make_folder(job.parts());
+  Output_files files;
+  const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
+  files.write(job.obj_path(i), [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, addressed, &ch, &cones); });
+  files.write(job.mesh_part(i), [&](std::ostream& os) {
+    os << "reversed " << (st.landmark_order_reversed ? 1 : 0) << "\n"
+       << hot_tools::collection_mesh_entry(i, path, num_vertices(m), st, &in.file) << "\n";
+  });
+  files.commit();
+  return st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate;
+}
+
+// the map f_ab of a collection from the stored embeddings; a point not located fails
+inline std::vector<Locator::Location> map_stored(const Stored_embedding& A, const Locator& lb, std::size_t a, std::size_t b)
+{
+  std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.chart_isometries, lb);
+  for(std::size_t v = 0; v < f.size(); ++v)
+    if(!f[v].success)
+      throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(v) + " of mesh " + std::to_string(a) +
+                                                    " could not be located on mesh " + std::to_string(b)};
+  return f;
+}
+
+// The map job of the pair (a, b): DIR/<a>_to_<b>.map.txt with --all-pairs, and
+// DIR/.parts/map_<a>_<b>.bin: its time, then per vertex of a its face and barycentric
+// coordinates (the locator's order), in the machine's binary doubles. Returns the map's time.
+inline double map_collection_pair(const Collection_job& job, std::size_t a, std::size_t b)
+{
+  Stored_embedding A, B;
+  read_stored_embedding(job.obj_path(a), A);
+  read_stored_embedding(job.obj_path(b), B);
+  check_stored_pair(A, B);
+  const Locator lb = stored_locator(B);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<Locator::Location> f = map_stored(A, lb, a, b);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  make_folder(job.parts());
+  Output_files files;
+  if(job.all_pairs)
+    files.write(job.map_path(a, b), [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, lb, f, A.line_vertex); });
+  files.write(job.map_part(a, b), [&](std::ostream& os) {
+    const std::uint64_t n = f.size();
+    os.write(reinterpret_cast<const char*>(&seconds), sizeof(double));
+    os.write(reinterpret_cast<const char*>(&n), sizeof(n));
+    for(const Locator::Location& l : f) {
+      const std::uint64_t face = l.face_index;
+      os.write(reinterpret_cast<const char*>(&face), sizeof(face));
+      os.write(reinterpret_cast<const char*>(l.barycentric.data()), 3 * sizeof(double));
+    }
+  });
+  files.commit();
+  return seconds;
+}
+
+// reads a map job's part: its time and the locations (face index and barycentric coordinates)
+inline std::vector<Locator::Location> read_map_part(const Collection_job& job, std::size_t a, std::size_t b, double& seconds)
+{
+  const std::string path = job.map_part(a, b);
+  std::ifstream is(path, std::ios::binary);
+  std::uint64_t n = 0;
+  if(!is.read(reinterpret_cast<char*>(&seconds), sizeof(double)) || !is.read(reinterpret_cast<char*>(&n), sizeof(n)) || n > (std::uint64_t(1) << 40))
+    throw Failure{HOT::ERROR_READ_FAILED, path + ": missing or unreadable: the map of mesh " + std::to_string(a) + " onto mesh " +
+                                            std::to_string(b) + " was not computed (run the maps stage of every shard first)"};
+  std::vector<Locator::Location> f(static_cast<std::size_t>(n));
+  for(Locator::Location& l : f) {
+    std::uint64_t face = 0;
+    if(!is.read(reinterpret_cast<char*>(&face), sizeof(face)) || !is.read(reinterpret_cast<char*>(l.barycentric.data()), 3 * sizeof(double)))
+      throw Failure{HOT::ERROR_READ_FAILED, path + ": truncated"};
+    l.face_index = static_cast<std::size_t>(face);
+    l.success = true;
+  }
+  return f;
+}
+
+// the largest distance, over the vertices x of a, between f_bc(f_ab(x)) and f_ac(x) on c,
+// relative to c's bounding-box diagonal (Orbifold_collection::cycle_consistency_error())
+inline double stored_cycle_error(const Stored_embedding& B, const Stored_embedding& C, const Locator& lb, const Locator& lc,
+                                 const std::vector<Locator::Location>& fab, const std::vector<Locator::Location>& fac,
+                                 std::size_t b, std::size_t c)
+{
+  const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(C.mesh);
+  const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) +
+                                CGAL::square(bb.zmax() - bb.zmin()));
+  const std::size_t nf = num_faces(B.mesh);
+  double worst = 0;
+  for(std::size_t v = 0; v < fab.size(); ++v) {
+    if(fab[v].face_index >= nf || fac[v].face_index >= num_faces(C.mesh))
+      throw Failure{HOT::ERROR_READ_FAILED, "a stored map names a face its target does not have"};
+    const Locator::Location l = lc.locate(lb.disk_point(fab[v]));
+    if(!l.success)
+      throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "a point of mesh " + std::to_string(b) + " could not be located on mesh " + std::to_string(c)};
+    const auto p = HOT::surface_point(l, lc, get(CGAL::vertex_point, C.mesh));
+    const auto q = HOT::surface_point(fac[v], lc, get(CGAL::vertex_point, C.mesh));
+    worst = std::max(worst, std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))) / diag);
+  }
+  return worst;
+}
+
+// The merge: DIR/report.json from the parts, with the cycle consistency over the triples; then
+// DIR/.parts is removed. Returns the report's figures.
+inline hot_tools::Collection_report merge_collection(const Collection_job& job)
+{
+  const std::size_t N = job.size();
+  hot_tools::Collection_report r;
+  int reversed0 = 0;
+  for(std::size_t i = 0; i < N; ++i) {
+    std::string text;
+    if(!hot_tools::read_file_contents(job.mesh_part(i), text))
+      throw Failure{HOT::ERROR_READ_FAILED, job.entries[i].first + ": mesh " + std::to_string(i) +
+                                              " was not embedded (run the embed stage of every shard first)"};
+    const std::size_t eol = text.find('\n');
+    if(text.compare(0, 9, "reversed ") != 0 || eol == std::string::npos || text.size() < eol + 2)
+      throw Failure{HOT::ERROR_READ_FAILED, job.mesh_part(i) + ": malformed"};
+    const int reversed = text[9] == '1' ? 1 : 0;
+    if(i == 0) reversed0 = reversed;
+    else if(reversed != reversed0)
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, job.entries[i].first + ": its landmarks run around the boundary the other way than the first"
+                                                  " mesh's: the correspondence would reverse orientation"};
+    r.mesh_entries.push_back(text.substr(eol + 1, text.size() - eol - 2));
+  }
+  Stored_embedding first;
+  read_stored_embedding(job.obj_path(0), first);
+  r.type = first.cones.type;
+  r.order = first.cones.landmark;
+  const Collection_pairs cp = collection_pairs(N, job.all_pairs);
+  std::vector<std::vector<double> > seconds(N, std::vector<double>(N, -1));
+  // the triples, grouped by their source (the maps of one source read once)
+  std::vector<std::unique_ptr<Stored_embedding> > stored(N);
+  std::vector<std::unique_ptr<Locator> > locators(N);
+  auto locator = [&](std::size_t i) -> const Locator& {
+    if(!locators[i]) {
+      stored[i].reset(new Stored_embedding);
+      read_stored_embedding(job.obj_path(i), *stored[i]);
+      locators[i].reset(new Locator(stored_locator(*stored[i])));
+    }
+    return *locators[i];
+  };
+  std::vector<std::vector<std::vector<Locator::Location> > > maps(N);
+  auto stored_map = [&](std::size_t a, std::size_t b) -> const std::vector<Locator::Location>& {
+    if(maps[a].empty()) maps[a].resize(N);
+    if(maps[a][b].empty()) maps[a][b] = read_map_part(job, a, b, seconds[a][b]);
+    return maps[a][b];
+  };
+  std::size_t current = N;
+  for(const auto& t : cp.triples) {
+    if(t[0] != current) { // (a new source: the previous one's maps are no longer needed)
+      if(current < N) maps[current].clear();
+      current = t[0];
+    }
+    const auto& fab = stored_map(t[0], t[1]);
+    const auto& fac = stored_map(t[0], t[2]);
+    const Locator& lb = locator(t[1]);
+    const Locator& lc = locator(t[2]);
+    r.cycle = std::max(r.cycle, stored_cycle_error(*stored[t[1]], *stored[t[2]], lb, lc, fab, fac, t[1], t[2]));
+    ++r.triples;
+  }
+  for(const auto& p : cp.pairs)
+    if(seconds[p.first][p.second] < 0)
+      read_map_part(job, p.first, p.second, seconds[p.first][p.second]);
+  for(std::size_t a = 0; a < N; ++a)
+    for(std::size_t b = 0; b < N; ++b)
+      if(seconds[a][b] >= 0) r.pairs.push_back(std::make_pair(std::make_pair(a, b), seconds[a][b]));
+  Output_files files;
+  files.write(job.dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, r); });
+  files.commit();
+  for(std::size_t i = 0; i < N; ++i) std::remove(job.mesh_part(i).c_str());
+  for(const auto& p : cp.pairs) std::remove(job.map_part(p.first, p.second).c_str());
+  rmdir(job.parts().c_str());
+  return r;
+}
+
+} // namespace hot_cli
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COLLECTION_JOBS_H
