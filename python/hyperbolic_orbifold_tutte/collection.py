@@ -1,0 +1,169 @@
+# Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Collections: every mesh of a manifest embedded once, the maps between them computed from the
+stored embeddings, the cycle consistency measured, in threads of this process or as tasks of a
+Dask cluster. The files are those of the command line's `collection`, byte for byte (report.json
+apart from its times)."""
+
+import json as _json
+import os as _os
+import shutil as _shutil
+import sys as _sys
+import time as _time
+import uuid as _uuid
+from concurrent.futures import ThreadPoolExecutor as _ThreadPoolExecutor
+
+from . import _core
+
+
+def _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks):
+    return dict(manifest=_os.fspath(manifest), out_dir=_os.fspath(out_dir), all_pairs=bool(all_pairs),
+                cone_orders=None if cone_orders is None else [int(p) for p in cone_orders],
+                repair=bool(repair), max_hole=float(max_hole), largest_component=bool(largest_component),
+                snap_landmarks=bool(snap_landmarks))
+
+
+# The tasks (top-level functions: a Dask worker imports them by name). The map tasks take the
+# results of the embedding tasks of their two meshes only to run after them.
+
+def _embed_task(i, orbifold, landmarks, order, options):
+    return _core.collection_embed(i, orbifold, landmarks, order, **options)
+
+
+def _map_task(a, b, options, *after):
+    return _core.collection_map(a, b, **options)
+
+
+def _merge_task(options, *after):
+    return _core.collection_merge(**options)
+
+
+class _Progress:
+    """Lines on stderr as the command line prints them: every mesh embedded, every 5% of the maps."""
+
+    def __init__(self, enabled, meshes, pairs):
+        self.enabled = enabled
+        self.meshes, self.pairs = meshes, pairs
+        self.embedded = self.mapped = 0
+        self.t0 = _time.monotonic()
+
+    def embedding_done(self, i, seconds):
+        self.embedded += 1
+        if self.enabled:
+            print("  embedded %d/%d: %s (%.3g s)" % (self.embedded, len(self.meshes), self.meshes[i][0], seconds),
+                  file=_sys.stderr, flush=True)
+
+    def map_done(self, a, b, seconds):
+        self.mapped += 1
+        n = len(self.pairs)
+        if self.enabled and (self.mapped == n or self.mapped % max(1, n // 20) == 0):
+            print("  mapped %d/%d pairs (last: %d -> %d, %.3g s; %.1f s so far)"
+                  % (self.mapped, n, a, b, seconds, _time.monotonic() - self.t0), file=_sys.stderr, flush=True)
+
+
+def _run_in_threads(plan, options, threads, progress):
+    order = (plan["orbifold"], plan["landmarks"], list(plan["order"]))
+    with _ThreadPoolExecutor(max_workers=threads or _os.cpu_count() or 1) as pool:
+        futures = {pool.submit(_embed_task, i, *order, options): i for i in range(len(plan["meshes"]))}
+        _drain(futures, progress.embedding_done)
+        futures = {pool.submit(_core.collection_map, a, b, **options): (a, b) for a, b in plan["pairs"]}
+        _drain(futures, lambda ab, seconds: progress.map_done(ab[0], ab[1], seconds))
+    return _core.collection_merge(**options)
+
+
+def _drain(futures, done):
+    """done(what, result) as each future ends; the first failure cancels the others and raises"""
+    from concurrent.futures import as_completed
+    try:
+        for f in as_completed(futures):
+            done(futures[f], f.result())
+    except BaseException:
+        for g in futures:
+            g.cancel()
+        raise
+
+
+def _run_on_dask(plan, options, client, progress):
+    import distributed
+    token = _uuid.uuid4().hex[:8]
+    order = (plan["orbifold"], plan["landmarks"], list(plan["order"]))
+    embeds = [client.submit(_embed_task, i, *order, options, key="hot-embed-%d-%s" % (i, token), pure=False)
+              for i in range(len(plan["meshes"]))]
+    maps = [client.submit(_map_task, a, b, options, embeds[a], embeds[b], key="hot-map-%d-%d-%s" % (a, b, token), pure=False)
+            for a, b in plan["pairs"]]
+    what = {f.key: ("embed", i) for i, f in enumerate(embeds)}
+    what.update({f.key: ("map", p) for p, f in zip(plan["pairs"], maps)})
+    try:
+        for f in distributed.as_completed(embeds + maps):
+            kind, x = what[f.key]
+            seconds = f.result()  # (raises the task's hot.Error)
+            if kind == "embed":
+                progress.embedding_done(x, seconds)
+            else:
+                progress.map_done(x[0], x[1], seconds)
+        return client.submit(_merge_task, options, *maps, key="hot-merge-" + token, pure=False).result()
+    except BaseException:
+        client.cancel(embeds + maps)
+        raise
+
+
+def collection(manifest, out_dir, all_pairs=False, client=None, cone_orders=None, repair=False, max_hole=0.5,
+               largest_component=False, snap_landmarks=False, threads=None, progress=True):
+    """collection(manifest, out_dir, all_pairs=False, client=None, ...) -> dict (report.json)
+
+    Embeds every mesh of `manifest` (lines `mesh_path cones_path`, relative paths against the
+    manifest's folder; landmark i of every mesh is the same feature) into one orbifold with one
+    cone order (the paper's tour on the first mesh), maps the meshes onto each other, measures
+    the cycle consistency, and writes the command line's `collection` files into `out_dir`:
+    <i>_<name>.obj per mesh, with all_pairs <a>_to_<b>.map.txt per ordered pair, and
+    report.json, which it returns as a dict.
+
+    Each mesh is embedded once, by one task that writes its OBJ file; each map is a task that
+    reads the two stored embeddings (no embedding again); a last task measures the cycle
+    consistency and writes report.json. They run in `threads` threads of this process
+    (default: one per core; the computations release the GIL), or, given a
+    dask.distributed.Client, as tasks of its cluster (local or on a batch scheduler or
+    Kubernetes): out_dir must then be a folder every worker sees (a shared file system), the
+    manifest's files too, and the workers must import this package. The files are the same,
+    byte for byte, as the command line's (report.json apart from its times).
+
+    cone_orders: the order p of every landmark's cone (angle 2 pi/p), in the manifest's
+    landmark order (default: 2 for all); repair, max_hole, largest_component, snap_landmarks:
+    the command line's --repair options. progress: a line on stderr per mesh embedded and
+    every 5% of the maps. A failure raises hot.Error (the first one, naming the mesh), and the
+    files this call wrote are removed.
+    """
+    options = _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks)
+    plan = _core.collection_plan(**options)
+    out = options["out_dir"]
+    before = set(_os.listdir(out)) if _os.path.isdir(out) else None
+    report = _Progress(progress, plan["meshes"], plan["pairs"])
+    try:
+        if client is None:
+            _run_in_threads(plan, options, threads, report)
+        else:
+            _run_on_dask(plan, options, client, report)
+    except BaseException:
+        _remove_new_files(out, before)
+        raise
+    with open(_os.path.join(out, "report.json")) as f:
+        return _json.load(f)
+
+
+def _remove_new_files(out, before):
+    """the files a failed collection wrote (none is left half-written: each is renamed when complete)"""
+    if not _os.path.isdir(out):
+        return
+    if before is None:
+        _shutil.rmtree(out, ignore_errors=True)
+        return
+    for name in set(_os.listdir(out)) - before:
+        path = _os.path.join(out, name)
+        if _os.path.isdir(path):
+            _shutil.rmtree(path, ignore_errors=True)
+        else:
+            try:
+                _os.remove(path)
+            except OSError:
+                pass
+    _shutil.rmtree(_os.path.join(out, ".parts"), ignore_errors=True)

@@ -1,0 +1,126 @@
+# Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""hot.collection(): in threads and on a Dask LocalCluster of two worker processes, the files of
+the command line's `collection`, byte for byte (report.json apart from its times)."""
+
+import json
+import os
+import re
+
+import numpy as np
+import pytest
+
+import hyperbolic_orbifold_tutte as hot
+from hot_testing import read_off, run_cli
+
+
+def write_off(path, V, F):
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
+        for p in V:
+            f.write("%.9g %.9g %.9g\n" % tuple(p))
+        for t in F:
+            f.write("3 %d %d %d\n" % tuple(t))
+
+
+@pytest.fixture(scope="module")
+def hands(tmp_path_factory, meshes, cli):
+    """hand.off and three smooth deformations of it (same triangulation, same 9 landmarks), and
+    the command line's collection of them with all pairs"""
+    d = tmp_path_factory.mktemp("hands")
+    V, F = read_off(os.path.join(meshes, "hand.off"))
+    x, y, z = V[:, 0], V[:, 1], V[:, 2]
+    shapes = {
+        "a": V,
+        "b": np.stack([x + 0.1 * np.sin(3 * y), y, 1.2 * z], axis=1),
+        "c": np.stack([0.9 * x, y + 0.05 * np.cos(4 * 0.9 * x), z], axis=1),
+        "e": np.stack([x, 1.1 * y, z + 0.05 * np.sin(2 * x)], axis=1),
+    }
+    for name, W in shapes.items():
+        write_off(d / ("hand_%s.off" % name), W, F)
+    run_cli(cli, "landmarks", "--mesh", d / "hand_a.off", "--count", 9, "--out", d / "cones.txt")
+    manifest = d / "list.txt"
+    manifest.write_text("".join("hand_%s.off cones.txt\n" % n for n in shapes))
+    run_cli(cli, "collection", "--manifest", manifest, "--out", d / "cli", "--all-pairs")
+    return d, manifest, len(V)
+
+
+def without_times(text):
+    return re.sub(r'"(embedding_seconds|map_seconds)": [0-9.e+-]+', r'"\1": T', text)
+
+
+def assert_same_files(cli_dir, dir2):
+    names = sorted(os.listdir(cli_dir))
+    assert names == sorted(os.listdir(dir2)), "other files than the command line's"
+    for name in names:
+        a = open(os.path.join(cli_dir, name), "rb").read()
+        b = open(os.path.join(dir2, name), "rb").read()
+        if name == "report.json":
+            assert without_times(a.decode()) == without_times(b.decode()), "report.json differs beyond its times"
+        else:
+            assert a == b, "%s differs from the command line's" % name
+
+
+def check_report(report, out, n_vertices):
+    assert report == json.load(open(os.path.join(out, "report.json")))
+    assert len(report["meshes"]) == 4 and all(m["bijective"] for m in report["meshes"])
+    assert all(m["vertices"] == n_vertices for m in report["meshes"])
+    assert report["triples_checked"] == 24  # every ordered triple of 4 distinct meshes
+    assert len(report["pairs"]) == 12       # every ordered pair
+    # the maps are cycle consistent (the paper's section 7): f_bc(f_ab(x)) = f_ac(x) up to rounding
+    assert report["cycle_consistency_max_rel_error"] < 1e-9
+
+
+def test_collection_in_threads_is_the_command_lines(hands):
+    d, manifest, nv = hands
+    out = d / "threads"
+    report = hot.collection(manifest, out, all_pairs=True, threads=2, progress=False)
+    assert_same_files(d / "cli", out)
+    check_report(report, out, nv)
+    assert len([n for n in os.listdir(out) if n.endswith(".map.txt")]) == 12
+    for n in os.listdir(out):
+        if n.endswith(".map.txt"):
+            assert sum(1 for _ in open(out / n)) == nv  # one line per vertex of the source
+
+
+def test_collection_on_a_dask_local_cluster_is_the_command_lines(hands, capsys):
+    import distributed  # (Debian's python3-distributed, installed by scripts/install-deps.sh)
+    d, manifest, nv = hands
+    out = d / "dask"
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        assert len(client.scheduler_info()["workers"]) == 2
+        report = hot.collection(manifest, out, all_pairs=True, client=client)
+        # one embedding task per mesh, one map task per pair: none embeds again
+        log = capsys.readouterr().err
+        assert log.count("  embedded ") == 4
+        assert "mapped 12/12 pairs" in log
+        # a failure in a task comes back as hot.Error, naming the mesh, and leaves no file
+        bad = d / "bad.txt"
+        bad.write_text("hand_a.off cones.txt\nmissing.off cones.txt\nhand_b.off cones.txt\n")
+        with pytest.raises(hot.Error, match="missing.off"):
+            hot.collection(bad, d / "dask_bad", client=client, progress=False)
+        assert not os.path.exists(d / "dask_bad") or os.listdir(d / "dask_bad") == []
+    assert_same_files(d / "cli", out)
+    check_report(report, out, nv)
+
+
+def test_collection_errors(hands):
+    d, manifest, nv = hands
+    with pytest.raises(hot.Error, match="no such file"):
+        hot.collection(d / "none.txt", d / "o1", progress=False)
+    one = d / "one.txt"
+    one.write_text("hand_a.off cones.txt\n")
+    with pytest.raises(hot.Error, match="at least 2"):
+        hot.collection(one, d / "o2", progress=False)
+    five = d / "five.txt"
+    five.write_text("1 2 3 4 5\n")
+    other = d / "other.txt"
+    other.write_text("hand_a.off cones.txt\nhand_b.off five.txt\n")
+    with pytest.raises(hot.Error, match="differs from the first mesh"):
+        hot.collection(other, d / "o3", progress=False)
+    assert not os.path.exists(d / "o3")  # nothing left behind
+    with pytest.raises(hot.Error, match="cone_orders"):
+        hot.collection(manifest, d / "o4", cone_orders=[2, 1], progress=False)
+    with pytest.raises(hot.Error, match="needs repair"):
+        hot.collection(manifest, d / "o5", largest_component=True, progress=False)
