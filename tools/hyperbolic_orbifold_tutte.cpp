@@ -85,7 +85,10 @@ const char* const usage_text =
   "      Vertices of A the map cannot resolve (in a protrusion without a landmark, squeezed by\n"
   "      both embeddings below their disagreement) get a one-line warning on stderr;\n"
   "      REPORT.json lists them (\"unreliable_vertices\", numbered as MAP.txt's lines), with\n"
-  "      the squeezed regions, the sizes and the times\n"
+  "      the squeezed regions, the sizes and the times, and the map's per-face distortion\n"
+  "      (\"distortion\": percentiles 50, 90, 99, max and mean of the conformal distortion\n"
+  "      sigma1/sigma2 and of the area distortion sigma1 sigma2 / (area(f(A))/area(A)) over\n"
+  "      A's faces, and the count of degenerate faces; infinity is written \"inf\")\n"
   "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [REPAIR]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
   "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt)\n"
@@ -649,6 +652,9 @@ int run_map(int argc, char** argv)
   hot_tools::Map_summary summary = map_summary(opt, A, B, k, reliability);
   summary.seconds_map = std::chrono::duration<double>(t1 - t0).count();
   summary.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
+  summary.distortion = HOT::map_distortion(A.mesh, B.mesh, locB, f);
+  summary.seconds_distortion = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
   Output_files files;
   files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, addressing(A.in)); });
   if(opt.has("report"))
