@@ -401,6 +401,44 @@ case "$case_name" in
       --target-cones "$tmp/c.cones" --out "$tmp/m2.txt" --report "$tmp/nodir/r.json"
     [ ! -e "$tmp/m2.txt" ] || fail "MAP.txt left behind when the report cannot be written"
     echo "ok ($count of $nv source vertices listed)" ;;
+  map_distortion)
+    # the report's per-face distortion ("distortion"): a mesh onto the same file with the same
+    # landmarks maps every vertex onto itself, so every face has sigma1 = sigma2 = 1: conformal
+    # and area distortion 1 on every face; onto a copy scaled by 2 (exact in binary: the same
+    # embedding bit for bit) the images are the scaled vertices: conformal 1, and area 1 since it
+    # is normalised by the ratio of the total areas (unnormalised it would be 4)
+    command -v python3 >/dev/null || fail "python3 is needed to read the report"
+    src="$data/meshes/hand.off"
+    "$prog" landmarks --mesh "$src" --count 7 --out "$tmp/hand.cones" >/dev/null || fail "landmarks"
+    # (OFF: the header line, the counts, the vertices, the faces; blank and comment lines kept)
+    awk '/^[ \t]*(#|$)/ { print; next } { k++ } k == 2 { n = $1 } k > 2 && k <= 2 + n { printf "%.17g %.17g %.17g\n", 2 * $1, 2 * $2, 2 * $3; next } { print }' \
+      "$src" > "$tmp/hand2.off"
+    [ "$(grep -c '' "$tmp/hand2.off")" -eq "$(grep -c '' "$src")" ] || fail "the scaled copy"
+    nf=$(sed -n 2p "$src" | awk '{print $2}')
+    for target in "$src" "$tmp/hand2.off"; do
+      "$prog" map --source "$src" --source-cones "$tmp/hand.cones" --target "$target" --target-cones "$tmp/hand.cones" \
+        --out "$tmp/m.txt" --report "$tmp/r.json" >/dev/null || fail "map onto $target"
+      python3 - "$tmp/r.json" "$nf" <<'PY' || fail "distortion of the map onto $target"
+import json, sys
+r = json.load(open(sys.argv[1]))
+nf = int(sys.argv[2])
+d = r["distortion"]
+for k in ("source", "target", "source_vertices", "target_vertices", "time_seconds", "squeezed_regions",
+          "unreliable_vertex_count", "unreliable_vertices"):
+    assert k in r, "key %s is gone" % k
+for k in ("embedding_source", "embedding_target", "map", "reliability", "distortion"):
+    assert isinstance(r["time_seconds"][k], float) or isinstance(r["time_seconds"][k], int), "time_seconds." + k
+for fig in ("conformal", "area"):
+    for k in ("p50", "p90", "p99", "max", "mean"):
+        v = d[fig][k]
+        assert isinstance(v, (int, float)), "%s.%s = %r is not a number" % (fig, k, v)
+        assert abs(v - 1) <= 1e-9, "%s.%s = %r, not 1" % (fig, k, v)
+assert d["degenerate_faces"] == 0, d
+assert d["faces"] == nf, (d["faces"], nf)
+print("distortion: conformal max %.17g, area max %.17g over %d faces" % (d["conformal"]["max"], d["area"]["max"], d["faces"]))
+PY
+    done
+    echo ok ;;
   collection)
     # hand.off and two smooth deformations of it (same triangulation, same landmarks)
     nv=$(awk 'NR==2 {print $1}' "$data/meshes/hand.off")
@@ -472,6 +510,8 @@ case "$case_name" in
     "$prog" map --source-embedding "$tmp/a.obj" --target-embedding "$tmp/b.obj" --out "$tmp/s.txt" --report "$tmp/s.json" >/dev/null || fail "map from stored embeddings"
     cmp -s "$tmp/m.txt" "$tmp/s.txt" || fail "the map from stored embeddings differs from map's"
     grep -q '"unreliable_vertex_count": 0' "$tmp/s.json" || fail "report"
+    "$prog" map --source "$off" --source-cones "$tmp/c.txt" --target "$tmp/bent.off" --target-cones "$tmp/c.txt" --out "$tmp/m.txt" --report "$tmp/m.json" >/dev/null || fail "map --report"
+    [ "$(grep -o '"distortion": {.*}' "$tmp/s.json")" = "$(grep -o '"distortion": {.*}' "$tmp/m.json")" ] || fail "the stored map's distortion differs from map's"
     # another cone order: refused
     rev=$(echo "$pos" | tr ',' '\n' | tac | paste -sd, -)
     "$prog" embed --mesh "$tmp/bent.off" --cones "$tmp/c.txt" --order "$rev" --out "$tmp/r.obj" >/dev/null || fail "embed --order $rev"

@@ -90,11 +90,14 @@ const char* const usage_text =
   "      Vertices of A the map cannot resolve (in a protrusion without a landmark, squeezed by\n"
   "      both embeddings below their disagreement) get a one-line warning on stderr;\n"
   "      REPORT.json lists them (\"unreliable_vertices\", numbered as MAP.txt's lines), with\n"
-  "      the squeezed regions, the sizes and the times\n"
+  "      the squeezed regions, the sizes and the times, and the map's per-face distortion\n"
+  "      (\"distortion\": percentiles 50, 90, 99, max and mean of the conformal distortion\n"
+  "      sigma1/sigma2 and of the area distortion sigma1 sigma2 / (area(f(A))/area(A)) over\n"
+  "      A's faces, and the count of degenerate faces; infinity is written \"inf\")\n"
   "  hyperbolic_orbifold_tutte map --source-embedding A.obj --target-embedding B.obj --out MAP.txt [--report REPORT.json]\n"
   "      the same map from two embeddings stored by embed or collection (no embedding again):\n"
-  "      they must put the same landmarks at the same cones (embed B with --order given and\n"
-  "      its landmarks listed in A's landmark_order_used); MAP.txt has one line per v line of A.obj\n"
+  "      they must put the same landmarks at the same cones (embed B with --order set to A's\n"
+  "      \"landmark_positions_used\"); MAP.txt has one line per v line of A.obj; REPORT.json as map's\n"
   "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [REPAIR]\n"
   "      [--stage embed|maps|merge [--shard I/N]]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
@@ -676,6 +679,9 @@ int run_map_stored(const Options& opt)
     m.region_vertices.emplace_back(A.vertex_line[g.source_vertex], B.vertex_line[g.target_vertex]);
   m.seconds_map = std::chrono::duration<double>(t1 - t0).count();
   m.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
+  m.distortion = HOT::map_distortion(A.mesh, B.mesh, locB, f);
+  m.seconds_distortion = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
   Output_files files;
   files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, A.line_vertex); });
   if(opt.has("report"))
@@ -730,6 +736,9 @@ int run_map(int argc, char** argv)
   hot_tools::Map_summary summary = map_summary(opt, A, B, k, reliability);
   summary.seconds_map = std::chrono::duration<double>(t1 - t0).count();
   summary.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
+  summary.distortion = HOT::map_distortion(A.mesh, B.mesh, locB, f);
+  summary.seconds_distortion = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
   Output_files files;
   files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, addressing(A.in)); });
   if(opt.has("report"))

@@ -11,10 +11,12 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/map_distortion.h>
 
 #include <cstddef>
 #include "prepared_input.h"
 
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -170,9 +172,35 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
      << ", \"expected_area\": " << c.expected_area << "}\n}\n";
 }
 
-// what `map` did, as its report gives it: the files, the sizes, the landmarks, the times, and
-// the vertices whose image cannot be trusted (map_reliability()); vertex numbers are those of
-// the files (with --repair: the input file's vertices, then the added ones, as MAP.txt)
+// a number of a report: JSON has no infinity, so +infinity is written as the string "inf"
+// (-infinity as "-inf", NaN as null)
+inline void write_json_number(std::ostream& os, double x)
+{
+  if(std::isnan(x)) os << "null";
+  else if(std::isinf(x)) os << (x > 0 ? "\"inf\"" : "\"-inf\"");
+  else os << x;
+}
+
+// `{"p50": .., "p90": .., "p99": .., "max": .., "mean": ..}`
+inline void write_distortion_summary_json(std::ostream& os, const HOT::Distortion_summary& s)
+{
+  os << "{\"p50\": ";
+  write_json_number(os, s.p50);
+  os << ", \"p90\": ";
+  write_json_number(os, s.p90);
+  os << ", \"p99\": ";
+  write_json_number(os, s.p99);
+  os << ", \"max\": ";
+  write_json_number(os, s.max);
+  os << ", \"mean\": ";
+  write_json_number(os, s.mean);
+  os << "}";
+}
+
+// what `map` did, as its report gives it: the files, the sizes, the landmarks, the times, the
+// vertices whose image cannot be trusted (map_reliability()) and the per-face distortion
+// (map_distortion()); vertex numbers are those of the files (with --repair: the input file's
+// vertices, then the added ones, as MAP.txt)
 struct Map_summary
 {
   std::string source_path, target_path;
@@ -186,6 +214,9 @@ struct Map_summary
   // per squeezed region of the source: its report, with its collapse vertices as file numbers
   std::vector<HOT::Squeezed_region> regions;
   std::vector<std::pair<std::size_t, std::size_t> > region_vertices;
+  // the distortion of the map over the faces of the source (prepared, with --repair) and its time
+  HOT::Map_distortion distortion;
+  double seconds_distortion = 0;
 };
 
 // Writes the report of `map`.
@@ -206,7 +237,15 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
     os << ",\n";
   }
   os << "  \"time_seconds\": {\"embedding_source\": " << m.seconds_source << ", \"embedding_target\": " << m.seconds_target
-     << ", \"map\": " << m.seconds_map << ", \"reliability\": " << m.seconds_reliability << "},\n"
+     << ", \"map\": " << m.seconds_map << ", \"reliability\": " << m.seconds_reliability
+     << ", \"distortion\": " << m.seconds_distortion << "},\n";
+  // per-face distortion summaries (infinity as "inf"), the faces measured, the degenerate ones
+  os << "  \"distortion\": {\"conformal\": ";
+  write_distortion_summary_json(os, m.distortion.conformal_summary);
+  os << ",\n                 \"area\": ";
+  write_distortion_summary_json(os, m.distortion.area_summary);
+  os << ",\n                 \"faces\": " << m.distortion.conformal_summary.number_of_faces
+     << ", \"degenerate_faces\": " << m.distortion.number_of_degenerate_faces() << "},\n"
      << "  \"squeezed_regions\": [";
   for(std::size_t i = 0; i < m.regions.size(); ++i) {
     const HOT::Squeezed_region& r = m.regions[i];
