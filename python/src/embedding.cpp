@@ -33,25 +33,6 @@ namespace hot_python {
 // embed
 // ---------------------------------------------------------------------------------------
 
-// what embed() is asked for, besides the mesh and the landmarks
-struct Embed_options
-{
-  std::optional<HOT::Orbifold_type> type; // std::nullopt: from the mesh
-  std::string weights = "cotan";          // cotan, mvc, uniform
-  std::string order = "auto";             // auto (the type's default), tsp, given, explicit
-  std::vector<std::size_t> explicit_order; // order == "explicit": positions in the landmarks
-  std::vector<int> cone_orders;           // per landmark as given (empty: 2 for all)
-  bool recentre = false;
-  bool has_cut_graph = false;
-  std::vector<std::vector<std::size_t> > cut_graph; // vertex paths (genus g >= 1)
-  std::string name;                       // the report's "mesh"
-};
-
-namespace {
-
-// Computes the embedding of the mesh (V, F) with the landmarks `ids` (vertex indices), as the
-// command line's `embed` does (run_embed()): the mesh read and checked, the landmarks checked
-// against it, the same job given to hot_cli::embed_mesh(). Runs without the GIL.
 Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64_t* F, std::size_t m, std::size_t k,
                                 const std::vector<std::size_t>& ids, const Embed_options& opt)
 {
@@ -159,6 +140,8 @@ Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64
     }
   return e;
 }
+
+namespace {
 
 Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, const std::string& weights,
                     py::handle order, py::handle cone_orders, bool recentre, py::handle cut_graph, const std::string& name)
@@ -425,12 +408,10 @@ void check_map_pair(const Embedding& A, const Embedding& B)
                                      "the correspondence would reverse orientation");
 }
 
-// the command line's map (run_map()): every vertex of A located on B, and its barycentric
-// coordinates w.r.t. the vertices of the face in F's order (hot_tools::input_order_barycentric(),
-// as write_map() writes them); with `unreliable`, the vertices of A whose images the map cannot
-// resolve (HOT::map_reliability(), the report's "unreliable_vertices")
+} // namespace
+
 void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int64_t>& faces, std::vector<double>& bary,
-                    std::vector<std::int64_t>* unreliable = nullptr)
+                    std::vector<std::int64_t>* unreliable)
 {
   check_map_pair(A, B);
   const Locator locB = target_locator(B);
@@ -451,6 +432,8 @@ void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int
     unreliable->assign(r.unreliable_vertices.begin(), r.unreliable_vertices.end());
   }
 }
+
+namespace {
 
 py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable)
 {

@@ -16,6 +16,8 @@
 //   register_embedding (embed, Embedding), register_maps (map)      embedding.cpp
 //   register_collection, register_distortion                        (to come: their own files,
 //                                                                    declared here, called from module.cpp)
+// compute_embedding() and map_embeddings() (embedding.cpp) are the embed and map of the module
+// without Python, for those areas to reuse (an Embedding_ptr is the Python class Embedding).
 
 // the mesh's header first: Seam_mesh calls CGAL::halfedges(tm) etc. qualified
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -160,6 +162,36 @@ struct Embedding
 };
 
 typedef std::shared_ptr<Embedding> Embedding_ptr;
+
+// what embed() is asked for, besides the mesh and the landmarks
+struct Embed_options
+{
+  std::optional<HOT::Orbifold_type> type; // std::nullopt: from the mesh
+  std::string weights = "cotan";          // cotan, mvc, uniform
+  std::string order = "auto";             // auto (the type's default), tsp, given, explicit
+  std::vector<std::size_t> explicit_order; // order == "explicit": positions in the landmarks
+  std::vector<int> cone_orders;           // per landmark as given (empty: 2 for all)
+  bool recentre = false;
+  bool has_cut_graph = false;
+  std::vector<std::vector<std::size_t> > cut_graph; // vertex paths (genus g >= 1)
+  std::string name;                       // the report's "mesh"
+};
+
+// Computes the embedding of the mesh (V, F) (n x 3, m x k arrays) with the landmarks `ids`
+// (vertex indices), as the command line's `embed` does (run_embed()): the mesh read and checked,
+// the landmarks checked against it, the same job given to hot_cli::embed_mesh(). Does not need
+// the GIL. Failures throw Hot_error.
+Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64_t* F, std::size_t m, std::size_t k,
+                                const std::vector<std::size_t>& ids, const Embed_options& opt);
+
+// The command line's map (run_map()) of two embeddings, checked to be of one orbifold with
+// corresponding cones: every vertex of A located on B (`faces`, indices in B's F) and its
+// barycentric coordinates w.r.t. the vertices of that face in F's order (`bary`, 3 per vertex,
+// hot_tools::input_order_barycentric(), as write_map() writes them); with `unreliable`, the
+// vertices of A whose images the map cannot resolve (HOT::map_reliability(), the map report's
+// "unreliable_vertices"). Does not need the GIL. Failures throw Hot_error.
+void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int64_t>& faces, std::vector<double>& bary,
+                    std::vector<std::int64_t>* unreliable = nullptr);
 
 // ---------------------------------------------------------------------------------------
 // registration, one function per area (module.cpp calls them)

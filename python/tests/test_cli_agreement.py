@@ -214,3 +214,29 @@ def test_charts_and_unreliable_vertices_as_the_cli(cli, source_dir, work):
     with open(work / "capsule_map.json") as f:
         report = json.load(f)
     assert list(unreliable) == report["unreliable_vertices"]
+
+
+def test_recentring_as_the_cli(cli, source_dir, work):
+    """a capsule of length 50 without a landmark at its far end: refused in the tile with the
+    library's reason, embedded with recentre=True in a moved frame as `embed --recentre`"""
+    capsule = work / "tube.off"
+    with open(capsule, "w") as out, open(work / "tube.cones", "w") as err:
+        subprocess.run(["awk", "-v", "L=50", "-v", "S=24", "-f", os.path.join(source_dir, "test", "capsule.awk")], stdout=out,
+                       stderr=err, check=True)
+    run_cli(cli, "embed", "--mesh", capsule, "--cones", work / "tube.cones", "--out", work / "tube.obj", "--recentre",
+            "--report", work / "tube.json")
+    V, F = hot.read_mesh(capsule)
+    lm = read_cones(work / "tube.cones")
+    with pytest.raises(hot.Error) as info:
+        hot.embed(V, F, lm)
+    assert info.value.code == "ERROR_NO_1_TO_1_MAPPING"
+    assert "below what double resolves" in str(info.value) and "recentring" in str(info.value)
+    e = hot.embed(V, F, lm, recentre=True)
+    assert e.recentred and e.report["recentred"] is True
+    with open(work / "tube.json") as f:
+        assert e.report["frame"] == json.load(f)["frame"]
+    e.write_obj(work / "tube_module.obj")
+    assert (work / "tube_module.obj").read_bytes() == (work / "tube.obj").read_bytes()
+    with pytest.raises(hot.Error) as info:
+        hot.map(e, e)
+    assert "recentred" in str(info.value)

@@ -70,6 +70,9 @@ def test_non_triangles(tmp_path):
     V, F = cube_quads()
     raises("ERROR_NON_TRIANGULAR_MESH", hot.embed, V, F, [0, 1, 2, 3, 4], match="only triangle meshes")
     raises("ERROR_NON_TRIANGULAR_MESH", hot.read_mesh, write_off(tmp_path / "cube.off", V, F))
+    # the command line's --repair triangulates them
+    VR, FR, index = hot.read_mesh(tmp_path / "cube.off", repair=True, return_file_index=True)
+    assert FR.shape == (12, 3) and np.array_equal(VR, V) and list(index) == list(range(8))
 
 
 def test_landmarks(bear, meshes):
