@@ -27,6 +27,7 @@
 #include "cli_types.h"
 #include "collection_jobs.h"
 #include "certify_command.h"
+#include "embed_job.h"
 #include "io/cut_graph_file.h"
 #include "io/embedding_obj.h"
 #include "io/map_files.h"
@@ -276,20 +277,7 @@ void write_embedding_svg(std::ostream& os, const Surface_mesh& m,
   svg.end(os);
 }
 
-// the options of `embed`
-struct Embed_job
-{
-  hot_tools::Embedding_request request; // the mesh, weights and order (empty: the type's default)
-  std::string cones_path, out_path;
-  std::optional<std::string> svg_path, report_path;
-  std::optional<HOT::Orbifold_type> required_type;
-  HOT::Weight_type weights = HOT::Cotangent;
-  bool recentre = false;
-  std::vector<int> orders; // --cone-orders, per landmark of the file (empty: 2 for all)
-  hot_tools::Repair_options repair;
-  std::optional<std::string> cut_graph_path, cut_graph_out; // genus g >= 1: --cut-graph, --cut-graph-out
-  std::vector<std::size_t> explicit_order; // --order I0,I1,...: the landmarks' positions in the order of the cut
-};
+// the options of `embed` (Embed_job) and its call of the library (embed_mesh()): embed_job.h
 
 // --order I0,I1,...: a permutation of the k landmarks' positions (0-based lines of the landmark file)
 std::vector<std::size_t> parse_landmark_positions(const std::string& s, std::size_t k)
@@ -351,25 +339,6 @@ Embed_job parse_embed_options(int argc, char** argv)
   if(opt.has("cut-graph-out"))
     job.cut_graph_out = opt.get("cut-graph-out");
   return job;
-}
-
-// the certified embedding of `m` with the job's options (the failure's reason otherwise)
-HOT::Embedding_statistics embed_mesh(const Embed_job& job, Surface_mesh& m, const std::vector<SM_vertex>& landmarks,
-                                     UV_map uv, Chart_map charts, const std::vector<std::vector<SM_vertex> >& cut_graph)
-{
-  HOT::Embedding_statistics st;
-  const HOT::Landmark_order order = job.request.order == "tsp" ? HOT::Tsp_order : HOT::Given_order;
-  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
-    m, landmarks, uv,
-    HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(job.orders, HOT::parameters::chart_map(
-      charts,
-      HOT::parameters::recentring(
-        job.recentre,
-        HOT::parameters::embedding_statistics(
-          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type)))))))));
-  if(ec != HOT::OK)
-    throw Failure{ec, st.message};
-  return st;
 }
 
 // OUT.obj, and the picture and the report when asked for

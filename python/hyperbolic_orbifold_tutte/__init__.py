@@ -1,0 +1,98 @@
+# Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Hyperbolic orbifold Tutte embeddings of triangle meshes and bijective maps between surfaces.
+
+The Python face of the Hyperbolic_orbifold_Tutte package (Aigerman and Lipman, SIGGRAPH
+Asia 2016) and of its command-line program: the same reader, the same embedding, the same
+writers, the same numbers.
+
+    import hyperbolic_orbifold_tutte as hot
+    V, F = hot.read_mesh("bear.off")               # float64 (n, 3), int64 (m, 3)
+    lm = hot.select_landmarks(V, F, 7)              # as `landmarks --count 7`
+    e = hot.embed(V, F, lm)                         # certified, or hot.Error
+    e.uv                                            # (m, 3, 2) Poincare points per corner
+    e.report["certificate"]["bijective"]            # the report of `embed --report`
+    e.write_obj("bear.obj")                         # the bytes of `embed --out`
+    e2 = hot.embed(V2, F2, lm2, order=e.landmark_order)
+    faces, bary = hot.map(e, e2)                    # as `map`'s MAP.txt
+    d = hot.map_distortion(V, F, hot.surface_points(faces, bary, V2, F2))  # per-face distortion
+    hot.collection("list.txt", "out", all_pairs=True, client=None)  # or a dask.distributed.Client
+    values = hot.transfer(faces, bary, F2, values2) # a function on mesh 2 pulled back to mesh 1
+
+Every failure raises hot.Error (message, .code = the library's Error_code name).
+The computations release the GIL: embeddings of several meshes run in parallel in threads
+(concurrent.futures, Dask's threaded scheduler).
+"""
+
+import numpy as _np
+
+from ._core import Embedding, Error, embed, error_codes, map, map_distortion, read_mesh, select_landmarks
+from .collection import collection
+
+__all__ = [
+    "collection",
+    "map_distortion",
+    "Embedding",
+    "Error",
+    "embed",
+    "error_codes",
+    "map",
+    "read_mesh",
+    "select_landmarks",
+    "transfer",
+    "surface_points",
+]
+
+
+# ---------------------------------------------------------------------------------------
+# maps (map() itself is in the C++ core)
+# ---------------------------------------------------------------------------------------
+
+def transfer(faces, bary, F_b, values_b):
+    """transfer(faces, bary, F_b, values_b) -> values on the source's vertices
+
+    Carries a function given on the vertices of a target mesh B over a map computed by
+    map(): for source vertex i, the sum over the corners of face faces[i] of B of
+    bary[i, c] * values_b[F_b[faces[i], c]].
+
+    faces: int array (n,), bary: float array (n, 3) (map()'s result); F_b: B's faces
+    (mB, 3); values_b: array (nB,) or (nB, k) (a scalar or a vector per vertex of B,
+    e.g. B's vertex positions VB, which gives the image points of the map).
+    Returns a float array of shape (n,) or (n, k). Vectorised numpy; no loop in Python.
+    Raises Error (code ERROR_WRONG_PARAMETER) on inconsistent shapes or indices.
+    """
+    faces = _np.asarray(faces)
+    bary = _np.asarray(bary, dtype=_np.float64)
+    F_b = _np.asarray(F_b)
+    values_b = _np.asarray(values_b)
+    if faces.ndim != 1 or bary.shape != (faces.shape[0], 3):
+        raise Error("transfer: faces must have shape (n,) and bary (n, 3), got %s and %s"
+                    % (faces.shape, bary.shape), "ERROR_WRONG_PARAMETER")
+    if F_b.ndim != 2 or F_b.shape[1] != 3 or not _np.issubdtype(F_b.dtype, _np.integer):
+        raise Error("transfer: F_b must be an integer array of shape (m, 3), got %s %s"
+                    % (F_b.shape, F_b.dtype), "ERROR_WRONG_PARAMETER")
+    if not _np.issubdtype(faces.dtype, _np.integer):
+        raise Error("transfer: faces must hold integers, got %s" % faces.dtype, "ERROR_WRONG_PARAMETER")
+    if values_b.ndim not in (1, 2):
+        raise Error("transfer: values_b must have shape (nB,) or (nB, k), got %s" % (values_b.shape,),
+                    "ERROR_WRONG_PARAMETER")
+    if faces.size and (faces.min() < 0 or faces.max() >= F_b.shape[0]):
+        raise Error("transfer: faces holds an index out of range (F_b has %d faces)" % F_b.shape[0],
+                    "ERROR_WRONG_PARAMETER")
+    corners = F_b[faces]                                    # (n, 3) vertex indices of B
+    if corners.size and (corners.min() < 0 or corners.max() >= values_b.shape[0]):
+        raise Error("transfer: F_b refers to vertices beyond values_b's %d rows" % values_b.shape[0],
+                    "ERROR_WRONG_PARAMETER")
+    v = values_b[corners]                                   # (n, 3) or (n, 3, k)
+    if values_b.ndim == 1:
+        return _np.einsum("ij,ij->i", bary, v)
+    return _np.einsum("ij,ijk->ik", bary, v)
+
+
+def surface_points(faces, bary, V_b, F_b):
+    """surface_points(faces, bary, V_b, F_b) -> (n, 3) float array
+
+    The points of the target surface B where map() sends the source's vertices:
+    transfer(faces, bary, F_b, V_b).
+    """
+    return transfer(faces, bary, F_b, V_b)

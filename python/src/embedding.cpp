@@ -1,0 +1,482 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+//
+// The Python extension's embeddings (embed, the class Embedding) and maps (map): the
+// command line's `embed` and `map` on arrays. The embedding is computed by the command
+// line's own call (hot_cli::embed_mesh(), tools/embed_job.h) on a mesh built as its reader
+// builds it, so the numbers are the command line's, bit for bit; the OBJ file and the report
+// are written by its writers (tools/io).
+
+#include "hot_python.h"
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
+
+#include "command_line.h"
+#include "embed_job.h"
+#include "io/embedding_obj.h"
+#include "io/map_files.h"
+#include "io/reports.h"
+
+#include <algorithm>
+#include <array>
+#include <sstream>
+#include <stdexcept>
+#include <type_traits>
+
+namespace hot_python {
+
+// ---------------------------------------------------------------------------------------
+// embed
+// ---------------------------------------------------------------------------------------
+
+Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64_t* F, std::size_t m, std::size_t k,
+                                const std::vector<std::size_t>& ids, const Embed_options& opt)
+{
+  auto e = std::make_shared<Embedding>();
+  Surface_mesh& mesh = e->mesh;
+  HOT::Mesh_info info;
+  mesh_from_arrays(V, n, F, m, k, opt.type, mesh, info);
+  e->type = info.type;
+  e->genus = e->type == HOT::Sphere_type ? HOT::internal::closed_mesh_genus(mesh) : 0;
+
+  // the landmarks, as read_and_check_landmarks() checks a landmark file's indices
+  for(int p : opt.cone_orders)
+    if(p < 2 || p > 1000000)
+      fail(HOT::ERROR_WRONG_PARAMETER, "cone_orders must be integers from 2 to 1000000 (one per landmark, e.g. [2, 3, 7])");
+  const std::size_t minimum =
+    HOT::minimum_number_of_landmarks_of(mesh, e->type, hot_cli::minimum_landmarks(opt.cone_orders));
+  require(HOT::check_landmarks(mesh, ids, e->type, e->landmarks, minimum));
+  e->landmark_ids = ids;
+
+  // the order: the type's default, the library's tour, as given, or explicit
+  hot_cli::Embed_job job;
+  std::string order_name = opt.order;
+  if(order_name == "auto")
+    order_name = (e->type == HOT::Sphere_type && e->genus == 0) ? "tsp" : "given";
+  std::vector<SM_vertex> landmarks = e->landmarks; // in the order given to the library
+  std::vector<std::size_t> permutation(ids.size());
+  for(std::size_t i = 0; i < permutation.size(); ++i) permutation[i] = i;
+  job.orders = opt.cone_orders;
+  if(order_name == "explicit") {
+    const std::vector<std::size_t>& p = opt.explicit_order;
+    std::vector<bool> seen(ids.size(), false);
+    bool ok = p.size() == ids.size();
+    for(std::size_t i = 0; ok && i < p.size(); ++i) {
+      ok = p[i] < ids.size() && !seen[p[i]];
+      if(ok) seen[p[i]] = true;
+    }
+    if(!ok)
+      fail(HOT::ERROR_WRONG_PARAMETER, "order must be 'auto', 'tsp', 'given' or a permutation of the " + std::to_string(ids.size()) +
+                                         " landmark positions 0.." + std::to_string(ids.size() == 0 ? 0 : ids.size() - 1) +
+                                         " (e.g. another embedding's landmark_order)");
+    permutation = p;
+    for(std::size_t i = 0; i < p.size(); ++i) landmarks[i] = e->landmarks[p[i]];
+    if(!opt.cone_orders.empty()) {
+      if(opt.cone_orders.size() != ids.size())
+        fail(HOT::ERROR_WRONG_PARAMETER, std::to_string(opt.cone_orders.size()) + " cone orders are given for " +
+                                           std::to_string(ids.size()) + " landmarks (one per landmark is needed)");
+      for(std::size_t i = 0; i < p.size(); ++i) job.orders[i] = opt.cone_orders[p[i]];
+    }
+  }
+
+  // genus g >= 1: the cut graph, as read_cut_graph_of() reads a file's
+  std::vector<std::vector<SM_vertex> > cut_graph;
+  if(opt.has_cut_graph) {
+    if(e->genus == 0)
+      fail(HOT::ERROR_WRONG_PARAMETER, "cut_graph: the mesh has genus 0; a cut graph is for a closed mesh of genus 1 or more");
+    const std::vector<SM_vertex> verts(vertices(mesh).begin(), vertices(mesh).end());
+    for(const auto& path : opt.cut_graph) {
+      cut_graph.emplace_back();
+      for(std::size_t id : path) {
+        if(id >= verts.size())
+          fail(HOT::ERROR_LANDMARK_OUT_OF_RANGE, "cut_graph: vertex " + std::to_string(id) + " of the cut graph is not a vertex of the mesh");
+        cut_graph.back().push_back(verts[id]);
+      }
+    }
+  }
+
+  // the job of run_embed()
+  job.request.mesh_path = opt.name;
+  job.request.type = e->type;
+  job.request.weights = opt.weights;
+  job.request.order = order_name == "explicit" ? "given" : order_name;
+  job.request.cones = ids;
+  if(opt.weights == "cotan") job.weights = HOT::Cotangent;
+  else if(opt.weights == "mvc") job.weights = HOT::Mean_value;
+  else if(opt.weights == "uniform") job.weights = HOT::Uniform;
+  else fail(HOT::ERROR_WRONG_PARAMETER, "weights must be 'cotan', 'mvc' or 'uniform', got '" + opt.weights + "'");
+  job.recentre = opt.recentre;
+
+  e->uv = mesh.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  e->charts = mesh.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
+  try {
+    e->stats = hot_cli::embed_mesh(job, mesh, landmarks, e->uv, e->charts, cut_graph);
+  } catch(const hot_cli::Failure& f) {
+    fail(f.code, f.message);
+  }
+  // the order used, as positions in the landmarks as given
+  for(std::size_t& i : e->stats.landmark_order) i = permutation[i];
+  e->order = e->stats.landmark_order;
+  job.request.order = order_name;
+  e->request = job.request;
+  std::ostringstream report;
+  hot_tools::write_embedding_report(report, e->request, num_vertices(mesh), num_faces(mesh), e->stats);
+  e->report = report.str();
+
+  // the corners' points in the order of F (face j's corners from its first vertex,
+  // source(halfedge(f)), as the OBJ writer writes them), and F itself
+  e->corner_uv.reserve(6 * num_faces(mesh));
+  e->faces.reserve(3 * num_faces(mesh));
+  for(SM_face f : faces(mesh))
+    for(SM_halfedge h : halfedges_around_face(prev(halfedge(f, mesh), mesh), mesh)) {
+      const Kernel::Point_2& p = get(e->uv, h);
+      e->corner_uv.push_back(p.x());
+      e->corner_uv.push_back(p.y());
+      e->faces.push_back(static_cast<std::int64_t>(target(h, mesh).idx()));
+    }
+  return e;
+}
+
+namespace {
+
+Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, const std::string& weights,
+                    py::handle order, py::handle cone_orders, bool recentre, py::handle cut_graph, const std::string& name)
+{
+  const Double_array Va = vertex_array(V);
+  const Index_array Fa = face_array(F);
+  const std::vector<std::size_t> ids = index_list(landmarks, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
+  Embed_options opt;
+  opt.type = parse_orbifold(orbifold);
+  opt.weights = weights;
+  opt.recentre = recentre;
+  opt.name = name;
+  if(py::isinstance<py::str>(order)) {
+    opt.order = order.cast<std::string>();
+    if(opt.order != "auto" && opt.order != "tsp" && opt.order != "given")
+      fail(HOT::ERROR_WRONG_PARAMETER, "order must be 'auto', 'tsp', 'given' or a sequence of landmark positions, got '" + opt.order + "'");
+  } else {
+    opt.order = "explicit";
+    for(std::int64_t i : int_list(order, "order"))
+      opt.explicit_order.push_back(i < 0 ? std::size_t(-1) : static_cast<std::size_t>(i)); // (negative: not a permutation)
+  }
+  if(!cone_orders.is_none())
+    for(std::int64_t p : int_list(cone_orders, "cone_orders"))
+      opt.cone_orders.push_back(p < 2 || p > 1000000 ? 0 : static_cast<int>(p)); // (0: refused below)
+  if(!cut_graph.is_none()) {
+    opt.has_cut_graph = true;
+    for(py::handle path : cut_graph)
+      opt.cut_graph.push_back(index_list(path, "cut graph vertex", HOT::ERROR_LANDMARK_OUT_OF_RANGE));
+  }
+  Embedding_ptr e;
+  {
+    py::gil_scoped_release release;
+    e = compute_embedding(Va.data(), static_cast<std::size_t>(Va.shape(0)), Fa.data(), static_cast<std::size_t>(Fa.shape(0)),
+                          static_cast<std::size_t>(Fa.shape(1)), ids, opt);
+  }
+  return e;
+}
+
+// the vertices of the embedded mesh: a view of its points (Surface_mesh stores them as one
+// array of Point_3, three doubles each)
+py::array vertex_view(py::object self)
+{
+  const Embedding& e = self.cast<const Embedding&>();
+  static_assert(sizeof(Kernel::Point_3) == 3 * sizeof(double), "Epick's Point_3 is three doubles");
+  const Kernel::Point_3* p = e.mesh.points().data();
+  const std::size_t n = num_vertices(e.mesh);
+  const double* data = reinterpret_cast<const double*>(p);
+  if(n > 0 && &e.mesh.point(SM_vertex(static_cast<SM_vertex::size_type>(n - 1))).x() != data + 3 * (n - 1))
+    fail(HOT::ERROR_WRONG_PARAMETER, "internal: the mesh's points are not one array"); // (cannot happen: checked for safety)
+  return view_of(data, {static_cast<py::ssize_t>(n), 3}, self);
+}
+
+void write_obj(const Embedding& e, py::handle path)
+{
+  const py::bytes b = py::module_::import("os").attr("fsencode")(path);
+  const std::string p(b);
+  py::gil_scoped_release release;
+  const hot_tools::Embedding_charts<Chart_map> ch{e.charts, e.stats.charts, e.stats.chart_corners};
+  try {
+    // as the CLI's `embed` writes OUT.obj (write_embed_outputs(), without --repair)
+    hot_cli::write_file_atomically(p, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, e.mesh, e.uv, nullptr, &ch); });
+  } catch(const std::runtime_error& x) {
+    fail(HOT::ERROR_WRITE_FAILED, x.what());
+  }
+}
+
+template <class T>
+py::list list_of_lists(const std::vector<std::vector<T> >& v)
+{
+  py::list r;
+  for(const auto& row : v) {
+    py::list l;
+    for(const T& x : row) l.append(x);
+    r.append(l);
+  }
+  return r;
+}
+
+template <class T>
+py::array int64_array(const std::vector<T>& v)
+{
+  std::vector<std::int64_t> r(v.begin(), v.end());
+  const py::ssize_t n = static_cast<py::ssize_t>(r.size());
+  return owning_array(std::move(r), {n});
+}
+
+} // namespace
+
+void register_embedding(py::module_& m)
+{
+  py::class_<Embedding, Embedding_ptr>(m, "Embedding", R"doc(A certified hyperbolic orbifold Tutte embedding of a triangle mesh (returned by embed()).
+
+It holds the mesh it embeds (built from V and F as the command line's reader builds a
+mesh), the corner coordinates and the statistics. Arrays it returns are read-only views
+of its own memory (no copy), valid as long as any of them or the object is alive.)doc")
+    .def_property_readonly(
+      "uv",
+      [](py::object self) {
+        const Embedding& e = self.cast<const Embedding&>();
+        return view_of(e.corner_uv.data(), {static_cast<py::ssize_t>(e.faces.size() / 3), 3, 2}, self);
+      },
+      R"doc(float64 array of shape (m, 3, 2): the Poincare-disk coordinates of every face corner, corners
+in the order of the face's vertices in F. The same numbers as the `vt` the command line's
+OBJ gives that corner (a vertex on the cut has a different point on each side of it).
+Where a face is written in a chart around a cone image (report "charted_faces" > 0), its
+corners here are the tile points rounded to double, as the OBJ's vt lines.
+A read-only view: calling e.uv twice gives two views of the same memory.)doc")
+    .def_property_readonly("V", &vertex_view,
+                           "float64 array of shape (n, 3): the vertices of the embedded mesh (a read-only view of its points)")
+    .def_property_readonly(
+      "F",
+      [](py::object self) {
+        const Embedding& e = self.cast<const Embedding&>();
+        return view_of(e.faces.data(), {static_cast<py::ssize_t>(e.faces.size() / 3), 3}, self);
+      },
+      "int64 array of shape (m, 3): the faces of the embedded mesh (those given, a read-only view)")
+    .def_property_readonly(
+      "certified", [](const Embedding& e) { return e.stats.certificate.is_bijective(); },
+      "bool: the bijectivity certificate's verdict (always True for a returned embedding: a failed one raises Error)")
+    .def_property_readonly(
+      "report",
+      [](const Embedding& e) { return py::module_::import("json").attr("loads")(e.report); },
+      R"doc(dict: the report of the command line's `embed --report` for this embedding (the same writer,
+parsed with json.loads): sizes, cones, orbifold, weights, order, landmark_order_used (vertex
+indices), cone_orders, genus, time per phase, iterations, energy, recentring, charts, certificate.
+"mesh" is the name given to embed(). A new dict on every access.)doc")
+    .def_property_readonly("report_json", [](const Embedding& e) { return e.report; },
+                           "str: the report as the command line writes it (JSON text)")
+    .def_property_readonly(
+      "landmarks", [](const Embedding& e) { return int64_array(e.landmark_ids); },
+      "int64 array: the landmarks (vertex indices) as given to embed()")
+    .def_property_readonly(
+      "landmark_order", [](const Embedding& e) { return int64_array(e.order); },
+      R"doc(int64 array: the order of the landmarks used (the cone order), as positions in `landmarks`:
+e.landmarks[e.landmark_order] is the report's "landmark_order_used". Give it as `order` to
+embed a second mesh with corresponding landmarks in the same cone order, for map().)doc")
+    .def_property_readonly(
+      "cone_orders", [](const Embedding& e) { return std::vector<int>(e.stats.cone_orders.begin(), e.stats.cone_orders.end()); },
+      "list of int: the order p of every cone (angle 2 pi / p) in the cone order (2 for all unless cone_orders was given)")
+    .def_property_readonly(
+      "orbifold", [](const Embedding& e) { return std::string(e.type == HOT::Sphere_type ? "sphere" : "disk"); },
+      "str: 'sphere' (a closed mesh, of any genus) or 'disk'")
+    .def_property_readonly("genus", [](const Embedding& e) { return e.genus; }, "int: the genus of the mesh (0 for the disk type)")
+    .def_property_readonly("recentred", [](const Embedding& e) { return e.stats.recentred; },
+                           "bool: the coordinates are in a moved frame (recentre=True was needed; see the report's frame)")
+    .def_property_readonly(
+      "cut_graph", [](const Embedding& e) { return list_of_lists(e.stats.cut_graph); },
+      R"doc(list of lists of int: genus g >= 1, the cut graph used (vertex paths); give it as `cut_graph` to
+embed a deformed copy of the mesh (the same faces) along the corresponding graph. Empty for genus 0.)doc")
+    .def("write_obj", &write_obj, py::arg("path"),
+         R"doc(write_obj(path)
+
+Writes the embedding as the command line's `embed --out` writes OUT.obj (the same writer,
+the same bytes): v = the vertices, vt = one Poincare point per cut-mesh vertex, f v/vt = the
+faces in order, and the charts around cone images as comment lines when there are some.
+The file is written to path.tmp and renamed when complete. Errors raise Error.)doc")
+    .def("__repr__", [](const Embedding& e) {
+      std::ostringstream os;
+      os << "<hyperbolic_orbifold_tutte.Embedding: " << num_vertices(e.mesh) << " vertices, " << num_faces(e.mesh) << " faces, "
+         << (e.type == HOT::Sphere_type ? (e.genus > 0 ? "closed, genus " + std::to_string(e.genus) : std::string("sphere type")) : "disk type")
+         << ", " << e.landmarks.size() << " landmarks, " << (e.stats.certificate.is_bijective() ? "certified bijective" : "not certified")
+         << ">";
+      return os.str();
+    });
+
+  m.def("embed", &embed, py::arg("V"), py::arg("F"), py::arg("landmarks"), py::kw_only(), py::arg("orbifold") = "auto",
+        py::arg("weights") = "cotan", py::arg("order") = "auto", py::arg("cone_orders") = py::none(), py::arg("recentre") = false,
+        py::arg("cut_graph") = py::none(), py::arg("name") = "",
+        R"doc(embed(V, F, landmarks, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, recentre=False, cut_graph=None, name="")
+
+Computes the certified hyperbolic orbifold Tutte embedding of the triangle mesh (V, F)
+with the given landmarks at the orbifold's cones, as the command line's `embed` does (the
+same reader checks, the same call of the library: the same numbers, bit for bit), and
+returns an Embedding. The computation releases the GIL (threads run in parallel).
+
+V: (n, 3) real array (float64 C-contiguous is read in place; others are converted).
+F: (m, 3) integer array of vertex indices (int64 C-contiguous is read in place).
+landmarks: vertex indices (a sequence or 1-D integer array): on a closed genus-0 mesh at
+  least 5 (3 with cone_orders), genus 1 at least 1, genus 2 or more any number (also
+  none); on a disk at least 5 boundary vertices, in boundary order.
+orbifold: "auto" (sphere type if the mesh is closed, disk type if it has one boundary
+  loop), "sphere" (or "closed") or "disk".
+weights: "cotan" (clamped cotangent), "mvc" (mean value) or "uniform".
+order: the cone order of the landmarks: "auto" ("tsp" for a closed genus-0 mesh, "given"
+  otherwise, as the command line's default), "tsp" (the paper's tour through the
+  landmarks), "given", or a sequence of landmark positions (a permutation of
+  0..k-1, e.g. another embedding's landmark_order: landmarks[order[i]] goes to cone i).
+cone_orders: the order p of every landmark's cone (angle 2 pi / p), in the order of
+  `landmarks` (default 2 for all: angle pi); sphere type; the orbifold must be hyperbolic.
+recentre: allows a part too squeezed for double in the tile to be solved in a moved frame
+  (the result is then in that frame; maps need embeddings in the tile itself).
+cut_graph: genus g >= 1: the graph to cut along (vertex paths, e.g. another embedding's
+  cut_graph on a deformed copy); default: computed.
+name: the report's "mesh" field.
+
+Every failure (bad input, too few or duplicate landmarks, a non-manifold mesh, no
+certified result, ...) raises Error with the library's message.)doc");
+}
+
+// ---------------------------------------------------------------------------------------
+// map
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
+
+// the locator of a map's target, as the command line's target_locator(): in the tile of its
+// cut graph (genus g >= 1), or of its signature (with its charts around cone images)
+Locator target_locator(const Embedding& B)
+{
+  if(B.stats.genus > 0) {
+    Locator::Tile tile;
+    if(HOT::make_embedding_tile(B.type, B.stats, tile) != HOT::OK)
+      fail(HOT::ERROR_WRONG_PARAMETER, "the target's tile could not be built from its cut graph");
+    return Locator(B.mesh, B.uv, tile, HOT::Hyperboloid_linear);
+  }
+  return Locator(B.mesh, B.uv, B.charts, B.stats.charts, HOT::Orbifold_signature(B.type, B.stats.cone_orders), HOT::Hyperboloid_linear);
+}
+
+std::string list_string(const std::vector<std::size_t>& v)
+{
+  std::ostringstream os;
+  os << "[";
+  for(std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
+  os << "]";
+  return os.str();
+}
+
+// the source and the target of a map must be embedded into one orbifold with corresponding
+// cones (the checks of the command line's map, and the ones its single cone order makes
+// needless there)
+void check_map_pair(const Embedding& A, const Embedding& B)
+{
+  if(A.type != B.type)
+    fail(HOT::ERROR_WRONG_TOPOLOGY, "the source is " + std::string(A.type == HOT::Sphere_type ? "closed" : "a disk") +
+                                      " but the target is " + (B.type == HOT::Sphere_type ? "closed" : "a disk"));
+  if(A.landmarks.size() != B.landmarks.size())
+    fail(HOT::ERROR_WRONG_PARAMETER, "the source has " + std::to_string(A.landmarks.size()) + " landmarks and the target " +
+                                       std::to_string(B.landmarks.size()));
+  if(A.genus != B.genus)
+    fail(HOT::ERROR_WRONG_TOPOLOGY, "the source has genus " + std::to_string(A.genus) + " and the target genus " + std::to_string(B.genus));
+  if(A.order != B.order)
+    fail(HOT::ERROR_WRONG_PARAMETER, "the landmarks are not in the same cone order: the source's landmark_order is " + list_string(A.order) +
+                                       ", the target's " + list_string(B.order) +
+                                       " (landmark i of the source corresponds to landmark i of the target: embed the target with "
+                                       "order=source.landmark_order)");
+  if(A.stats.cone_orders != B.stats.cone_orders)
+    fail(HOT::ERROR_WRONG_PARAMETER, "the cones of the source and the target have different orders (cone_orders): "
+                                     "the two orbifolds differ");
+  if(A.stats.recentred || B.stats.recentred)
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string("the ") + (A.stats.recentred ? "source" : "target") +
+                                       " was embedded in a recentred frame: maps need embeddings in the tile itself (embed without recentre)");
+  if(A.genus > 0) {
+    const HOT::Embedding_statistics &a = A.stats, &b = B.stats;
+    if(a.cut_corner_nodes != b.cut_corner_nodes || a.cut_node_cones != b.cut_node_cones || a.cut_paired_sides != b.cut_paired_sides)
+      fail(HOT::ERROR_WRONG_PARAMETER, "the cut graphs of the source and the target do not correspond: their polygons differ (" +
+                                         std::to_string(a.cut_corner_nodes.size()) + " and " + std::to_string(b.cut_corner_nodes.size()) +
+                                         " corners, or other side pairings); embed the target with cut_graph=source.cut_graph "
+                                         "(a deformed copy) or with a corresponding cut graph");
+  }
+  if(A.stats.landmark_order_reversed != B.stats.landmark_order_reversed)
+    fail(HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
+                                     "the correspondence would reverse orientation");
+}
+
+} // namespace
+
+void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int64_t>& faces, std::vector<double>& bary,
+                    std::vector<std::int64_t>* unreliable)
+{
+  check_map_pair(A, B);
+  const Locator locB = target_locator(B);
+  if(!locB.is_valid())
+    fail(HOT::ERROR_POINT_NOT_LOCATED, "the target's embedding cannot be searched: " + locB.message());
+  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
+  faces.resize(f.size());
+  bary.resize(3 * f.size());
+  for(std::size_t i = 0; i < f.size(); ++i) {
+    if(!f[i].success)
+      fail(HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target");
+    const std::array<double, 3> b = hot_tools::input_order_barycentric(B.mesh, locB, f[i]);
+    faces[i] = static_cast<std::int64_t>(f[i].face_index);
+    for(int c = 0; c < 3; ++c) bary[3 * i + c] = b[c];
+  }
+  if(unreliable) {
+    const HOT::Map_reliability r = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
+    unreliable->assign(r.unreliable_vertices.begin(), r.unreliable_vertices.end());
+  }
+}
+
+namespace {
+
+py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable)
+{
+  if(!A || !B)
+    fail(HOT::ERROR_WRONG_PARAMETER, "map() needs two embeddings");
+  std::vector<std::int64_t> faces, flagged;
+  std::vector<double> bary;
+  {
+    py::gil_scoped_release release;
+    map_embeddings(*A, *B, faces, bary, unreliable ? &flagged : nullptr);
+  }
+  const py::ssize_t n = static_cast<py::ssize_t>(faces.size()), u = static_cast<py::ssize_t>(flagged.size());
+  py::array f = owning_array(std::move(faces), {n}), b = owning_array(std::move(bary), {n, 3});
+  if(!unreliable)
+    return py::make_tuple(f, b);
+  return py::make_tuple(f, b, owning_array(std::move(flagged), {u}));
+}
+
+} // namespace
+
+void register_maps(py::module_& m)
+{
+  m.def("map", &map, py::arg("source"), py::arg("target"), py::kw_only(), py::arg("unreliable") = false,
+        R"doc(map(source, target, *, unreliable=False) -> (faces, bary) or (faces, bary, unreliable_vertices)
+
+Maps every vertex of the source embedding's mesh A onto the target's mesh B through
+their common orbifold (the paper's section 7), as the command line's `map` does: for
+vertex i of A, faces[i] is the face of B (an index into B's F, int64 array of shape
+(n,)) and bary[i] its barycentric coordinates w.r.t. that face's vertices in F's order
+(float64 array of shape (n, 3)): the numbers of the `face b0 b1 b2` lines of the command
+line's MAP.txt. The point of B is bary[i] @ VB[FB[faces[i]]] (see transfer()).
+
+Both embeddings must be of one orbifold with corresponding cones: the same type, genus,
+number of landmarks, cone orders and cone order (landmark_order). The command line's map
+uses the source's landmark tour for both meshes; here embed the target with
+order=source.landmark_order (and, for genus g >= 1 on a deformed copy,
+cut_graph=source.cut_graph). Anything else raises Error saying what differs. Releases
+the GIL.
+
+unreliable=True also returns the vertices of A whose images the map cannot resolve (int64
+array, increasing): in a protrusion without a landmark, squeezed by both embeddings below
+their disagreement (the command line's map report's "unreliable_vertices"; put a landmark
+at the tip of such a protrusion).)doc");
+}
+
+} // namespace hot_python

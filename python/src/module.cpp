@@ -1,0 +1,401 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+//
+// The Python extension `hyperbolic_orbifold_tutte._core`: the module, its error class, the
+// numpy helpers, meshes from arrays and files (read_mesh), and landmark selection. The
+// embeddings and maps are in embedding.cpp; each area registers itself (hot_python.h).
+
+#include "hot_python.h"
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
+
+#include "io/polygon_soup.h"
+#include "io/polygon_soup_to_mesh.h"
+#include "io/prepared_input.h"
+#include "io/read_and_check.h"
+
+#include <array>
+#include <sstream>
+
+namespace hot_python {
+
+// ---------------------------------------------------------------------------------------
+// errors
+// ---------------------------------------------------------------------------------------
+
+const char* error_code_name(HOT::Error_code code)
+{
+  static const char* const names[] = {
+    "OK",
+    "ERROR_NOT_HYPERBOLIC",
+    "ERROR_WRONG_PARAMETER",
+    "ERROR_EMPTY_MESH",
+    "ERROR_NON_TRIANGULAR_MESH",
+    "ERROR_NON_MANIFOLD",
+    "ERROR_SEVERAL_COMPONENTS",
+    "ERROR_WRONG_TOPOLOGY",
+    "ERROR_TOO_FEW_LANDMARKS",
+    "ERROR_DUPLICATE_LANDMARK",
+    "ERROR_LANDMARK_OUT_OF_RANGE",
+    "ERROR_LANDMARK_NOT_ON_BORDER",
+    "ERROR_DEGENERATE_FACE",
+    "ERROR_NON_FINITE_COORDINATES",
+    "ERROR_CUT_FAILED",
+    "ERROR_CANNOT_SOLVE_LINEAR_SYSTEM",
+    "ERROR_NOT_CONVERGED",
+    "ERROR_NO_1_TO_1_MAPPING",
+    "ERROR_POINT_NOT_LOCATED",
+    "ERROR_READ_FAILED",
+    "ERROR_WRITE_FAILED",
+    "ERROR_BOUNDARY_CHORD",
+    "ERROR_POLYGON_NOT_CONVEX",
+    "ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER"
+  };
+  static_assert(sizeof(names) / sizeof(names[0]) == HOT::number_of_error_codes, "one name per Error_code value");
+  static_assert(HOT::ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER == 23 && HOT::ERROR_READ_FAILED == 19 && HOT::ERROR_NON_MANIFOLD == 5,
+                "the names follow the order of the enumeration");
+  const int i = static_cast<int>(code);
+  return (i >= 0 && i < HOT::number_of_error_codes) ? names[i] : "UNKNOWN";
+}
+
+namespace {
+
+// the class hyperbolic_orbifold_tutte.Error (created once, kept for the process's life)
+py::handle error_class;
+
+const char* const error_class_source = R"PY(
+class Error(Exception):
+    """The error of every operation of hyperbolic_orbifold_tutte.
+
+    str(e) and e.message: the library's one-line message (what is wrong and where,
+    e.g. "face 3 is not a triangle"); e.code: the name of the library's Error_code
+    (e.g. "ERROR_NON_TRIANGULAR_MESH", "ERROR_TOO_FEW_LANDMARKS"); e.code_value: its
+    number; e.description: the code's general description (error_message()).
+    """
+
+    def __init__(self, message, code="ERROR_WRONG_PARAMETER", code_value=None, description=None):
+        super().__init__(message)
+        known = _codes.get(code, (None, None))
+        self.message = message
+        self.code = code
+        self.code_value = known[0] if code_value is None else code_value
+        self.description = known[1] if description is None else description
+)PY";
+
+} // namespace
+
+void register_errors(py::module_& m)
+{
+  py::dict codes, numbered; // name -> description, name -> (number, description)
+  for(int i = 0; i < HOT::number_of_error_codes; ++i) {
+    const HOT::Error_code c = static_cast<HOT::Error_code>(i);
+    codes[py::str(error_code_name(c))] = HOT::error_message(c);
+    numbered[py::str(error_code_name(c))] = py::make_tuple(i, HOT::error_message(c));
+  }
+  py::dict ns;
+  ns["__name__"] = "hyperbolic_orbifold_tutte";
+  ns["__builtins__"] = py::module_::import("builtins");
+  ns["_codes"] = numbered;
+  py::exec(error_class_source, ns);
+  py::object cls = ns["Error"];
+  cls.attr("__module__") = "hyperbolic_orbifold_tutte";
+  error_class = cls.inc_ref(); // never released: the translator may run until the interpreter ends
+  m.attr("Error") = cls;
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if(p) std::rethrow_exception(p);
+    } catch(const Hot_error& e) {
+      // (a message with bytes that are not UTF-8, e.g. from a file name, gets replacement characters)
+      py::object message = py::reinterpret_steal<py::object>(
+        PyUnicode_DecodeUTF8(e.message.data(), static_cast<Py_ssize_t>(e.message.size()), "replace"));
+      if(!message) {
+        PyErr_Clear();
+        message = py::str("(unprintable message)");
+      }
+      try {
+        py::object instance = error_class(message, error_code_name(e.code), static_cast<int>(e.code), HOT::error_message(e.code));
+        PyErr_SetObject(error_class.ptr(), instance.ptr());
+      } catch(py::error_already_set& x) {
+        x.restore();
+      }
+    }
+  });
+  m.attr("error_codes") = codes;
+}
+
+// ---------------------------------------------------------------------------------------
+// numpy helpers
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+py::array as_numpy_array(py::handle obj)
+{
+  return py::module_::import("numpy").attr("asarray")(obj);
+}
+
+std::string shape_of(const py::array& a)
+{
+  std::ostringstream os;
+  os << "(";
+  for(py::ssize_t i = 0; i < a.ndim(); ++i)
+    os << (i ? ", " : "") << a.shape(i);
+  os << (a.ndim() == 1 ? ",)" : ")");
+  return os.str();
+}
+
+char kind_of(const py::array& a)
+{
+  return a.dtype().kind();
+}
+
+} // namespace
+
+Double_array vertex_array(py::handle obj)
+{
+  const py::array a = as_numpy_array(obj);
+  if(a.ndim() != 2 || a.shape(1) != 3)
+    fail(HOT::ERROR_WRONG_PARAMETER, "V must be an array of shape (n, 3) (one row x y z per vertex), got shape " + shape_of(a));
+  const char kind = kind_of(a);
+  if(kind != 'f' && kind != 'i' && kind != 'u')
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string("V must hold real numbers, got dtype '") + std::string(py::str(a.dtype())) + "'");
+  // (no copy when `a` is a C-contiguous float64 array already: ensure() returns it)
+  Double_array d = Double_array::ensure(a);
+  if(!d)
+    fail(HOT::ERROR_WRONG_PARAMETER, "V could not be converted to float64");
+  return d;
+}
+
+Index_array face_array(py::handle obj)
+{
+  const py::array a = as_numpy_array(obj);
+  if(a.ndim() != 2)
+    fail(HOT::ERROR_WRONG_PARAMETER, "F must be an array of shape (m, 3) (one row of vertex indices per face), got shape " + shape_of(a));
+  const char kind = kind_of(a);
+  if(kind != 'i' && kind != 'u' && a.size() > 0)
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string("F must hold integer vertex indices, got dtype '") + std::string(py::str(a.dtype())) + "'");
+  Index_array d = Index_array::ensure(a);
+  if(!d)
+    fail(HOT::ERROR_WRONG_PARAMETER, "F could not be converted to int64");
+  return d;
+}
+
+std::vector<std::int64_t> int_list(py::handle obj, const char* what)
+{
+  const py::array a = as_numpy_array(obj);
+  std::vector<std::int64_t> r;
+  if(a.size() == 0)
+    return r;
+  if(a.ndim() != 1)
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " must be a sequence of integers (one dimension), got shape " + shape_of(a));
+  const char kind = kind_of(a);
+  if(kind != 'i' && kind != 'u')
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " must hold integers, got dtype '" + std::string(py::str(a.dtype())) + "'");
+  const Index_array d = Index_array::ensure(a);
+  if(!d)
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " could not be converted to int64");
+  r.assign(d.data(), d.data() + d.size());
+  return r;
+}
+
+std::vector<std::size_t> index_list(py::handle obj, const char* what, HOT::Error_code code)
+{
+  const std::string plural = std::string("the ") + what + "s";
+  std::vector<std::size_t> r;
+  const std::vector<std::int64_t> v = int_list(obj, plural.c_str());
+  for(std::size_t i = 0; i < v.size(); ++i) {
+    if(v[i] < 0)
+      fail(code, std::string(what) + " " + std::to_string(i) + " is " + std::to_string(v[i]) + ", not a vertex index (a non-negative integer)");
+    r.push_back(static_cast<std::size_t>(v[i]));
+  }
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------
+// meshes from arrays, as the command line's reader builds them from a file's soup
+// ---------------------------------------------------------------------------------------
+
+void mesh_from_arrays(const double* V, std::size_t n, const std::int64_t* F, std::size_t m, std::size_t k,
+                      std::optional<HOT::Orbifold_type> required_type, Surface_mesh& mesh, HOT::Mesh_info& info)
+{
+  hot_tools::Polygon_soup soup;
+  soup.points.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    soup.points[i] = {{V[3 * i], V[3 * i + 1], V[3 * i + 2]}};
+  soup.face_vertices.resize(m * k);
+  soup.face_begin.reserve(m + 1);
+  for(std::size_t j = 0; j < m; ++j) {
+    for(std::size_t c = 0; c < k; ++c) {
+      const std::int64_t v = F[j * k + c];
+      if(v < 0 || static_cast<std::uint64_t>(v) >= n)
+        fail(HOT::ERROR_WRONG_PARAMETER, "F[" + std::to_string(j) + ", " + std::to_string(c) + "] = " + std::to_string(v) +
+                                           " is not a vertex index: V has " + std::to_string(n) + " vertices (valid indices are 0 to " +
+                                           std::to_string(n == 0 ? 0 : n - 1) + ")");
+      soup.face_vertices[j * k + c] = static_cast<std::size_t>(v);
+    }
+    soup.face_begin.push_back((j + 1) * k); // (what Polygon_soup::end_face() records once face j is pushed)
+  }
+  // the reader's steps without the file: validate_polygon_soup() and the builder, then check_mesh()
+  require(hot_tools::polygon_soup_to_mesh(soup, mesh));
+  require(HOT::check_mesh(mesh, required_type, &info));
+}
+
+std::optional<HOT::Orbifold_type> parse_orbifold(const std::string& s)
+{
+  if(s == "auto")
+    return std::nullopt;
+  if(s == "sphere" || s == "closed")
+    return HOT::Sphere_type;
+  if(s == "disk")
+    return HOT::Disk_type;
+  fail(HOT::ERROR_WRONG_PARAMETER, "orbifold must be 'auto', 'sphere' (or 'closed') or 'disk', got '" + s + "'");
+}
+
+// ---------------------------------------------------------------------------------------
+// read_mesh, select_landmarks
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// the vertices (n x 3) and faces (m x 3, each with its vertices from source(halfedge(f)), the
+// first vertex of the file's face) of a mesh read by read_input_mesh()
+py::tuple mesh_arrays(const Surface_mesh& mesh)
+{
+  std::vector<double> V;
+  V.reserve(3 * num_vertices(mesh));
+  for(SM_vertex v : vertices(mesh)) {
+    const Kernel::Point_3& p = mesh.point(v);
+    V.push_back(p.x());
+    V.push_back(p.y());
+    V.push_back(p.z());
+  }
+  std::vector<std::int64_t> F;
+  F.reserve(3 * num_faces(mesh));
+  for(SM_face f : faces(mesh))
+    for(SM_halfedge h : halfedges_around_face(prev(halfedge(f, mesh), mesh), mesh))
+      F.push_back(static_cast<std::int64_t>(target(h, mesh).idx()));
+  const py::ssize_t n = static_cast<py::ssize_t>(num_vertices(mesh)), m = static_cast<py::ssize_t>(num_faces(mesh));
+  return py::make_tuple(owning_array(std::move(V), {n, 3}), owning_array(std::move(F), {m, 3}));
+}
+
+std::string path_string(py::handle path)
+{
+  // str, bytes or os.PathLike, as the file system's bytes
+  const py::bytes b = py::module_::import("os").attr("fsencode")(path);
+  return std::string(b);
+}
+
+py::object read_mesh(py::handle path, bool repair, const std::string& orbifold, double max_hole, bool largest_component,
+                     bool return_file_index)
+{
+  const std::string p = path_string(path);
+  const std::optional<HOT::Orbifold_type> type = parse_orbifold(orbifold);
+  if(!(max_hole >= 0) || !(max_hole <= 1e6))
+    fail(HOT::ERROR_WRONG_PARAMETER, "max_hole must be a number >= 0 (a length in bounding box diagonals), got " + std::to_string(max_hole));
+  if(largest_component && !repair)
+    fail(HOT::ERROR_WRONG_PARAMETER, "largest_component needs repair=True");
+  hot_tools::Repair_options opt;
+  opt.repair = repair;
+  opt.largest_component = largest_component;
+  opt.max_hole = max_hole;
+  Surface_mesh mesh;
+  hot_tools::Input_mesh in;
+  {
+    py::gil_scoped_release release;
+    require(hot_tools::read_input_mesh(p, type, opt, mesh, in)); // the CLI's reader and checks
+  }
+  py::tuple VF = mesh_arrays(mesh);
+  if(!return_file_index)
+    return std::move(VF);
+  std::vector<std::int64_t> index(in.prep.output_index.begin(), in.prep.output_index.end());
+  const py::ssize_t n = static_cast<py::ssize_t>(index.size());
+  return py::make_tuple(VF[0], VF[1], owning_array(std::move(index), {n}));
+}
+
+py::array select_landmarks(py::handle V, py::handle F, long long k)
+{
+  const Double_array Va = vertex_array(V);
+  const Index_array Fa = face_array(F);
+  if(k < 1)
+    fail(HOT::ERROR_WRONG_PARAMETER, "k must be at least 1, got " + std::to_string(k));
+  std::vector<std::int64_t> r;
+  {
+    py::gil_scoped_release release;
+    Surface_mesh mesh;
+    HOT::Mesh_info info;
+    mesh_from_arrays(Va.data(), static_cast<std::size_t>(Va.shape(0)), Fa.data(), static_cast<std::size_t>(Fa.shape(0)),
+                     static_cast<std::size_t>(Fa.shape(1)), std::nullopt, mesh, info);
+    // as the CLI's `landmarks --count k`
+    if(static_cast<unsigned long long>(k) > num_vertices(mesh))
+      fail(HOT::ERROR_WRONG_PARAMETER, "k is larger than the number of vertices (" + std::to_string(num_vertices(mesh)) + ")");
+    const std::vector<SM_vertex> lm = HOT::select_landmarks(mesh, static_cast<std::size_t>(k));
+    if(lm.size() != static_cast<std::size_t>(k))
+      fail(HOT::ERROR_WRONG_PARAMETER, "the boundary has fewer than " + std::to_string(k) + " vertices");
+    for(SM_vertex v : lm)
+      r.push_back(static_cast<std::int64_t>(v.idx()));
+  }
+  const py::ssize_t n = static_cast<py::ssize_t>(r.size());
+  return owning_array(std::move(r), {n});
+}
+
+} // namespace
+
+void register_io(py::module_& m)
+{
+  m.def("read_mesh", &read_mesh, py::arg("path"), py::kw_only(), py::arg("repair") = false, py::arg("orbifold") = "auto",
+        py::arg("max_hole") = 0.5, py::arg("largest_component") = false, py::arg("return_file_index") = false,
+        R"doc(read_mesh(path, *, repair=False, orbifold="auto", max_hole=0.5, largest_component=False, return_file_index=False)
+
+Reads a triangle mesh file with the command-line program's reader and checks
+(OFF, OBJ, PLY, STL, GOCAD .ts; the format by the extension) and returns (V, F):
+
+  V  float64 array of shape (n, 3), the vertices in the file's order;
+  F  int64 array of shape (m, 3), the faces in the file's order, each with its
+     vertices in the file's order (the same first vertex).
+
+The arrays own their memory (no copy is made on the way to numpy). The mesh must be
+a closed surface or a disk (one boundary loop), as `embed` needs: any other input
+raises Error with the reason (non-manifold edge or vertex, inconsistent orientation,
+NaN coordinate, several components, ...), the file name first.
+
+orbifold: "auto" (closed or disk, from the mesh), "sphere" (or "closed") or "disk":
+  the type the mesh is checked for.
+repair: prepares the mesh first as the command line's --repair does (merges
+  duplicated border vertices, orients, removes bad faces, splits non-manifold
+  vertices, triangulates, fills holes up to max_hole bounding box diagonals, keeps
+  the largest component with largest_component=True). V and F are then the prepared
+  mesh's, in its own vertex order; with return_file_index=True a third array gives,
+  for every vertex of V, its number in the command line's files (the file's vertex,
+  or a number after them for a vertex the repair added). A clean mesh is returned as
+  without repair.)doc");
+
+  m.def("select_landmarks", &select_landmarks, py::arg("V"), py::arg("F"), py::arg("k"),
+        R"doc(select_landmarks(V, F, k)
+
+Returns k well-spread landmarks of the mesh (V, F) as an int64 array of vertex
+indices: the same as the command line's `landmarks --count k` on that mesh. A closed
+mesh gets farthest-point samples on graph distance; a mesh with a boundary gets k
+vertices of its longest boundary loop spaced evenly by arc length, in boundary order
+(usable as disk-type corners).
+
+The mesh is built and checked as `embed` builds it; errors raise Error (also when k
+is larger than the number of vertices, or than the boundary's).)doc");
+}
+
+} // namespace hot_python
+
+PYBIND11_MODULE(_core, m)
+{
+  // the docstrings give the Python signatures (pybind11's would show the arguments' C++ types)
+  pybind11::options options;
+  options.disable_function_signatures();
+  m.doc() = "Hyperbolic orbifold Tutte embeddings and bijective maps between surfaces (the C++ core of "
+            "hyperbolic_orbifold_tutte: import that package, not this module)";
+  hot_python::register_errors(m);
+  hot_python::register_io(m);
+  hot_python::register_embedding(m);
+  hot_python::register_maps(m);
+  hot_python::register_collection(m);
+  hot_python::register_distortion(m);
+}

@@ -1,0 +1,63 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_EMBED_JOB_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_EMBED_JOB_H
+
+// The `embed` command's job and its one call of the library: shared by the command-line
+// program (tools/hyperbolic_orbifold_tutte.cpp) and the Python module (python/src/), so that
+// both compute an embedding with the same named parameters, hence the same numbers.
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+
+#include "command_line.h"
+#include "io/prepared_input.h"
+#include "io/reports.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hot_cli {
+
+// the options of `embed`
+struct Embed_job
+{
+  hot_tools::Embedding_request request; // the mesh, weights and order (empty: the type's default)
+  std::string cones_path, out_path;
+  std::optional<std::string> svg_path, report_path;
+  std::optional<HOT::Orbifold_type> required_type;
+  HOT::Weight_type weights = HOT::Cotangent;
+  bool recentre = false;
+  std::vector<int> orders; // --cone-orders, per landmark of the file (empty: 2 for all)
+  hot_tools::Repair_options repair;
+  std::optional<std::string> cut_graph_path, cut_graph_out; // genus g >= 1: --cut-graph, --cut-graph-out
+  std::vector<std::size_t> explicit_order; // --order I0,I1,...: the landmarks' positions in the order of the cut
+};
+
+// the certified embedding of `m` with the job's options (the failure's reason otherwise):
+// `job.request.type` the orbifold type, `job.request.order` "tsp" or "given"; `charts` receives
+// the corners' chart points (charts around cone images are allowed)
+template <class TriangleMesh, class Vertex, class UVMap, class ChartMap>
+HOT::Embedding_statistics embed_mesh(const Embed_job& job, TriangleMesh& m, const std::vector<Vertex>& landmarks,
+                                     UVMap uv, ChartMap charts, const std::vector<std::vector<Vertex> >& cut_graph)
+{
+  HOT::Embedding_statistics st;
+  const HOT::Landmark_order order = job.request.order == "tsp" ? HOT::Tsp_order : HOT::Given_order;
+  const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
+    m, landmarks, uv,
+    HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(job.orders, HOT::parameters::chart_map(
+      charts,
+      HOT::parameters::recentring(
+        job.recentre,
+        HOT::parameters::embedding_statistics(
+          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type)))))))));
+  if(ec != HOT::OK)
+    throw Failure{ec, st.message};
+  return st;
+}
+
+} // namespace hot_cli
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_EMBED_JOB_H
