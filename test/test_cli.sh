@@ -506,7 +506,10 @@ PY
     # each cone line names the landmark at that cone: its vertex is that line of the landmark file
     awk 'NR==FNR { for(i = 1; i <= NF; ++i) v[i-1] = $i; next } /^# hot cone / { if(v[$5] != $6) bad++ } END { exit bad > 0 }' \
       "$tmp/c.txt" "$tmp/a.obj" || fail "a cone line's vertex is not its landmark's"
-    "$prog" embed --mesh "$tmp/bent.off" --cones "$tmp/c.txt" --order "$pos" --out "$tmp/b.obj" >/dev/null || fail "embed target --order $pos"
+    "$prog" embed --mesh "$tmp/bent.off" --cones "$tmp/c.txt" --order "$pos" --out "$tmp/b.obj" --report "$tmp/b.json" >/dev/null || fail "embed target --order $pos"
+    grep -q '"order": "explicit"' "$tmp/b.json" || fail "the report's order is not explicit"
+    [ "$(grep -o '"cones": \[[^]]*\]' "$tmp/b.json")" = "$(grep -o '"cones": \[[^]]*\]' "$tmp/a.json")" ] || fail "the report's cones are not as given"
+    [ "$(grep -o '"landmark_positions_used": \[[^]]*\]' "$tmp/b.json")" = "$(grep -o '"landmark_positions_used": \[[^]]*\]' "$tmp/a.json")" ] || fail "not the order asked for"
     "$prog" map --source-embedding "$tmp/a.obj" --target-embedding "$tmp/b.obj" --out "$tmp/s.txt" --report "$tmp/s.json" >/dev/null || fail "map from stored embeddings"
     cmp -s "$tmp/m.txt" "$tmp/s.txt" || fail "the map from stored embeddings differs from map's"
     grep -q '"unreliable_vertex_count": 0' "$tmp/s.json" || fail "report"

@@ -12,6 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 
 #include "command_line.h"
+#include "io/embedding_cones.h"
 #include "io/prepared_input.h"
 #include "io/reports.h"
 
@@ -56,6 +57,23 @@ HOT::Embedding_statistics embed_mesh(const Embed_job& job, TriangleMesh& m, cons
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
   return st;
+}
+
+// the orbifold and the cones of an embedding, for the head of its OBJ file (what a map from
+// the stored embedding needs): `cones` = the landmarks as given, as vertex numbers of the files
+inline hot_tools::Embedding_cones embedding_cones(HOT::Orbifold_type type, const HOT::Embedding_statistics& st,
+                                                 const std::vector<std::size_t>& cones)
+{
+  hot_tools::Embedding_cones c;
+  c.type = type;
+  c.genus = st.genus;
+  c.reversed = st.landmark_order_reversed;
+  c.landmark = st.landmark_order;
+  for(std::size_t i = 0; i < st.landmark_order.size(); ++i) {
+    c.vertex.push_back(cones[st.landmark_order[i]]);
+    c.order.push_back(i < st.cone_orders.size() ? st.cone_orders[i] : 2);
+  }
+  return c;
 }
 
 } // namespace hot_cli

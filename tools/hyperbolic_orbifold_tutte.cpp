@@ -353,15 +353,7 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
 
   Output_files files;
   const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
-  hot_tools::Embedding_cones cones; // (what a map from the stored embedding needs)
-  cones.type = type;
-  cones.genus = st.genus;
-  cones.reversed = st.landmark_order_reversed;
-  cones.landmark = st.landmark_order;
-  for(std::size_t i = 0; i < st.landmark_order.size(); ++i) {
-    cones.vertex.push_back(job.request.cones[st.landmark_order[i]]);
-    cones.order.push_back(i < st.cone_orders.size() ? st.cone_orders[i] : 2);
-  }
+  const hot_tools::Embedding_cones cones = embedding_cones(type, st, job.request.cones);
   files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr, &ch, &cones); });
   if(job.svg_path) {
     std::ostringstream title;
@@ -430,6 +422,7 @@ int run_embed(int argc, char** argv)
     std::vector<std::size_t> as_given(job.explicit_order.size());
     for(std::size_t j = 0; j < as_given.size(); ++j) as_given[job.explicit_order[j]] = job.request.cones[j];
     job.request.cones = as_given;
+    job.request.order = "explicit"; // (the report's "order", as the Python module's)
   }
   write_embed_outputs(job, m, uv, charts, landmarks, st, in);
   std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "

@@ -202,7 +202,8 @@ void write_obj(const Embedding& e, py::handle path)
   const hot_tools::Embedding_charts<Chart_map> ch{e.charts, e.stats.charts, e.stats.chart_corners};
   try {
     // as the CLI's `embed` writes OUT.obj (write_embed_outputs(), without --repair)
-    hot_cli::write_file_atomically(p, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, e.mesh, e.uv, nullptr, &ch); });
+    const hot_tools::Embedding_cones cones = hot_cli::embedding_cones(e.type, e.stats, e.landmark_ids);
+    hot_cli::write_file_atomically(p, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, e.mesh, e.uv, nullptr, &ch, &cones); });
   } catch(const std::runtime_error& x) {
     fail(HOT::ERROR_WRITE_FAILED, x.what());
   }

@@ -86,7 +86,7 @@ struct Embedding_request
   std::vector<std::size_t> cones;          // the landmarks as given: 0-based vertex indices
   HOT::Orbifold_type type = HOT::Sphere_type;
   std::string weights = "cotan";           // cotan, mvc or uniform
-  std::string order;                       // given or tsp
+  std::string order;                       // given, tsp or explicit (--order I0,I1,...)
   const Input_mesh* input = nullptr;       // with --repair: the preparation (reported)
   const std::vector<Landmark_snap_record>* snaps = nullptr; // with --snap-landmarks
 };

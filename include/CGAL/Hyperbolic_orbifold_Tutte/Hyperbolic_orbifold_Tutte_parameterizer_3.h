@@ -17,7 +17,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
-#include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_enums.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/properties.h>

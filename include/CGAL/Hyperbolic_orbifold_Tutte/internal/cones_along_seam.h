@@ -10,7 +10,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 
-#include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_enums.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <cstddef>
