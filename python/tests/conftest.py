@@ -41,3 +41,12 @@ def meshes():
 @pytest.fixture(scope="session")
 def source_dir():
     return _env("HOT_SOURCE_DIR")
+
+
+@pytest.fixture(scope="module")
+def bear(meshes):
+    """bear.off (libcgal-demo), 7 landmarks of select_landmarks(), its embedding"""
+    import hyperbolic_orbifold_tutte as hot
+    V, F = hot.read_mesh(os.path.join(meshes, "bear.off"))
+    lm = hot.select_landmarks(V, F, 7)
+    return V, F, lm, hot.embed(V, F, lm)

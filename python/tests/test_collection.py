@@ -11,16 +11,7 @@ import numpy as np
 import pytest
 
 import hyperbolic_orbifold_tutte as hot
-from hot_testing import read_off, run_cli
-
-
-def write_off(path, V, F):
-    with open(path, "w") as f:
-        f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
-        for p in V:
-            f.write("%.9g %.9g %.9g\n" % tuple(p))
-        for t in F:
-            f.write("3 %d %d %d\n" % tuple(t))
+from hot_testing import read_off, run_cli, write_off
 
 
 @pytest.fixture(scope="module")

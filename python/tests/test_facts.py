@@ -19,13 +19,6 @@ import hyperbolic_orbifold_tutte as hot
 
 
 @pytest.fixture(scope="module")
-def bear(meshes):
-    V, F = hot.read_mesh(os.path.join(meshes, "bear.off"))
-    lm = hot.select_landmarks(V, F, 7)
-    return V, F, lm, hot.embed(V, F, lm)
-
-
-@pytest.fixture(scope="module")
 def mushroom(meshes):
     V, F = hot.read_mesh(os.path.join(meshes, "mushroom.off"))
     lm = hot.select_landmarks(V, F, 6)

@@ -9,20 +9,12 @@ V.nbytes. The same call with a Fortran-ordered or float32 V (which must be conve
 that the measure sees such a copy."""
 
 import gc
-import os
 import tracemalloc
 
 import numpy as np
 import pytest
 
 import hyperbolic_orbifold_tutte as hot
-
-
-@pytest.fixture(scope="module")
-def bear(meshes):
-    V, F = hot.read_mesh(os.path.join(meshes, "bear.off"))
-    lm = hot.select_landmarks(V, F, 7)
-    return V, F, lm, hot.embed(V, F, lm)
 
 
 def base_chain(a):
