@@ -25,6 +25,7 @@
 
 #include "common.h"
 #include "polygon_soup.h"
+#include "timings.h"
 #include "validate_polygon_soup.h"
 
 #include <CGAL/boost/graph/helpers.h>
@@ -80,6 +81,7 @@ HOT::Status polygon_soup_to_mesh(const Polygon_soup& soup, PolygonMesh& mesh)
   HOT::Status r = validate_polygon_soup(soup, &topo);
   if(!r)
     return r;
+  timings().phase("validate the soup");
 
   try {
     const std::size_t np = soup.number_of_points(), nf = soup.number_of_faces();
@@ -147,7 +149,7 @@ HOT::Status polygon_soup_to_mesh(const Polygon_soup& soup, PolygonMesh& mesh)
   // The result is a valid polygon mesh (CGAL::is_valid_polygon_mesh() holds when every
   // point is referenced; the test suite checks it). It is not re-checked here:
   // check_mesh() does it.
-
+  timings().phase("build the mesh");
   return HOT::Status();
 }
 
