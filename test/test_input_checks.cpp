@@ -1147,8 +1147,9 @@ TEST_CASE(large_meshes_are_built_and_checked)
 }
 
 // ===========================================================================
-// numbers written: the writers' numbers are the bytes of printf("%.17g"); the embedding
-// OBJ's bytes are those of the former std::ostream writer
+// numbers written and read: the writers' numbers are the bytes of printf("%.17g"),
+// the readers' fast paths give the doubles of strtod; the embedding OBJ's bytes are those
+// of the former std::ostream writer
 // ===========================================================================
 
 namespace {
@@ -1246,6 +1247,66 @@ TEST_CASE(number_writer)
   CHECK_MSG(printf_mismatches == 0, printf_mismatches << " of " << values.size() << " differ from printf(\"%.17g\"), first: " << first);
   CHECK_MSG(stream_mismatches == 0, stream_mismatches << " differ from std::ostream, first: " << first);
   CHECK_MSG(round_trip_failures == 0, round_trip_failures << " do not round-trip, first: " << first);
+}
+
+TEST_CASE(reader_numbers_match_strtod)
+{
+  // random decimal strings (signs, leading and trailing dots, exponents beyond the range of
+  // double, long mantissas) as coordinates of OFF, OBJ and ASCII PLY files: the readers (their
+  // fast paths, and the general path where a '+' sends them) give exactly strtod's doubles
+  std::mt19937_64 rng(7);
+  auto digits = [&](int n) {
+    std::string d;
+    for(int i = 0; i < n; ++i)
+      d += char('0' + rng() % 10);
+    return d;
+  };
+  std::vector<std::string> numbers = { "0", "-0", "1e400", "-1e400", "1e-400", "4.9406564584124654e-324", "2e-324",
+                                       "2.2250738585072011e-308", "1.7976931348623157e308", "1.7976931348623159e308",
+                                       "nan", "inf", "-inf", "+1.5", "0.1", ".5", "5.", "-.5e-3", "1E5", "+0" };
+  for(int i = 0; i < 60000; ++i) {
+    std::string s;
+    const int sign = int(rng() % 10);
+    if(sign == 0) s += '-';
+    if(sign == 1 && i % 50 == 0) s += '+';
+    const int n = 1 + int(rng() % 25), dot = int(rng() % (n + 2));
+    const std::string m = digits(n);
+    s += dot <= n ? m.substr(0, std::size_t(dot)) + "." + m.substr(std::size_t(dot)) : m;
+    if(s.back() == '.' && s.size() == 1) s += '0';
+    if(rng() % 3 != 0) {
+      s += (rng() % 2) ? 'e' : 'E';
+      const int e = int(rng() % 700) - 350;
+      s += (e >= 0 && rng() % 2) ? "+" + std::to_string(e) : std::to_string(e);
+    }
+    numbers.push_back(s);
+  }
+  while(numbers.size() % 3 != 0)
+    numbers.push_back("1");
+  const std::size_t np = numbers.size() / 3;
+  std::string off = "OFF\n" + std::to_string(np) + " 1 0\n", obj, ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(np) +
+    "\nproperty double x\nproperty double y\nproperty double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  for(std::size_t i = 0; i < np; ++i) {
+    const std::string line = numbers[3 * i] + " " + numbers[3 * i + 1] + " " + numbers[3 * i + 2] + "\n";
+    off += line;
+    obj += "v " + line;
+    ply += line;
+  }
+  off += "3 0 1 2\n";
+  obj += "f 1 2 3\n";
+  ply += "3 0 1 2\n";
+  const std::string files[3][2] = { { "numbers.off", off }, { "numbers.obj", obj }, { "numbers.ply", ply } };
+  for(const auto& f : files) {
+    hot_tools::Polygon_soup soup;
+    CHECK_RESULT(hot_tools::read_polygon_soup_file(write_file(f[0], f[1]), soup), HOT::OK, "");
+    std::size_t mismatches = 0;
+    std::string first;
+    for(std::size_t i = 0; i < numbers.size() && soup.points.size() == np; ++i) {
+      const double expected = std::strtod(numbers[i].c_str(), nullptr), got = soup.points[i / 3][i % 3];
+      if(std::memcmp(&expected, &got, 8) != 0 && !(std::isnan(expected) && std::isnan(got)) && mismatches++ == 0)
+        first = numbers[i];
+    }
+    CHECK_MSG(soup.points.size() == np && mismatches == 0, f[0] << ": " << mismatches << " numbers differ from strtod's, first '" << first << "'");
+  }
 }
 
 namespace {
