@@ -14,8 +14,9 @@
 //   around one vertex takes 2.6 s, so 200K take about a minute; 0.1 s here), and its
 //   precondition check `is_polygon_soup_a_polygon_mesh()` uses a std::set of all edges.
 //   Our builder links the halfedges directly from the edge table computed by the
-//   validation, in linear time (1M vertices: about 0.5 s to parse a 60 MB OFF file,
-//   0.2 s to validate, 0.2 s to build a Surface_mesh).
+//   validation, in linear time (1M vertices, a 108 MB OFF file with 17 digits, measured
+//   in a fresh process: 0.11 s to read the file, 0.2 s to parse it, 0.23 s to validate,
+//   0.15 s to build a Surface_mesh).
 //
 // Order guarantee (tested): vertex i of the mesh (the i-th of `vertices(mesh)`) is the
 // file's vertex i, face j is the file's face j with the same cyclic vertex order and the
