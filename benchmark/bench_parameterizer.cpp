@@ -11,6 +11,7 @@
 // Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
 
 #include "bench_common.h"
+#include "generated_blob.h"
 
 #include <CGAL/boost/graph/Seam_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Orbifold_Tutte_parameterizer_3.h>
@@ -70,58 +71,6 @@ static double euclidean_orbifold_time(SM& sm, const std::vector<SM_vertex>& cone
   sm.remove_property_map(sem);
   sm.remove_property_map(svm);
   return time;
-}
-
-// A generated genus-0 test surface of about n vertices: the frequency-f geodesic sphere
-// (10 f^2 + 2 vertices), made a blob with long smooth protrusions by a radial function (so
-// it stays embedded), plus a little noise along the radius.
-static SM generated_blob(std::size_t n, unsigned seed = 5)
-{
-  const int f = std::max(1, static_cast<int>(std::lround(std::sqrt((static_cast<double>(n) - 2) / 10))));
-  SM icosa;
-  CGAL::make_icosahedron(icosa, K::Point_3(0, 0, 0), 1.0);
-  SM sm;
-  std::map<std::array<long long, 3>, SM_vertex> index;
-  auto vertex_at = [&](const K::Vector_3& p) {
-    const K::Vector_3 u = p / std::sqrt(p.squared_length());
-    const std::array<long long, 3> key{{std::llround(u.x() * 1e9), std::llround(u.y() * 1e9), std::llround(u.z() * 1e9)}};
-    auto it = index.find(key);
-    if(it == index.end()) it = index.emplace(key, sm.add_vertex(K::Point_3(u.x(), u.y(), u.z()))).first;
-    return it->second;
-  };
-  for(auto fc : faces(icosa)) {
-    std::array<K::Vector_3, 3> c;
-    int i = 0;
-    for(auto v : vertices_around_face(halfedge(fc, icosa), icosa)) c[i++] = icosa.point(v) - CGAL::ORIGIN;
-    std::vector<std::vector<SM_vertex> > row(f + 1);
-    for(int a = 0; a <= f; ++a)
-      for(int b = 0; b <= f - a; ++b)
-        row[a].push_back(vertex_at(c[0] + (c[1] - c[0]) * (double(a) / f) + (c[2] - c[0]) * (double(b) / f)));
-    for(int a = 0; a < f; ++a)
-      for(int b = 0; b < f - a; ++b) {
-        sm.add_face(row[a][b], row[a + 1][b], row[a][b + 1]);
-        if(b + 1 < f - a) sm.add_face(row[a + 1][b], row[a + 1][b + 1], row[a][b + 1]);
-      }
-  }
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> U(-1, 1);
-  std::vector<K::Vector_3> centre;
-  std::vector<double> height, width;
-  for(int j = 0; j < 9; ++j) {
-    K::Vector_3 c(U(rng), U(rng), U(rng));
-    centre.push_back(c / std::sqrt(c.squared_length()));
-    height.push_back(j < 4 ? 1.5 + U(rng) * 0.5 : 0.3 * U(rng)); // four long protrusions, bumps and dents
-    width.push_back(j < 4 ? 0.04 : 0.2);
-  }
-  const double noise = 0.1 * 2.0 / f; // a tenth of an edge
-  for(SM_vertex v : vertices(sm)) {
-    const K::Vector_3 u = sm.point(v) - CGAL::ORIGIN;
-    double r = 1;
-    for(std::size_t j = 0; j < centre.size(); ++j) r += height[j] * std::exp(-(1 - u * centre[j]) / width[j]);
-    r += noise * U(rng);
-    sm.point(v) = CGAL::ORIGIN + u * r;
-  }
-  return sm;
 }
 
 // one factorisation + solve of the n x n cotangent Laplacian (one vertex pinned)
@@ -192,7 +141,7 @@ int main(int argc, char** argv)
       f = f.substr(0, f.find('@'));
     }
     if(f.rfind("generated:", 0) == 0) { // generated:N, a blob of about N vertices
-      sm = generated_blob(std::strtoul(f.c_str() + 10, nullptr, 10));
+      sm = hot_bench::generated_blob(std::strtoul(f.c_str() + 10, nullptr, 10));
       name = "blob_" + std::to_string(num_vertices(sm) / 1000) + "k";
     } else {
       if(!CGAL::IO::read_polygon_mesh(f, sm) || num_faces(sm) == 0) {

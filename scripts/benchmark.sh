@@ -11,18 +11,95 @@
 #     triangles around one vertex, 2x per step), with the ratio of times per step (linear
 #     time: 4 and 2; Euler::add_face would make the fan quadratic: 4);
 #  5. the whole `embed` process with and without --repair on meshes that need no repair (the
-#     preparation's overhead, target <= 10%), and on meshes that need it.
-# Prints the machine first. Usage: scripts/benchmark.sh [--large] [--quick]
+#     preparation's overhead, target <= 10%), and on meshes that need it;
+#  6. file input and output (bench_io): our OFF, OBJ and PLY readers against CGAL's
+#     read_polygon_soup() and read_polygon_mesh(), and the embedding OBJ writer (MB/s);
+#  7. the whole `embed` process (7 landmarks from `landmarks`) against CGAL's whole Euclidean
+#     orbifold Tutte process (benchmark/cgal_euclidean_orbifold.cpp, CGAL 5.5's example: 4 cones,
+#     the first 4 landmarks, with the seams `cut` gives through them), on bear, armadillo,
+#     bunny00, diplodocus and a generated blob of 250K vertices written as OFF (1M with
+#     --large); alternated runs, the fastest of 3 each, their ratio, and where our process
+#     spends its time (HOT_TIMINGS=1: reading and checking, the library's phases, writing).
+# Prints the machine first.
+# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io]
+#   --whole: only section 7; --io: only section 6 (each runs alone in a few minutes)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-large=0; quick=0
+large=0; quick=0; only=""
 for a in "$@"; do
-  case "$a" in --large) large=1 ;; --quick) quick=1 ;; *) echo "usage: $0 [--large] [--quick]" >&2; exit 2 ;; esac
+  case "$a" in
+    --large) large=1 ;; --quick) quick=1 ;; --whole) only=whole ;; --io) only=io ;;
+    *) echo "usage: $0 [--large] [--quick] [--whole] [--io]" >&2; exit 2 ;;
+  esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
-"$root/scripts/build.sh" bench_parameterizer bench_collection bench_tiles bench_input_checks hyperbolic_orbifold_tutte >/dev/null
+case "$only" in
+  whole) targets=(hyperbolic_orbifold_tutte cgal_euclidean_orbifold bench_io) ;;
+  io) targets=(bench_io) ;;
+  *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte) ;;
+esac
+"$root/scripts/build.sh" "${targets[@]}" >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
 echo "== machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GB", $2/1048576}' /proc/meminfo), $(. /etc/os-release; echo "$PRETTY_NAME"), $(g++ --version | head -1)"
+cli="$build/bin/hyperbolic_orbifold_tutte"
+work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
+now() { date +%s.%N; }
+seconds() { awk -v x="$1" -v y="$2" 'BEGIN { printf "%.3f", y - x }'; }
+io_section() {
+  echo "== file input and output: our readers vs CGAL's, the embedding OBJ writer (fastest of 3)"
+  [ -f "$work/blob250k.off" ] || "$build/bin/bench_io" --write-blob 250000 "$work/blob250k.off" >/dev/null
+  "$build/bin/bench_io" "$build/data/meshes/bear.off" "$build/data/meshes/armadillo.off" "$build/data/meshes/bunny00.off" \
+                        "$build/data/meshes/diplodocus.off" "$work/blob250k.off"
+}
+whole_section() {
+  echo "== whole process: embed (7 landmarks) vs CGAL's Euclidean orbifold Tutte example (4 cones), alternated, fastest of 3"
+  echo "   ours (HOT_TIMINGS, the fastest run): read = read, parse, validate, build, check the mesh and the landmarks;"
+  echo "   the library's phases (setup = checks, landmark order, cut); write = the OBJ; other = the rest of the"
+  echo "   process's wall time (start-up, property maps, the library's bookkeeping outside its phases, exit)"
+  local inputs=("$build/data/meshes/bear.off" "$build/data/meshes/armadillo.off" "$build/data/meshes/bunny00.off" "$build/data/meshes/diplodocus.off")
+  [ -f "$work/blob250k.off" ] || "$build/bin/bench_io" --write-blob 250000 "$work/blob250k.off" >/dev/null
+  [ -f "$work/blob250k.off" ] && inputs+=("$work/blob250k.off")
+  if [ $large = 1 ]; then "$build/bin/bench_io" --write-blob 1000000 "$work/blob1m.off" >/dev/null && inputs+=("$work/blob1m.off"); fi
+  printf '%-16s %8s | %8s %8s %7s | %6s %6s %6s %6s %6s %6s %6s\n' mesh vertices ours_s cgal_s ratio read setup init optim cert write other
+  for m in "${inputs[@]}"; do
+    local name; name=$(basename "$m" .off)
+    local c7="$work/$name.cones.txt" c4="$work/$name.c4.txt" seams="$work/$name.c4.selection.txt"
+    "$cli" landmarks --mesh "$m" --count 7 --out "$c7" >/dev/null 2>&1 || { printf '%-16s landmarks failed\n' "$name"; continue; }
+    # CGAL's cones: the first 4 landmarks; its seams: our cut through the 7 in the given order, up to the 4th
+    "$cli" cut --mesh "$m" --cones "$c7" --order given --out "$work/$name.c7.selection.txt" >/dev/null 2>&1 || { printf '%-16s cut failed\n' "$name"; continue; }
+    head -4 "$c7" | tr '\n' ' ' > "$c4"; echo >> "$c4"
+    awk 'NR == 1 { split($0, c, " "); print c[1], c[2], c[3], c[4]; last = c[4] }
+         NR == 2 { print "" }
+         NR == 3 { n = split($0, e, " "); s = ""; for(i = 1; i < n; i += 2) { s = s (i > 1 ? " " : "") e[i] " " e[i + 1]; if(e[i + 1] == last) break }; print s }' \
+      "$work/$name.c7.selection.txt" > "$seams"
+    local best_ours="" best_cgal="" phases="" vertices="-"
+    for _ in 1 2 3; do
+      local t0 t1 d
+      t0=$(now); HOT_TIMINGS=1 "$cli" embed --mesh "$m" --cones "$c7" --out "$work/e.obj" >"$work/o.txt" 2>"$work/t.txt" || { best_ours=fail; break; }; t1=$(now)
+      d=$(seconds "$t0" "$t1")
+      if [ -z "$best_ours" ] || awk -v a="$d" -v b="$best_ours" 'BEGIN { exit !(a < b) }'; then best_ours=$d; cp "$work/t.txt" "$work/best_t.txt"; fi
+      vertices=$(sed -n 's/.*(\([0-9]*\) vertices.*/\1/p' "$work/o.txt")
+      t0=$(now); "$build/bin/cgal_euclidean_orbifold" "$m" "$c4" "$seams" >/dev/null 2>&1 || { best_cgal=fail; break; }; t1=$(now)
+      d=$(seconds "$t0" "$t1")
+      if [ -z "$best_cgal" ] || awk -v a="$d" -v b="$best_cgal" 'BEGIN { exit !(a < b) }'; then best_cgal=$d; fi
+    done
+    if [ "$best_ours" = fail ] || [ "$best_cgal" = fail ]; then
+      printf '%-16s %8s | ours %s, CGAL %s\n' "$name" "$vertices" "$best_ours" "$best_cgal"; continue
+    fi
+    phases=$(awk -v total="$best_ours" '
+      /^timings:/ { v = $(NF - 1); name = substr($0, 10); sub(/ +[0-9.]+ s$/, "", name); sub(/^ +/, "", name)
+        if(name ~ /^(read the file|parse|validate the soup|build the mesh|check_mesh|addressing|landmarks)$/) read += v
+        else if(name ~ /^setup/) setup = v; else if(name == "initialization") init = v
+        else if(name == "optimization") optim = v; else if(name == "certificate") cert = v
+        else if(name == "write the OBJ") write = v; else if(name ~ /^total/) all = v }
+      END { printf "%6.3f %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f", read, setup, init, optim, cert, write, total - read - setup - init - optim - cert - write }' "$work/best_t.txt")
+    printf '%-16s %8s | %8s %8s %7s | %s\n' "$name" "$vertices" "$best_ours" "$best_cgal" \
+      "$(awk -v a="$best_ours" -v b="$best_cgal" 'BEGIN { printf "%.2f", a / b }')" "$phases"
+  done
+  echo "(ratio: our whole process / CGAL's whole process)"
+}
+if [ "$only" = whole ]; then whole_section; exit 0; fi
+if [ "$only" = io ]; then io_section; exit 0; fi
 meshes=()
 for m in hand homer triceratops camel bear diplodocus armadillo bunny00; do meshes+=("$build/data/meshes/$m.off"); done
 shared="$root/../shared/data/sphere"
@@ -51,8 +128,6 @@ echo "== kernel"
 echo "== input path: soup validation, mesh build, checks (linear time: the ratio is the size ratio)"
 "$build/bin/bench_input_checks"
 echo "== --repair: whole embed process, fastest of 3 runs (7 landmarks from 'landmarks')"
-cli="$build/bin/hyperbolic_orbifold_tutte"
-work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 fastest() { # fastest of 3 runs of the command, in seconds
   local best=""
   for _ in 1 2 3; do
@@ -72,3 +147,5 @@ for m in "${clean[@]}" "$build/data/meshes/pig.off" "$build/data/meshes/mannequi
   ratio=$(awk -v a="$plain" -v b="$repair" 'BEGIN { if(a + 0 > 0) printf "%.2f", b / a; else print "-" }')
   printf '%-24s %10s %10s %8s  %s\n' "$(basename "$m")" "$plain" "$repair" "$ratio" "$what"
 done
+io_section
+whole_section

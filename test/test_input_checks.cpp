@@ -20,16 +20,24 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 
 #include <io/read_and_check.h>
+#include <io/embedding_obj.h>
+#include <io/text_buffer.h>
+
+#include "reference_embedding_obj.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <random>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -1136,6 +1144,248 @@ TEST_CASE(large_meshes_are_built_and_checked)
   std::vector<SM::Vertex_index> lm;
   CHECK_RESULT(HOT::check_landmarks(sm, { 0, 1, 1000, 100000, k + 1 }, HOT::Disk_type, lm), HOT::OK, "");
   CHECK(lm.size() == 5);
+}
+
+// ===========================================================================
+// numbers written and read: the writers' numbers are the bytes of printf("%.17g"),
+// the readers' fast paths give the doubles of strtod; the embedding OBJ's bytes are those
+// of the former std::ostream writer
+// ===========================================================================
+
+namespace {
+
+// doubles to write: edge cases, powers of 2 and 10 with their neighbours, integers, random
+// bit patterns (all exponents, NaNs and infinities among them) and random points of the disk
+std::vector<double> number_writer_values()
+{
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> v = { 0.0, -0.0, 1.0, -1.0, 0.1, -0.1, 1.0 / 3, 2.0 / 3, 0.5, 1e-5, 1e-4, 9.9999999999999995e-5,
+                            1e15, 1e16, 1e17, 1e22, 1e23, 123456789012345678.0, 9007199254740992.0, 9007199254740993.0,
+                            99999999999999999.0, 12345678901234567.0, 0.30000000000000004,
+                            std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
+                            std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::denorm_min(),
+                            std::numeric_limits<double>::epsilon(), 2.2250738585072009e-308, inf, -inf, nan, -nan };
+  for(int e = -1074; e <= 1023; ++e)
+    for(double s : { 1.0, -1.0 }) {
+      const double x = s * std::ldexp(1.0, e);
+      v.insert(v.end(), { x, std::nextafter(x, 0.0), std::nextafter(x, s * inf) });
+    }
+  for(int e = -323; e <= 308; ++e) {
+    const double x = std::strtod(("1e" + std::to_string(e)).c_str(), nullptr);
+    v.insert(v.end(), { x, -x, std::nextafter(x, 0.0), std::nextafter(x, inf), 5 * x, 9.5 * x });
+  }
+  for(int i = -1000; i <= 1000; ++i)
+    v.push_back(i);
+  std::mt19937_64 rng(20260101);
+  for(int i = 0; i < 200000; ++i) {
+    const std::uint64_t bits = rng();
+    double x;
+    std::memcpy(&x, &bits, 8);
+    v.push_back(x);
+  }
+  std::uniform_real_distribution<double> disk(-1, 1);
+  for(int i = 0; i < 100000; ++i)
+    v.push_back(disk(rng));
+  // the writer's exact fast path (1e-6 <= |x| < 1e17) and around it: random mantissas of every
+  // binary exponent from 2^-30 to 2^70, exact ties of the 17th digit (short binary fractions
+  // m 2^-s: printf rounds them to even), 10^k and its neighbours
+  for(int i = 0; i < 200000; ++i) {
+    const std::uint64_t m = (rng() & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1) << 52);
+    const double x = std::ldexp(double(m), int(rng() % 100) - 30 - 52);
+    v.push_back(i % 2 ? x : -x);
+  }
+  for(int i = 0; i < 50000; ++i) {
+    const double m = double(1 + 2 * (rng() % 100000));
+    v.insert(v.end(), { std::ldexp(m, -int(rng() % 80)), std::ldexp(m, int(rng() % 40)) });
+  }
+  for(int k = -8; k <= 18; ++k) {
+    double up = std::pow(10.0, k), down = up;
+    for(int j = 0; j < 30; ++j, up = std::nextafter(up, inf), down = std::nextafter(down, 0.0))
+      v.insert(v.end(), { up, -up, down, -down });
+  }
+  return v;
+}
+
+} // namespace
+
+TEST_CASE(number_writer)
+{
+  // write_double() (tools/io/text_buffer.h: its exact 128-bit fast path, else std::to_chars)
+  // gives the bytes of printf("%.17g") and of an std::ostream with precision 17 (the former
+  // writer's), and strtod and our reader read the same double back
+  const std::vector<double> values = number_writer_values();
+  std::size_t printf_mismatches = 0, stream_mismatches = 0, round_trip_failures = 0;
+  std::string first;
+  for(std::size_t i = 0; i < values.size(); ++i) {
+    const double x = values[i];
+    char expected[64], ours[64];
+    std::snprintf(expected, sizeof(expected), "%.17g", x);
+    *hot_tools::io_impl::write_double(ours, x) = '\0';
+    if(std::strcmp(expected, ours) != 0 && printf_mismatches++ == 0)
+      first = std::string("printf '") + expected + "', to_chars '" + ours + "'";
+    if(i % 8 == 0) { // the former writer: an std::ostream with precision 17
+      std::ostringstream os;
+      os.precision(17);
+      os << x;
+      if(os.str() != ours && stream_mismatches++ == 0)
+        first = "ostream '" + os.str() + "', to_chars '" + ours + "'";
+    }
+    if(std::isfinite(x)) { // 17 digits give the double back, to strtod and to our reader
+      double back = 0;
+      const double b = std::strtod(ours, nullptr);
+      if((!hot_tools::io_impl::parse_real(ours, back) || std::memcmp(&back, &x, 8) != 0 || std::memcmp(&b, &x, 8) != 0) &&
+         round_trip_failures++ == 0)
+        first = std::string("round trip of '") + ours + "'";
+    }
+  }
+  hot_tools::io_impl::Text_buffer t; // the buffer's integers and doubles
+  t.put("v ").put(-0.0).put(' ').put(std::size_t(18446744073709551615ull)).put(' ').put(-9223372036854775807ll - 1).put(' ').put(-1)
+    .put(' ').put(0.1).put('\n');
+  CHECK_MSG(std::string(t.data(), t.size()) == "v -0 18446744073709551615 -9223372036854775808 -1 0.10000000000000001\n",
+            std::string(t.data(), t.size()));
+  CHECK_MSG(values.size() > 600000, values.size());
+  CHECK_MSG(printf_mismatches == 0, printf_mismatches << " of " << values.size() << " differ from printf(\"%.17g\"), first: " << first);
+  CHECK_MSG(stream_mismatches == 0, stream_mismatches << " differ from std::ostream, first: " << first);
+  CHECK_MSG(round_trip_failures == 0, round_trip_failures << " do not round-trip, first: " << first);
+}
+
+TEST_CASE(reader_numbers_match_strtod)
+{
+  // random decimal strings (signs, leading and trailing dots, exponents beyond the range of
+  // double, long mantissas) as coordinates of OFF, OBJ and ASCII PLY files: the readers (their
+  // fast paths, and the general path where a '+' sends them) give exactly strtod's doubles
+  std::mt19937_64 rng(7);
+  auto digits = [&](int n) {
+    std::string d;
+    for(int i = 0; i < n; ++i)
+      d += char('0' + rng() % 10);
+    return d;
+  };
+  std::vector<std::string> numbers = { "0", "-0", "1e400", "-1e400", "1e-400", "4.9406564584124654e-324", "2e-324",
+                                       "2.2250738585072011e-308", "1.7976931348623157e308", "1.7976931348623159e308",
+                                       "nan", "inf", "-inf", "+1.5", "0.1", ".5", "5.", "-.5e-3", "1E5", "+0" };
+  for(int i = 0; i < 60000; ++i) {
+    std::string s;
+    const int sign = int(rng() % 10);
+    if(sign == 0) s += '-';
+    if(sign == 1 && i % 50 == 0) s += '+';
+    const int n = 1 + int(rng() % 25), dot = int(rng() % (n + 2));
+    const std::string m = digits(n);
+    s += dot <= n ? m.substr(0, std::size_t(dot)) + "." + m.substr(std::size_t(dot)) : m;
+    if(s.back() == '.' && s.size() == 1) s += '0';
+    if(rng() % 3 != 0) {
+      s += (rng() % 2) ? 'e' : 'E';
+      const int e = int(rng() % 700) - 350;
+      s += (e >= 0 && rng() % 2) ? "+" + std::to_string(e) : std::to_string(e);
+    }
+    numbers.push_back(s);
+  }
+  while(numbers.size() % 3 != 0)
+    numbers.push_back("1");
+  const std::size_t np = numbers.size() / 3;
+  std::string off = "OFF\n" + std::to_string(np) + " 1 0\n", obj, ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(np) +
+    "\nproperty double x\nproperty double y\nproperty double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  for(std::size_t i = 0; i < np; ++i) {
+    const std::string line = numbers[3 * i] + " " + numbers[3 * i + 1] + " " + numbers[3 * i + 2] + "\n";
+    off += line;
+    obj += "v " + line;
+    ply += line;
+  }
+  off += "3 0 1 2\n";
+  obj += "f 1 2 3\n";
+  ply += "3 0 1 2\n";
+  const std::string files[3][2] = { { "numbers.off", off }, { "numbers.obj", obj }, { "numbers.ply", ply } };
+  for(const auto& f : files) {
+    hot_tools::Polygon_soup soup;
+    CHECK_RESULT(hot_tools::read_polygon_soup_file(write_file(f[0], f[1]), soup), HOT::OK, "");
+    std::size_t mismatches = 0;
+    std::string first;
+    for(std::size_t i = 0; i < numbers.size() && soup.points.size() == np; ++i) {
+      const double expected = std::strtod(numbers[i].c_str(), nullptr), got = soup.points[i / 3][i % 3];
+      if(std::memcmp(&expected, &got, 8) != 0 && !(std::isnan(expected) && std::isnan(got)) && mismatches++ == 0)
+        first = numbers[i];
+    }
+    CHECK_MSG(soup.points.size() == np && mismatches == 0, f[0] << ": " << mismatches << " numbers differ from strtod's, first '" << first << "'");
+  }
+}
+
+namespace {
+
+// the bytes of the OBJ writer and of the former one (test/reference_embedding_obj.h)
+template <class UV, class Charts = std::nullptr_t>
+void check_same_obj_bytes(const std::string& what, const SM& m, const UV& uv, const hot_tools::Input_mesh* in = nullptr,
+                          const hot_tools::Embedding_charts<Charts>* charts = nullptr, const hot_tools::Embedding_cones* cones = nullptr)
+{
+  std::ostringstream now, before;
+  hot_tools::write_embedding_obj(now, m, uv, in, charts, cones);
+  hot_reference::reference_write_embedding_obj(before, m, uv, in, charts, cones);
+  const std::string a = now.str(), b = before.str();
+  std::size_t at = 0;
+  while(at < a.size() && at < b.size() && a[at] == b[at])
+    ++at;
+  CHECK_MSG(a == b, what << ": the OBJ differs from the former writer's at byte " << at << " of " << b.size() << ": '"
+                         << a.substr(at < 40 ? 0 : at - 40, 80) << "' vs '" << b.substr(at < 40 ? 0 : at - 40, 80) << "'");
+  CHECK_MSG(a.size() > std::size_t(60 * num_faces(m)), what << ": " << a.size() << " bytes");
+}
+
+} // namespace
+
+TEST_CASE(embedding_obj_bytes)
+{
+  typedef SM::Property_map<SM::Halfedge_index, K::Point_2> UV;
+  // a real embedding (seams: vertices with several vt)
+  {
+    SM m;
+    CHECK_RESULT(read_and_check(mesh_path("hand.off"), m, HOT::Sphere_type), HOT::OK, "");
+    const auto landmarks = HOT::select_landmarks(m, 7);
+    UV uv = m.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
+    HOT::Embedding_statistics st;
+    CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, landmarks, uv, HOT::parameters::embedding_statistics(&st)) == HOT::OK);
+    hot_tools::Embedding_cones cones;
+    cones.landmark = st.landmark_order;
+    for(std::size_t i : st.landmark_order) {
+      cones.vertex.push_back(landmarks[i].idx());
+      cones.order.push_back(2);
+    }
+    check_same_obj_bytes("hand.off", m, uv, nullptr, static_cast<const hot_tools::Embedding_charts<std::nullptr_t>*>(nullptr), &cones);
+  }
+  // bear.off (several blocks of lines: formatted in parallel with TBB), synthetic points with
+  // seams, charts, and numbers of every size
+  {
+    SM m;
+    CHECK_RESULT(read_and_check(mesh_path("bear.off"), m, HOT::Sphere_type), HOT::OK, "");
+    UV uv = m.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
+    typedef SM::Property_map<SM::Halfedge_index, HOT::Chart_point<K::Point_2> > Chart_map;
+    Chart_map cm = m.add_property_map<SM::Halfedge_index, HOT::Chart_point<K::Point_2> >("h:chart").first;
+    std::mt19937_64 rng(3);
+    for(SM::Face_index f : faces(m))
+      for(SM::Halfedge_index h : halfedges_around_face(halfedge(f, m), m)) {
+        const K::Point_3& p = m.point(target(h, m));
+        const double s = f.idx() % 5 == 0 ? 0.8 : (f.idx() % 17 == 0 ? 1e-300 : 0.9);
+        put(uv, h, K::Point_2(s * p.x() / 400, (f.idx() % 101 == 0 ? -0.0 : s * p.y() / 400)));
+        if(target(h, m).idx() % 50 == 0)
+          put(cm, h, HOT::Chart_point<K::Point_2>{ int(target(h, m).idx() % 3), K::Point_2(p.z() * 1e-120, 1.0 / (1 + f.idx())) });
+      }
+    check_same_obj_bytes("bear.off", m, uv);
+    hot_tools::Embedding_charts<Chart_map> charts{ cm, {}, { 0, 4 } };
+    for(int i = 0; i < 3; ++i)
+      charts.charts.emplace_back(std::complex<double>(1.0 + i / 3.0, -0.25), std::complex<double>(0.5 / (i + 1), 1e-17 * i));
+    check_same_obj_bytes("bear.off with charts", m, uv, nullptr, &charts);
+  }
+  // a prepared mesh (--repair): the file's vertices, then the added ones
+  {
+    SM m;
+    hot_tools::Input_mesh in;
+    hot_tools::Repair_options opt;
+    opt.repair = true;
+    HOT::Mesh_info info;
+    CHECK_RESULT(hot_tools::read_input_mesh(mesh_path("mannequin-devil.off"), std::nullopt, opt, m, in, &info), HOT::OK, "");
+    CHECK(num_vertices(m) > in.file_points.size()); // (its boundary chords are split)
+    UV uv = m.add_property_map<SM::Halfedge_index, K::Point_2>("h:uv").first;
+    for(SM::Halfedge_index h : halfedges(m))
+      put(uv, h, K::Point_2(std::sin(double(h.idx())), std::cos(double(target(h, m).idx())) / 3));
+    check_same_obj_bytes("mannequin-devil.off prepared", m, uv, &in);
+  }
 }
 
 // ===========================================================================

@@ -35,6 +35,7 @@
 #include "io/reports.h"
 #include "io/selection.h"
 #include "io/svg.h"
+#include "io/timings.h"
 
 #include <sys/stat.h>
 
@@ -354,7 +355,9 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
   Output_files files;
   const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
   const hot_tools::Embedding_cones cones = embedding_cones(type, st, job.request.cones);
+  hot_tools::timings().phase("tile");
   files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr, &ch, &cones); });
+  hot_tools::timings().phase("write the OBJ");
   if(job.svg_path) {
     std::ostringstream title;
     if(st.genus > 0)
@@ -374,10 +377,12 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
     });
   }
   files.commit();
+  hot_tools::timings().phase("write svg, report");
 }
 
 int run_embed(int argc, char** argv)
 {
+  hot_tools::timings(); // (HOT_TIMINGS: the phases' clock starts here)
   Embed_job job = parse_embed_options(argc, argv);
   Surface_mesh m;
   std::vector<SM_vertex> landmarks;
@@ -416,7 +421,13 @@ int run_embed(int argc, char** argv)
       throw Failure{HOT::ERROR_WRONG_PARAMETER, "--cut-graph: the mesh has genus 0; a cut graph is for a closed mesh of genus 1 or more"};
     cut_graph = read_cut_graph_of(*job.cut_graph_path, m, in.file);
   }
+  hot_tools::timings().phase("before the library");
   HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts, cut_graph);
+  hot_tools::timings().phase("library (embedding)");
+  hot_tools::timings().add(" setup (check, order, cut)", st.time_setup);
+  hot_tools::timings().add(" initialization", st.time_initialization);
+  hot_tools::timings().add(" optimization", st.time_optimization);
+  hot_tools::timings().add(" certificate", st.time_certificate);
   if(!job.explicit_order.empty()) { // (the positions and the cones as in the file)
     for(std::size_t& i : st.landmark_order) i = job.explicit_order[i];
     std::vector<std::size_t> as_given(job.explicit_order.size());
@@ -432,6 +443,7 @@ int run_embed(int argc, char** argv)
             << (st.recentred ? " in a recentred frame (given in the report)" : "")
             << (st.charted_faces > 0 ? ", " + std::to_string(st.charted_faces) + " faces in charts around cone images" : std::string())
             << "; wrote " << job.out_path << std::endl;
+  hot_tools::timings().phase("stdout");
   return EXIT_SUCCESS;
 }
 

@@ -148,11 +148,68 @@ public:
     return std::string_view(b, static_cast<std::size_t>(e - b));
   }
 
+  const char* end() const { return end_; }
+
+  /// moves to `p`, a position after the current one on the same line
+  void advance_within_line(const char* p) { p_ = p; }
+
+  /// moves to the beginning of the line after the one holding `p` (a position at or after
+  /// the current one, on the current line), or to the end
+  void skip_line_from(const char* p)
+  {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end_ - p));
+    if(nl == nullptr) {
+      p_ = end_;
+    } else {
+      p_ = static_cast<const char*>(nl) + 1;
+      ++line_;
+    }
+  }
+
 private:
   const char* p_;
   const char* end_;
   std::size_t line_;
 };
+
+// The fast paths of the line-based readers read the common simple form of a record directly
+// from the buffer (no token list) and return false on anything else; the caller then reads
+// the record with its general code, which gives the same result, or the error's message.
+
+inline bool is_blank(char c) { return c == ' ' || c == '\t'; }
+
+/// a token ends at white space, a '#' comment or the end of the buffer
+inline bool ends_token(const char* p, const char* end) { return p == end || is_space(*p) || *p == '#'; }
+
+/// the real number at `p` (after blanks) as `parse_real()` reads its token, if the token is
+/// a plain number (no '+' sign, in the range of double); `p` moves past it
+inline bool fast_real(const char*& p, const char* end, double& v)
+{
+  while(p != end && is_blank(*p))
+    ++p;
+  const auto r = std::from_chars(p, end, v, std::chars_format::general);
+  if(r.ec != std::errc() || r.ptr == p || !ends_token(r.ptr, end))
+    return false;
+  p = r.ptr;
+  return true;
+}
+
+/// the non-negative integer at `p` (after blanks) as `parse_unsigned()` reads its token, if
+/// the token is digits only (no sign, below 2^64); `p` moves past it
+inline bool fast_unsigned(const char*& p, const char* end, std::uint64_t& v)
+{
+  while(p != end && is_blank(*p))
+    ++p;
+  const char* q = p;
+  std::uint64_t x = 0;
+  while(q != end && static_cast<unsigned char>(*q - '0') < 10 && q - p < 19) // (19 digits: no overflow)
+    x = 10 * x + static_cast<unsigned char>(*q++ - '0');
+  if(q == p || !ends_token(q, end)) // (also 20 digits or more)
+    return false;
+  v = x;
+  p = q;
+  return true;
+}
 
 inline void split(std::string_view s, std::vector<std::string_view>& fields)
 {

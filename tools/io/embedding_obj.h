@@ -16,8 +16,10 @@
 #include <cstddef>
 #include "embedding_cones.h"
 #include "prepared_input.h"
+#include "text_buffer.h"
 
 #include <ostream>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -35,21 +37,42 @@ std::size_t output_vertex(Vertex_index v, const Input_mesh* in)
   return in ? in->prep.output_index[v.idx()] : std::size_t(v.idx());
 }
 
-// Writes the vertices of `m` (prefix + point per line) in the files' order: the file's
-// vertices, then the ones the repair added (all of `m`'s in order without `in`).
+namespace embedding_obj_impl {
+
+// the lines "prefix x y z" of the vertices of `m` in the files' order (write_addressed_vertices())
+template <class Point_3>
+void write_vertex_lines(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const Input_mesh* in, const char* prefix)
+{
+  typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
+  const std::string_view pre(prefix);
+  auto put_point = [&](io_impl::Text_buffer& t, double x, double y, double z) {
+    t.put(pre).put(x).put(' ').put(y).put(' ').put(z).put('\n');
+  };
+  std::vector<Vertex_index> vs; // (the mesh's, or the ones the repair added after the file's)
+  for(Vertex_index v : vertices(m))
+    if(!in || in->prep.output_index[v.idx()] >= in->prep.number_of_input_vertices)
+      vs.push_back(v);
+  const std::size_t nf = in ? in->file_points.size() : 0;
+  io_impl::write_lines(os, nf + vs.size(), [&](std::size_t i, io_impl::Text_buffer& t) {
+    if(i < nf) {
+      const auto& p = in->file_points[i];
+      put_point(t, p[0], p[1], p[2]);
+    } else {
+      const Point_3& p = m.point(vs[i - nf]);
+      put_point(t, CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+  });
+}
+
+} // namespace embedding_obj_impl
+
+// Writes the vertices of `m` (prefix + point per line, coordinates as printf("%.17g"), the
+// precision the callers set on `os`) in the files' order: the file's vertices, then the ones
+// the repair added (all of `m`'s in order without `in`).
 template <class Point_3>
 void write_addressed_vertices(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m, const Input_mesh* in, const char* prefix)
 {
-  if(!in) {
-    for(auto v : vertices(m))
-      os << prefix << m.point(v) << "\n";
-    return;
-  }
-  for(const auto& p : in->file_points)
-    os << prefix << Point_3(p[0], p[1], p[2]) << "\n";
-  for(auto v : vertices(m))
-    if(in->prep.output_index[v.idx()] >= in->prep.number_of_input_vertices)
-      os << prefix << m.point(v) << "\n";
+  embedding_obj_impl::write_vertex_lines(os, m, in, prefix);
 }
 
 // The charts of an embedding written partly in charts around cone images (HOT::Chart_point):
@@ -85,6 +108,8 @@ void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
                          const Embedding_cones* cones = nullptr)
 {
   typedef CGAL::Surface_mesh<Point_3> Mesh;
+  typedef typename Mesh::Face_index Face_index;
+  typedef typename Mesh::Halfedge_index Halfedge_index;
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
   // a corner's key: its tile point, and its chart point (chart -1: none)
   struct Key
@@ -95,7 +120,7 @@ void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
     bool operator==(const Key& o) const { return p == o.p && chart == o.chart && (chart < 0 || q == o.q); }
   };
   const bool with_charts = charts != nullptr && !charts->charts.empty();
-  auto key = [&](typename Mesh::Halfedge_index h) {
+  auto key = [&](Halfedge_index h) {
     Key k{get(uv, h), -1, Point_2(0, 0)};
     if constexpr(!std::is_same<HalfedgeChartMap, std::nullptr_t>::value)
       if(with_charts) {
@@ -105,54 +130,68 @@ void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
       }
     return k;
   };
-  std::vector<std::vector<std::pair<Key, std::size_t> > > vts(num_vertices(m));
+  // the vt of each corner: the distinct keys of a vertex's corners, numbered in the order the
+  // faces first reach them; a vertex's vt are chained (first_vt, next_vt: no list per vertex)
+  const std::size_t none = std::size_t(-1);
+  std::vector<Face_index> fs(faces(m).begin(), faces(m).end());
+  std::vector<std::size_t> first_vt(m.num_vertices(), none), next_vt;
   std::vector<Key> vt_points;
-  std::vector<std::size_t> corner_vt(num_halfedges(m), 0);
-  for(typename Mesh::Face_index f : faces(m))
-    for(typename Mesh::Halfedge_index h : halfedges_around_face(halfedge(f, m), m)) {
+  std::vector<std::size_t> corner_vt(m.num_halfedges(), 0);
+  vt_points.reserve(num_vertices(m) + num_vertices(m) / 8);
+  next_vt.reserve(vt_points.capacity());
+  for(Face_index f : fs)
+    for(Halfedge_index h : halfedges_around_face(halfedge(f, m), m)) {
       const Key p = key(h);
-      auto& list = vts[target(h, m).idx()];
-      std::size_t id = std::size_t(-1);
-      for(const auto& e : list)
-        if(e.first == p) { id = e.second; break; }
-      if(id == std::size_t(-1)) {
-        id = vt_points.size();
+      std::size_t* link = &first_vt[target(h, m).idx()];
+      while(*link != none && !(vt_points[*link] == p))
+        link = &next_vt[*link];
+      std::size_t id = *link;
+      if(id == none) {
+        id = *link = vt_points.size();
         vt_points.push_back(p);
-        list.push_back(std::make_pair(p, id));
+        next_vt.push_back(none); // (after the write through `link`, which may point into next_vt)
       }
       corner_vt[h.idx()] = id;
     }
-  os.precision(17);
-  os << "# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n";
+  os.precision(17); // (the numbers are written as with this precision: printf's "%.17g")
+  io_impl::Text_buffer head;
+  head.put("# hyperbolic orbifold Tutte embedding: vt = Poincare-disk coordinates\n");
+  head.flush_to(os);
   if(cones)
     write_embedding_cones(os, *cones);
-  write_addressed_vertices(os, m, in, "v ");
-  if(in) // the file's vertices on no face that became a vertex of the mesh (merged duplicates)
+  embedding_obj_impl::write_vertex_lines(os, m, in, "v ");
+  if(in) { // the file's vertices on no face that became a vertex of the mesh (merged duplicates)
     for(std::size_t i = 0; i < in->prep.prepared_vertex.size(); ++i) {
       const std::size_t p = in->prep.prepared_vertex[i];
       if(p != HOT::Mesh_preparation::npos && in->prep.output_index[p] != i)
-        os << "# hot same " << i << " " << in->prep.output_index[p] << "\n";
+        head.put("# hot same ").put(i).put(' ').put(in->prep.output_index[p]).put('\n');
     }
-  for(const auto& p : vt_points)
-    os << "vt " << p.p.x() << " " << p.p.y() << "\n";
+    head.flush_to(os);
+  }
+  io_impl::write_lines(os, vt_points.size(), [&](std::size_t k, io_impl::Text_buffer& t) {
+    t.put("vt ").put(CGAL::to_double(vt_points[k].p.x())).put(' ').put(CGAL::to_double(vt_points[k].p.y())).put('\n');
+  });
   if(with_charts) {
-    os << "# charts around cone images: faces written in a chart use its coordinates (see the manual)\n";
+    head.put("# charts around cone images: faces written in a chart use its coordinates (see the manual)\n");
     for(std::size_t i = 0; i < charts->charts.size(); ++i) {
       const auto& c = charts->charts[i];
-      os << "# hot chart " << i << " " << c.a().real() << " " << c.a().imag() << " " << c.b().real() << " " << c.b().imag() << " "
-         << (i < charts->corners.size() ? charts->corners[i] : -1) << "\n";
+      head.put("# hot chart ").put(i).put(' ').put(double(c.a().real())).put(' ').put(double(c.a().imag())).put(' ')
+        .put(double(c.b().real())).put(' ').put(double(c.b().imag())).put(' ')
+        .put(i < charts->corners.size() ? charts->corners[i] : -1).put('\n');
     }
     for(std::size_t k = 0; k < vt_points.size(); ++k)
       if(vt_points[k].chart >= 0)
-        os << "# hot vtc " << k + 1 << " " << vt_points[k].chart << " " << vt_points[k].q.x() << " " << vt_points[k].q.y() << "\n";
+        head.put("# hot vtc ").put(k + 1).put(' ').put(vt_points[k].chart).put(' ').put(CGAL::to_double(vt_points[k].q.x()))
+          .put(' ').put(CGAL::to_double(vt_points[k].q.y())).put('\n');
+    head.flush_to(os);
   }
-  for(typename Mesh::Face_index f : faces(m)) {
-    os << "f";
+  io_impl::write_lines(os, fs.size(), [&](std::size_t j, io_impl::Text_buffer& t) {
+    t.put('f');
     // read_mesh() builds face f with source(halfedge(f)) = the file's first vertex of the face
-    for(typename Mesh::Halfedge_index h : halfedges_around_face(prev(halfedge(f, m), m), m))
-      os << " " << output_vertex(target(h, m), in) + 1 << "/" << corner_vt[h.idx()] + 1;
-    os << "\n";
-  }
+    for(Halfedge_index h : halfedges_around_face(prev(halfedge(fs[j], m), m), m))
+      t.put(' ').put(output_vertex(target(h, m), in) + 1).put('/').put(corner_vt[h.idx()] + 1);
+    t.put('\n');
+  });
 }
 
 } // namespace hot_tools

@@ -37,6 +37,58 @@ inline bool is_ignored_obj_statement(std::string_view s)
   return false;
 }
 
+/// the fast path of a "v x y z ..." line (plain numbers) or an "f i[/t[/n]] ..." line (plain
+/// positive or negative indices, the relative ones in range): read and true, else false
+/// with nothing read (the general code then reads the line)
+inline bool fast_obj_record(Cursor& cur, Polygon_soup& soup)
+{
+  const char* p = cur.position();
+  const char* end = cur.end();
+  if(end - p < 2 || (p[0] != 'v' && p[0] != 'f') || !is_blank(p[1]))
+    return false;
+  const char* q = p + 1;
+  if(p[0] == 'v') {
+    std::array<double, 3> c;
+    if(!fast_real(q, end, c[0]) || !fast_real(q, end, c[1]) || !fast_real(q, end, c[2]))
+      return false;
+    soup.points.push_back(c);
+    soup.point_lines.push_back(cur.line());
+    cur.skip_line_from(q);
+    return true;
+  }
+  const std::size_t before = soup.face_vertices.size();
+  const std::size_t np = soup.points.size();
+  while(true) {
+    while(q != end && is_blank(*q))
+      ++q;
+    if(q == end || *q == '\n' || *q == '#' || (*q == '\r' && (q + 1 == end || q[1] == '\n')))
+      break; // the end of the line's fields
+    const bool negative = *q == '-';
+    if(negative)
+      ++q;
+    const char* digits = q;
+    std::uint64_t id = 0;
+    while(q != end && static_cast<unsigned char>(*q - '0') < 10 && q - digits < 18) // (18 digits: below 2^63)
+      id = 10 * id + static_cast<unsigned char>(*q++ - '0');
+    if(q == digits || (q != end && static_cast<unsigned char>(*q - '0') < 10) || id == 0 || (negative && id > np)) {
+      soup.face_vertices.resize(before);
+      return false;
+    }
+    if(q != end && *q == '/')
+      while(q != end && (*q == '/' || *q == '-' || (*q >= '0' && *q <= '9')))
+        ++q;
+    if(!ends_token(q, end)) {
+      soup.face_vertices.resize(before);
+      return false;
+    }
+    // forward references are allowed; the range is checked at the end
+    soup.face_vertices.push_back(negative ? static_cast<std::size_t>(np - id) : static_cast<std::size_t>(id - 1));
+  }
+  soup.end_face(cur.line());
+  cur.skip_line_from(q);
+  return true;
+}
+
 /// Wavefront OBJ: "v x y z [...]" and "f i[/t[/n]] ..." (1-based; negative indices are
 /// relative to the vertices read so far, as the format specifies); the statements listed
 /// in `is_ignored_obj_statement()` and '#' comments are skipped; any other is an error.
@@ -44,7 +96,13 @@ inline HOT::Status parse_obj(const std::string& data, Polygon_soup& soup)
 {
   Cursor cur(data.data(), data.data() + data.size());
   std::vector<std::string_view> fields;
-  for(std::size_t line = 0; next_fields(cur, true, fields, line);) {
+  for(std::size_t line = 0; !cur.at_end();) {
+    line = cur.line();
+    if(fast_obj_record(cur, soup))
+      continue;
+    split(cur.rest_of_line(true), fields);
+    if(fields.empty())
+      continue;
     const std::string_view kw = fields[0];
     if(kw == "v") {
       if(fields.size() < 4)

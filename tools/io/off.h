@@ -157,6 +157,24 @@ inline HOT::Status read_off_vertices(Cursor& cur, std::uint64_t nv, bool homogen
       return read_fail("the file ends after " + std::to_string(i) + " of the " + std::to_string(nv)
                        + " vertices announced by the OFF header (truncated file?)");
     const std::size_t line = cur.line();
+    { // the fast path: the coordinates are plain numbers
+      const char* q = cur.position();
+      double c[4] = { 0, 0, 0, 1 };
+      std::size_t k = 0;
+      while(k < needed && fast_real(q, cur.end(), c[k]))
+        ++k;
+      if(k == needed) {
+        if(homogeneous) {
+          c[0] /= c[3];
+          c[1] /= c[3];
+          c[2] /= c[3];
+        }
+        soup.points.push_back({ { c[0], c[1], c[2] } });
+        soup.point_lines.push_back(line);
+        cur.skip_line_from(q);
+        continue;
+      }
+    }
     split(cur.rest_of_line(true), fields);
     if(fields.size() < needed)
       return read_fail(at_line(line) + "vertex " + std::to_string(i) + " has " + std::to_string(fields.size())
@@ -187,6 +205,23 @@ inline HOT::Status read_off_faces(Cursor& cur, std::uint64_t nv, std::uint64_t n
       return read_fail("the file ends after " + std::to_string(f) + " of the " + std::to_string(nf)
                        + " faces announced by the OFF header (truncated file?)");
     const std::size_t line = cur.line();
+    { // the fast path: the count and the indices are digits, the indices in range
+      const char* q = cur.position();
+      const std::size_t before = soup.face_vertices.size();
+      std::uint64_t n = 0, k = 0, id = 0;
+      if(fast_unsigned(q, cur.end(), n) && n <= cur.remaining()) {
+        while(k < n && fast_unsigned(q, cur.end(), id) && id < nv) {
+          soup.face_vertices.push_back(static_cast<std::size_t>(id));
+          ++k;
+        }
+        if(k == n) {
+          soup.end_face(line);
+          cur.skip_line_from(q);
+          continue;
+        }
+      }
+      soup.face_vertices.resize(before);
+    }
     split(cur.rest_of_line(true), fields);
     std::uint64_t n = 0;
     if(parse_unsigned(fields[0], n) != NUMBER_OK)

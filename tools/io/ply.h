@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -96,6 +97,26 @@ public:
   std::string read(Ply_type t, double& d, std::int64_t& i)
   {
     if(format_ == 0) {
+      { // the fast path: a plain number (no sign; the token not ended by '#', which is no comment here)
+        cur_.skip_space(false);
+        const char* q = cur_.position();
+        std::uint64_t u = 0;
+        if(ply_is_integer(t) ? fast_unsigned(q, cur_.end(), u) && u <= std::uint64_t((std::numeric_limits<std::int64_t>::max)())
+                             : fast_real(q, cur_.end(), d)) {
+          if(q == cur_.end() || *q != '#') {
+            cur_.advance_within_line(q);
+            if(ply_is_integer(t)) {
+              i = static_cast<std::int64_t>(u);
+              d = static_cast<double>(i);
+            } else {
+              if(t == PLY_FLOAT32)
+                d = static_cast<double>(static_cast<float>(d)); // the declared precision, as CGAL does
+              i = 0;
+            }
+            return std::string();
+          }
+        }
+      }
       std::string_view tok;
       if(!cur_.token(tok, false))
         return "the file ends early (truncated file?)";

@@ -130,6 +130,7 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
       in.file_points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
     }
     prepared_input_impl::identity_addressing(in.file_points, mi.type, in.prep);
+    timings().phase("addressing");
     return r;
   }
   Polygon_soup soup;

@@ -19,6 +19,7 @@
 #include "polygon_soup.h"
 #include "polygon_soup_to_mesh.h"
 #include "read_polygon_soup.h"
+#include "timings.h"
 #include "validate_polygon_soup.h"
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
@@ -80,6 +81,7 @@ HOT::Status read_and_check_mesh(const std::string& path, std::optional<HOT::Orbi
   if(!r)
     return r;
   r = HOT::check_mesh(mesh, required_type, info);
+  timings().phase("check_mesh");
   if(!r)
     r.message = path + ": " + r.message;
   return r;
@@ -102,6 +104,7 @@ HOT::Status read_and_check_landmarks(const std::string& path, const TriangleMesh
   if(!r)
     return r;
   r = HOT::check_landmarks(mesh, indices, type, landmarks, minimum);
+  timings().phase("landmarks");
   if(!r)
     r.message = path + ": " + r.message;
   return r;

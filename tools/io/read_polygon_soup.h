@@ -42,6 +42,7 @@
 #include "ply.h"
 #include "polygon_soup.h"
 #include "stl.h"
+#include "timings.h"
 
 #include <exception>
 #include <string>
@@ -73,6 +74,7 @@ inline HOT::Status read_polygon_soup_file(const std::string& path, Polygon_soup&
   std::string data;
   if(!(r = read_file_contents(path, data)))
     return r;
+  timings().phase("read the file");
   if(data.empty())
     return read_fail("'" + path + "': the file is empty");
 
@@ -94,6 +96,7 @@ inline HOT::Status read_polygon_soup_file(const std::string& path, Polygon_soup&
     soup.clear();
     r.message = path + ": " + r.message;
   }
+  timings().phase("parse");
   return r;
 }
 
