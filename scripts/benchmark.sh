@@ -20,22 +20,28 @@
 #     bunny00, diplodocus and a generated blob of 250K vertices written as OFF (1M with
 #     --large); alternated runs, the fastest of 3 each, their ratio, and where our process
 #     spends its time (HOT_TIMINGS=1: reading and checking, the library's phases, writing).
+#  8. scaling: the whole `embed` process (7 landmarks, certified) and the independent `certify`
+#     on generated blobs of 250K, 1M and 2M vertices (and 4M with --large): wall time, peak
+#     memory (maximum resident set), the initialisation and Newton's solve, and each time's
+#     ratio to the 250K blob's (linear growth: 4, 8, 16).
 # Prints the machine first.
-# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io]
-#   --whole: only section 7; --io: only section 6 (each runs alone in a few minutes)
+# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling]
+#   --whole: only section 7; --io: only section 6; --scaling: only section 8 (each runs
+#   alone in a few minutes; --scaling --large in about 15)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 large=0; quick=0; only=""
 for a in "$@"; do
   case "$a" in
-    --large) large=1 ;; --quick) quick=1 ;; --whole) only=whole ;; --io) only=io ;;
-    *) echo "usage: $0 [--large] [--quick] [--whole] [--io]" >&2; exit 2 ;;
+    --large) large=1 ;; --quick) quick=1 ;; --whole) only=whole ;; --io) only=io ;; --scaling) only=scaling ;;
+    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling]" >&2; exit 2 ;;
   esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
 case "$only" in
   whole) targets=(hyperbolic_orbifold_tutte cgal_euclidean_orbifold bench_io) ;;
   io) targets=(bench_io) ;;
+  scaling) targets=(hyperbolic_orbifold_tutte bench_io) ;;
   *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte) ;;
 esac
 "$root/scripts/build.sh" "${targets[@]}" >/dev/null
@@ -98,7 +104,37 @@ whole_section() {
   done
   echo "(ratio: our whole process / CGAL's whole process)"
 }
+scaling_section() {
+  echo "== scaling: whole embed process (7 landmarks, certified) and the independent certify on generated blobs"
+  echo "   (peak = maximum resident set of the process; x250K = the time over the 250K blob's)"
+  printf '%-10s %9s | %8s %7s %7s | %7s %7s %7s | %9s %7s\n' blob vertices embed_s x250K peak_GB init_s optim_s init/opt certify_s peak_GB
+  local sizes=(250000 1000000 2000000) base=""
+  [ $large = 1 ] && sizes+=(4000000)
+  for n in "${sizes[@]}"; do
+    local m="$work/blob$n.off" name="blob$((n / 1000))K"
+    "$build/bin/bench_io" --write-blob "$n" "$m" >/dev/null || { echo "$name: could not be generated"; continue; }
+    "$cli" landmarks --mesh "$m" --count 7 --out "$work/c.txt" >/dev/null 2>&1 || { echo "$name: landmarks failed"; continue; }
+    if ! HOT_TIMINGS=1 /usr/bin/time -f 'time %e %M' "$cli" embed --mesh "$m" --cones "$work/c.txt" --out "$work/e.obj" >"$work/o.txt" 2>"$work/t.txt"; then
+      printf '%-10s embed failed: %s\n' "$name" "$(grep -v '^timings:' "$work/t.txt" | head -1)"; continue
+    fi
+    local wall peak init optim vertices cwall cpeak
+    wall=$(awk '/^time / { print $2 }' "$work/t.txt"); peak=$(awk '/^time / { printf "%.2f", $3 / 1048576 }' "$work/t.txt")
+    init=$(awk '/^timings: +initialization / { print $(NF - 1) }' "$work/t.txt"); optim=$(awk '/^timings: +optimization / { print $(NF - 1) }' "$work/t.txt")
+    vertices=$(sed -n 's/.*(\([0-9]*\) vertices.*/\1/p' "$work/o.txt")
+    [ -n "$base" ] || base=$wall
+    if /usr/bin/time -f 'time %e %M' "$cli" certify --mesh "$m" --embedding "$work/e.obj" --cones "$work/c.txt" >"$work/co.txt" 2>"$work/ct.txt"; then
+      cwall=$(awk '/^time / { print $2 }' "$work/ct.txt"); cpeak=$(awk '/^time / { printf "%.2f", $3 / 1048576 }' "$work/ct.txt")
+    else
+      cwall="failed"; cpeak="-"
+    fi
+    printf '%-10s %9s | %8s %7s %7s | %7s %7s %7s | %9s %7s\n' "$name" "$vertices" "$wall" \
+      "$(awk -v a="$wall" -v b="$base" 'BEGIN { printf "%.2f", a / b }')" "$peak" "$init" "$optim" \
+      "$(awk -v a="$init" -v b="$optim" 'BEGIN { if(b > 0) printf "%.2f", a / b; else print "-" }')" "$cwall" "$cpeak"
+    rm -f "$m" "$work/e.obj"
+  done
+}
 if [ "$only" = whole ]; then whole_section; exit 0; fi
+if [ "$only" = scaling ]; then scaling_section; exit 0; fi
 if [ "$only" = io ]; then io_section; exit 0; fi
 meshes=()
 for m in hand homer triceratops camel bear diplodocus armadillo bunny00; do meshes+=("$build/data/meshes/$m.off"); done
@@ -149,3 +185,4 @@ for m in "${clean[@]}" "$build/data/meshes/pig.off" "$build/data/meshes/mannequi
 done
 io_section
 whole_section
+scaling_section

@@ -17,6 +17,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/fixed_boundary_hyperbolic_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/nested_dissection.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/subdivision_method_3.h>
@@ -1659,6 +1660,75 @@ TEST_CASE(leading_block_solve_matches_a_dense_factorisation_of_the_block)
     std::cout << "  leading block " << lead << " of " << n << ": relative difference to the dense solve " << err
               << ", residual " << res << std::endl;
     CHECK_MSG(err < 1e-10 && res < 1e-12, "leading block " << lead << ": " << err << ", residual " << res);
+  }
+}
+
+// Nested dissection (nested_dissection.h), on a grid whose last row is kept last: every row's
+// neighbours in a later set lie in a separator above it (the subtree of that set holds the
+// row's set: George's condition for no fill between the two sides of a separator); the sets
+// come in postorder, the rows kept last in the last set; the first separator is at most a
+// grid row long (a breadth-first level from a corner of a 4-connected grid is an antidiagonal,
+// at most `side` vertices); and a factorisation in that order keeps the leading block: its
+// solve_leading() agrees with a sparse LL^T of the block itself.
+TEST_CASE(nested_dissection_separates_and_keeps_the_leading_block)
+{
+  typedef std::complex<double> Cd;
+  const int side = 90, n = side * side, lead = n - side;
+  for(int shuffled = 0; shuffled < 2; ++shuffled) {
+    std::vector<int> p(lead);
+    for(int i = 0; i < lead; ++i) p[i] = i;
+    if(shuffled)
+      for(int i = lead - 1; i > 0; --i) std::swap(p[i], p[rng.get_int(0, i + 1)]);
+    std::vector<int> order(n);
+    for(int i = 0; i < lead; ++i) order[p[i]] = i;
+    for(int v = lead; v < n; ++v) order[v] = v;
+    const Eigen::SparseMatrix<Cd> A = random_grid_connection_laplacian(side, order, 0.01);
+    std::vector<int> member, first;
+    const int sets = HOT::internal::nested_dissection_sets(A, lead, member, 200, 0.3, &first);
+    CHECK(static_cast<int>(member.size()) == n && static_cast<int>(first.size()) == sets - 1);
+    std::cout << "  " << side << " x " << side << " grid" << (shuffled ? " (rows shuffled)" : "") << ": " << sets
+              << " sets" << std::endl;
+    CHECK_MSG(sets > 30, "the grid was hardly dissected: " << sets << " sets");
+    std::vector<int> size(sets, 0);
+    for(int i = 0; i < n; ++i) {
+      CHECK(member[i] >= 0 && member[i] < sets);
+      CHECK((i >= lead) == (member[i] == sets - 1));
+      ++size[member[i]];
+    }
+    for(int s = 0; s < sets; ++s) CHECK_MSG(size[s] > 0, "set " << s << " is empty");
+    for(int s = 0; s + 1 < sets; ++s) CHECK(first[s] <= s);
+    // the root separator: the set whose subtree is the whole block
+    int root = -1;
+    for(int s = 0; s + 1 < sets; ++s) if(first[s] == 0 && (root < 0 || s > root)) root = s;
+    CHECK_MSG(root == sets - 2, "the last set of the block is not the root separator");
+    CHECK_MSG(size[root] <= side, "first separator of " << size[root] << " vertices on a " << side << "-grid");
+    int edges = 0;
+    for(int j = 0; j < lead; ++j)
+      for(Eigen::SparseMatrix<Cd>::InnerIterator it(A, j); it; ++it) {
+        const int i = static_cast<int>(it.row());
+        if(i == j || i >= lead) continue;
+        const int a = std::min(member[i], member[j]), b = std::max(member[i], member[j]);
+        ++edges;
+        CHECK_MSG(a == b || (first[b] <= a && first[b] < b), "an edge joins set " << a << " to set " << b
+                  << ", which is not a separator above it");
+      }
+    CHECK(edges == 2 * ((side - 1) * (side - 1) + (side - 2) * side)); // (each edge from both ends)
+    if(!HOT::internal::Laplacian_factorization<Cd>::can_keep_leading_block)
+      continue; // (built without CHOLMOD: the sets alone are tested)
+    HOT::internal::Laplacian_factorization<Cd> f;
+    f.keep_leading_block(lead, 1.5);
+    f.nested_dissection_from(0);
+    CHECK(f.analyze(A) && f.keeps_leading_block());
+    f.factorize(A);
+    CHECK(f.definite());
+    Eigen::VectorXcd b(lead);
+    for(int i = 0; i < lead; ++i) b[i] = Cd(rng.get_double(-1, 1), rng.get_double(-1, 1));
+    const Eigen::SparseMatrix<Cd> block = A.topLeftCorner(lead, lead);
+    Eigen::SimplicialLLT<Eigen::SparseMatrix<Cd> > reference(block);
+    const Eigen::VectorXcd x = f.solve_leading(b), y = reference.solve(b);
+    const double err = (x - y).norm() / y.norm();
+    std::cout << "  leading block solve in nested-dissection order: relative difference " << err << std::endl;
+    CHECK_MSG(x.size() == lead && err < 1e-10, "leading block in nested-dissection order: " << err);
   }
 }
 

@@ -151,6 +151,15 @@ inline HOT::Status read_off_vertices(Cursor& cur, std::uint64_t nv, bool homogen
                                       std::vector<std::string_view>& fields)
 {
   const std::size_t needed = homogeneous ? 4 : 3;
+  auto add_vertex = [&](double (&c)[4], std::size_t line) { // (c[3]: the homogeneous weight, else 1)
+    if(homogeneous) {
+      c[0] /= c[3];
+      c[1] /= c[3];
+      c[2] /= c[3];
+    }
+    soup.points.push_back({ { c[0], c[1], c[2] } });
+    soup.point_lines.push_back(line);
+  };
   for(std::uint64_t i = 0; i < nv; ++i) {
     cur.skip_space(true);
     if(cur.at_end())
@@ -164,13 +173,7 @@ inline HOT::Status read_off_vertices(Cursor& cur, std::uint64_t nv, bool homogen
       while(k < needed && fast_real(q, cur.end(), c[k]))
         ++k;
       if(k == needed) {
-        if(homogeneous) {
-          c[0] /= c[3];
-          c[1] /= c[3];
-          c[2] /= c[3];
-        }
-        soup.points.push_back({ { c[0], c[1], c[2] } });
-        soup.point_lines.push_back(line);
+        add_vertex(c, line);
         cur.skip_line_from(q);
         continue;
       }
@@ -184,13 +187,7 @@ inline HOT::Status read_off_vertices(Cursor& cur, std::uint64_t nv, bool homogen
       if(!parse_real(fields[k], c[k]))
         return read_fail(at_line(line) + "vertex " + std::to_string(i) + ": coordinate " + quote(fields[k])
                          + " is not a number");
-    if(homogeneous) {
-      c[0] /= c[3];
-      c[1] /= c[3];
-      c[2] /= c[3];
-    }
-    soup.points.push_back({ { c[0], c[1], c[2] } });
-    soup.point_lines.push_back(line);
+    add_vertex(c, line);
   }
   return HOT::Status();
 }
