@@ -25,16 +25,18 @@
 #     memory (maximum resident set), the initialisation and Newton's solve, and each time's
 #     ratio to the 250K blob's (linear growth: 4, 8, 16).
 # Prints the machine first.
-# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling]
-#   --whole: only section 7; --io: only section 6; --scaling: only section 8 (each runs
-#   alone in a few minutes; --scaling --large in about 15)
+# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty]
+#   --whole: only section 7; --io: only section 6; --scaling: only section 8; --fifty: only
+#   section 1's 50-landmark table (each runs alone in a few minutes; --scaling --large in
+#   about 15)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 large=0; quick=0; only=""
 for a in "$@"; do
   case "$a" in
     --large) large=1 ;; --quick) quick=1 ;; --whole) only=whole ;; --io) only=io ;; --scaling) only=scaling ;;
-    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling]" >&2; exit 2 ;;
+    --fifty) only=fifty ;;
+    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling] [--fifty]" >&2; exit 2 ;;
   esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
@@ -42,6 +44,7 @@ case "$only" in
   whole) targets=(hyperbolic_orbifold_tutte cgal_euclidean_orbifold bench_io) ;;
   io) targets=(bench_io) ;;
   scaling) targets=(hyperbolic_orbifold_tutte bench_io) ;;
+  fifty) targets=(bench_parameterizer) ;;
   *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte) ;;
 esac
 "$root/scripts/build.sh" "${targets[@]}" >/dev/null
@@ -138,6 +141,11 @@ if [ "$only" = scaling ]; then scaling_section; exit 0; fi
 if [ "$only" = io ]; then io_section; exit 0; fi
 meshes=()
 for m in hand homer triceratops camel bear diplodocus armadillo bunny00; do meshes+=("$build/data/meshes/$m.off"); done
+fifty_section() {
+  echo "== 50 landmarks (ratio: ours / CGAL's Euclidean solve with 4 cones, in process; ours: the fastest of 3 runs)"
+  "$build/bin/bench_parameterizer" --landmarks 50 --repeat 3 --no-map --no-floor "${meshes[@]}"
+}
+if [ "$only" = fifty ]; then fifty_section; exit 0; fi
 shared="$root/../shared/data/sphere"
 paper=()
 if [ -d "$shared" ]; then
@@ -155,8 +163,7 @@ echo "== 7 landmarks (libcgal-demo meshes, then generated blobs, then the paper'
 "$build/bin/bench_parameterizer" --landmarks 7 --repeat 3 "${meshes[@]}"
 "$build/bin/bench_parameterizer" --landmarks 7 --repeat 3 --no-map "${generated[@]}" | tail -n +2
 [ ${#paper[@]} -eq 0 ] || "$build/bin/bench_parameterizer" --landmarks 7 --repeat 3 "${paper[@]}" | tail -n +2
-echo "== 50 landmarks"
-"$build/bin/bench_parameterizer" --landmarks 50 "${meshes[@]:0:7}"
+fifty_section
 echo "== collection (the paper's FAUST setting)"
 "$build/bin/bench_collection"
 echo "== kernel"

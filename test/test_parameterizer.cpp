@@ -1815,6 +1815,73 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
 #endif
 }
 
+// Below CHOLMOD's size, Eigen's simplicial LDL^* factor of the connection Laplacian with L
+// rounded to single precision: each solve is, to double rounding, one with the matrix
+// P^T L~ D L~^* P, L~ = fl32(L), built here from Eigen's own factor (not the library's
+// copy); its backward error against A is float's, not double's; the operator is Hermitian
+// and definite; a new factorisation gives the double solve back; a real factor is not rounded
+TEST_CASE(simplicial_float_factor_solves_with_the_rounded_factor)
+{
+  typedef std::complex<double> Cd;
+  typedef Eigen::SparseMatrix<Cd> SpC;
+  const int side = 50, n = side * side;
+  std::vector<int> order(n);
+  for(int v = 0; v < n; ++v) order[v] = (v * 7919) % n; // (7919 prime to 2500: a permutation)
+  const SpC A = random_grid_connection_laplacian(side, order, 1e-3);
+  CHECK(n < HOT::internal::Laplacian_factorization<Cd>::cholmod_threshold);
+  HOT::internal::Laplacian_factorization<Cd> f;
+  f.compute(A);
+  CHECK(f.definite() && !f.single_precision());
+  const Eigen::VectorXcd b = Eigen::VectorXcd::Random(n), u = Eigen::VectorXcd::Random(n);
+  const Eigen::VectorXcd xd = f.solve(b);
+  CHECK(f.round_to_single_precision() && f.single_precision());
+  const Eigen::VectorXcd xf = f.solve(b), sf_u = f.solve(u);
+  // P^T L~ D L~^* P from Eigen's factor of A, its L rounded to float here
+  Eigen::SimplicialLDLT<SpC, Eigen::Lower, Eigen::AMDOrdering<int> > eigen(A);
+  CHECK(eigen.info() == Eigen::Success);
+  SpC L = eigen.matrixL().nestedExpression();
+  L.makeCompressed();
+  for(Eigen::Index k = 0; k < L.nonZeros(); ++k) {
+    // (through volatile floats: with Eigen's headers, GCC 12 at -O2 was seen to drop the
+    // double -> float -> double round trip of `Cd(static_cast<float>(re), ...)` altogether)
+    const Cd l = L.valuePtr()[k];
+    const volatile float re = static_cast<float>(l.real()), im = static_cast<float>(l.imag());
+    L.valuePtr()[k] = Cd(re, im);
+  }
+  SpC I(n, n);
+  I.setIdentity();
+  const SpC Lt = SpC(L) + I; // (unit diagonal)
+  const Eigen::VectorXcd d = eigen.vectorD();
+  const Eigen::VectorXcd px = eigen.permutationP() * xf;
+  const Eigen::VectorXcd tilde_x = eigen.permutationP().inverse() * (Lt * (d.asDiagonal() * (Lt.adjoint() * px)));
+  double normA = 0; // the largest row sum: at least the 2-norm (Hermitian)
+  for(int i = 0; i < n; ++i)
+    normA = std::max(normA, Eigen::MatrixXcd(A.row(i)).cwiseAbs().sum());
+  const double with_rounded = (tilde_x - b).norm() / (normA * xf.norm());
+  const double backward = (A * xf - b).norm() / (normA * xf.norm());
+  const double hermitian = std::abs(u.dot(xf) - sf_u.dot(b)) / (u.norm() * xf.norm());
+  std::cout << "  simplicial rounded factor: residual with L~ D L~^* " << with_rounded << ", backward error against A " << backward
+            << ", Hermitian to " << hermitian << std::endl;
+  CHECK_MSG(with_rounded < 1e-13, "not a solve with the rounded factor: " << with_rounded);
+  CHECK_MSG(backward < 1e-5 && backward > 1e-11, "backward error " << backward); // (float's: it is rounded)
+  CHECK_MSG(hermitian < 1e-12, "not Hermitian: " << hermitian);
+  CHECK(u.dot(sf_u).real() > 0 && std::abs(u.dot(sf_u).imag()) < 1e-12 * std::abs(u.dot(sf_u).real()));
+  // several right-hand sides: each column as alone
+  Eigen::MatrixXcd B(n, 2);
+  B << b, u;
+  const Eigen::MatrixXcd X = f.solve(B);
+  CHECK(X.col(0) == xf && X.col(1) == sf_u);
+  // factored again: double precision again
+  f.factorize(A);
+  CHECK(f.definite() && !f.single_precision());
+  CHECK_MSG((f.solve(b) - xd).norm() <= 1e-14 * xd.norm(), "factored again after rounding");
+  // a real factor is not rounded
+  HOT::internal::Laplacian_factorization<double> g;
+  const Eigen::SparseMatrix<double> R = A.real();
+  g.compute(R);
+  CHECK(!g.round_to_single_precision() && !g.single_precision());
+}
+
 // The initialisation's Tutte embedding solved with the leading block of the solver's
 // connection Laplacian (one factorisation for both) is the one a factorisation of the interior
 // Laplacian of its own gives (the same linear system; the difference is the two solves' rounding)

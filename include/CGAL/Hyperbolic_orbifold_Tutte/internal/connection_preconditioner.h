@@ -163,17 +163,19 @@ public:
         rho0_[v] = rotation(v, x);
     factored_ = solver_.definite();
     if(factored_ && single_precision_)
-      solver_.round_to_single_precision();
+      solver_.round_to_single_precision(simplicial_single_precision_);
     return factored_;
   }
 
   // From now on (and after every new factorisation) the solves use the factor rounded to
-  // single precision where it is CHOLMOD's (see Laplacian_factorization::round_to_single_precision)
-  void solve_in_single_precision()
+  // single precision (see Laplacian_factorization::round_to_single_precision): CHOLMOD's, and
+  // Eigen's (simplicial) unless `simplicial` is false
+  void solve_in_single_precision(bool simplicial = true)
   {
     single_precision_ = true;
+    simplicial_single_precision_ = simplicial;
     if(factored_)
-      solver_.round_to_single_precision();
+      solver_.round_to_single_precision(simplicial_single_precision_);
   }
   bool solves_in_single_precision() const { return solver_.single_precision(); }
 
@@ -328,7 +330,7 @@ private:
   std::vector<int> node_, owner_;
   int n_nodes_ = 0, n_interior_ = 0;
   const Interior_laplacian* interior_;
-  bool shares_ = false, factored_ = false, single_precision_ = false;
+  bool shares_ = false, factored_ = false, single_precision_ = false, simplicial_single_precision_ = true;
   std::vector<int> copy_;      // the seam twin of a vertex, -1 if none
   bool has_seams_ = false, gauge_factored_ = false;
   std::vector<Cd> scale_, gauge_, rho0_;

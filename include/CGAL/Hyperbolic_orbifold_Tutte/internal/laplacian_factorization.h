@@ -18,6 +18,8 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/simplicial_float_factor.h>
+
 #ifdef CGAL_HOT_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/nested_dissection.h>
@@ -83,6 +85,7 @@ public:
   // as a whole.
   bool analyze(const Matrix& A)
   {
+    simplicial_single_.clear();
 #ifdef CGAL_HOT_USE_CHOLMOD
     use_cholmod_ = A.rows() >= cholmod_threshold || lead_ >= 0;
     single_ = false;
@@ -102,6 +105,7 @@ public:
   }
   void factorize(const Matrix& A)
   {
+    simplicial_single_.clear();
 #ifdef CGAL_HOT_USE_CHOLMOD
     single_ = false; // (the factorisation writes double values anew)
     if(use_cholmod_) {
@@ -119,10 +123,25 @@ public:
   // until the next factorize() is then a solve with that rounded factor (in double
   // arithmetic): see single_precision_factor.h. The floats take the first half of CHOLMOD's
   // value array; the second half is given back (the factor's memory halves: 1 GB at a
-  // million vertices) and taken again by the next factorize(). False, and nothing changed,
-  // for a simplicial or real factor or one not factored.
-  bool round_to_single_precision()
+  // million vertices) and taken again by the next factorize(). A complex simplicial (Eigen)
+  // factor gets a rounded copy of its L (simplicial_float_factor.h; its own solve is kept
+  // for nothing else, and the copy is dropped by the next factorize()). False, and nothing
+  // changed, for a real factor, one not factored, or a simplicial one with `simplicial` false.
+  bool round_to_single_precision(bool simplicial = true)
   {
+    if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
+      if(!simplicial_single_.empty())
+        return true;
+#ifdef CGAL_HOT_USE_CHOLMOD
+      if(!use_cholmod_)
+#endif
+      {
+        if(!simplicial || simplicial_.info() != Eigen::Success || !definite())
+          return false;
+        simplicial_single_.assign(simplicial_);
+        return true;
+      }
+    }
 #ifdef CGAL_HOT_USE_CHOLMOD
     if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
       if(!single_ && use_cholmod_ && cholmod_.info() == Eigen::Success) {
@@ -161,6 +180,8 @@ public:
 #endif
   bool single_precision() const
   {
+    if(!simplicial_single_.empty())
+      return true;
 #ifdef CGAL_HOT_USE_CHOLMOD
     return single_;
 #else
@@ -189,6 +210,18 @@ public:
   template <class Rhs>
   Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Rhs& b) const
   {
+    if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
+      if(!simplicial_single_.empty()) {
+        Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> x(b.rows(), b.cols());
+        Eigen::Matrix<Scalar, Eigen::Dynamic, 1> bj, xj;
+        for(Eigen::Index j = 0; j < b.cols(); ++j) {
+          bj = b.col(j);
+          simplicial_single_.solve(bj, xj);
+          x.col(j) = xj;
+        }
+        return x;
+      }
+    }
 #ifdef CGAL_HOT_USE_CHOLMOD
     if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
       if(single_) {
@@ -387,6 +420,7 @@ private:
 #endif
 
   Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int> > simplicial_;
+  Simplicial_float_factor simplicial_single_; // (complex only) simplicial_'s L rounded to float, or empty
 #ifdef CGAL_HOT_USE_CHOLMOD
   Cholmod cholmod_;
   bool use_cholmod_ = false;

@@ -52,6 +52,11 @@ struct Solver_options
   // converged also means: no vertex's own forces are out of balance by more than this
   // fraction of their sizes, unless rounding explains it (else Newton goes on to the floor)
   double vertex_imbalance = 1e-8;
+  // the preconditioner's solves with its factor rounded to single precision where that factor
+  // is Eigen's (below 50K rows; CHOLMOD's, from 50K, always are): off for the solves of a
+  // squeezed region (newton_on_region.h), where it was seen to spoil the recentring at the
+  // limit of double's range (a tube of length 350)
+  bool single_precision_small_preconditioner = true;
   bool verbose = false;
 };
 
@@ -166,7 +171,7 @@ private:
     auto t0 = Clock::now();
     if(!use_direct_ && !pre_->factored_at(x_) && !pre_->factor(x_))
       use_direct_ = true;
-    pre_->solve_in_single_precision();
+    pre_->solve_in_single_precision(opt_.single_precision_small_preconditioner);
     st_.time_factorization += seconds(t0);
   }
 

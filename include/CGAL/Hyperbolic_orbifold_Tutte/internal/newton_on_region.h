@@ -92,7 +92,9 @@ inline Error_code minimize_energy_on_region(const Flat_problem& P, std::vector<d
     }
   }
   Q.n_vars = static_cast<int>(xq.size());
-  const Error_code ec = minimize_energy(Q, xq, opt, st);
+  Solver_options region_options = opt;
+  region_options.single_precision_small_preconditioner = false; // (see Solver_options)
+  const Error_code ec = minimize_energy(Q, xq, region_options, st);
   for(int i = 0; i < Q.n; ++i) {
     const int v = global[i];
     if(Q.kind[i] == Free) {
