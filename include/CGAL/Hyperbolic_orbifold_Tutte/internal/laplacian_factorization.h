@@ -210,34 +210,29 @@ public:
   template <class Rhs>
   Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Rhs& b) const
   {
+    typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> Result;
     if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
-      if(!simplicial_single_.empty()) {
-        Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> x(b.rows(), b.cols());
+      // a rounded factor: its own one-column solve, column by column
+      auto by_columns = [&b](auto&& solve_column) {
+        Result x(b.rows(), b.cols());
         Eigen::Matrix<Scalar, Eigen::Dynamic, 1> bj, xj;
         for(Eigen::Index j = 0; j < b.cols(); ++j) {
           bj = b.col(j);
-          simplicial_single_.solve(bj, xj);
+          solve_column(bj, xj);
           x.col(j) = xj;
         }
         return x;
-      }
+      };
+      if(!simplicial_single_.empty())
+        return by_columns([this](const auto& bj, auto& xj) { simplicial_single_.solve(bj, xj); });
+#ifdef CGAL_HOT_USE_CHOLMOD
+      if(single_)
+        return by_columns([this](const auto& bj, auto& xj) { solve_with_float_factor(single_factor_, bj, xj, -1, work_); });
+#endif
     }
 #ifdef CGAL_HOT_USE_CHOLMOD
-    if constexpr(std::is_same<Scalar, std::complex<double> >::value) {
-      if(single_) {
-        Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime> x(b.rows(), b.cols());
-        Eigen::Matrix<Scalar, Eigen::Dynamic, 1> bj, xj;
-        for(Eigen::Index j = 0; j < b.cols(); ++j) {
-          bj = b.col(j);
-          solve_with_float_factor(single_factor_, bj, xj, -1, work_);
-          x.col(j) = xj;
-        }
-        return x;
-      }
-    }
     if(use_cholmod_ && full_xsize_ != 0) // (its values are floats, and half of them gone: NaN)
-      return Eigen::Matrix<Scalar, Eigen::Dynamic, Rhs::ColsAtCompileTime>::Constant(
-        b.rows(), b.cols(), Scalar(std::numeric_limits<double>::quiet_NaN()));
+      return Result::Constant(b.rows(), b.cols(), Scalar(std::numeric_limits<double>::quiet_NaN()));
     if(use_cholmod_) return cholmod_.solve(b);
 #endif
     return simplicial_.solve(b);
