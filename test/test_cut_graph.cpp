@@ -31,7 +31,9 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
+#include <queue>
 #include <random>
 #include <set>
 #include <sstream>
@@ -733,6 +735,58 @@ static void test_tsp_matrix()
   }
 }
 
+// The landmark distance matrix against a Dijkstra search written here (a binary heap over
+// the mesh's edges, Euclidean lengths), for every pair: 50 landmarks on icospheres of 2562
+// vertices (below the library's parallel threshold of about 200000 vertex visits) and 10242
+// (above it: one search per task).
+static void test_landmark_distance_matrix()
+{
+  for(int level : {4, 5}) {
+    Points pts; Triangles tris;
+    make_icosphere(level, pts, tris);
+    SM sm;
+    mesh_from_soup(pts, tris, sm);
+    const auto vs = vertex_list(sm);
+    const auto vpm = get(CGAL::vertex_point, sm);
+    const std::size_t k = 50;
+    Rng rng(static_cast<unsigned>(31 * level));
+    const auto L = pick<SM>(vs, random_indices(vs.size(), k, rng));
+    const auto D = HI::compute_landmark_distance_matrix(sm, L, vpm);
+    bool shape = D.size() == k, symmetric = true, agree = true;
+    for(const auto& row : D) shape = shape && row.size() == k;
+    std::ostringstream detail;
+    for(std::size_t i = 0; shape && i < k; ++i) {
+      std::vector<double> dist(num_vertices(sm), std::numeric_limits<double>::infinity());
+      typedef std::pair<double, SM::Vertex_index> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > heap;
+      dist[L[i]] = 0.;
+      heap.push(Item(0., L[i]));
+      while(!heap.empty()) {
+        const Item top = heap.top();
+        heap.pop();
+        if(top.first > dist[top.second]) continue;
+        for(auto h : CGAL::halfedges_around_target(halfedge(top.second, sm), sm)) {
+          const auto v = source(h, sm);
+          const double d = top.first + std::sqrt(CGAL::squared_distance(get(vpm, top.second), get(vpm, v)));
+          if(d < dist[v]) { dist[v] = d; heap.push(Item(d, v)); }
+        }
+      }
+      for(std::size_t j = 0; j < k; ++j) {
+        if(D[i][j] != D[j][i]) symmetric = false;
+        const double ref = dist[L[j]];
+        if(!(std::abs(D[i][j] - ref) <= 1e-12 * (1. + ref))) {
+          if(agree) detail << " first: " << i << "-" << j << " " << D[i][j] << " vs " << ref;
+          agree = false;
+        }
+      }
+    }
+    const std::string tag = "landmark distances, " + std::to_string(vs.size()) + " vertices, k=50";
+    CHECK(shape, tag << ": a " << k << " x " << k << " matrix");
+    CHECK(symmetric, tag << ": symmetric");
+    CHECK(agree, tag << ": every pair equals an independent Dijkstra search's distance" << detail.str());
+  }
+}
+
 // TSP on a mesh with a known answer: landmarks along a great circle of an
 // icosphere, in shuffled order, with one clearly longest gap.
 static void test_tsp_great_circle(std::size_t k)
@@ -886,6 +940,7 @@ int main(int argc, char** argv)
   test_retry_order();
   test_seam_mesh_vertex_cache();
   test_tsp_matrix();
+  test_landmark_distance_matrix();
   test_tsp_great_circle(7);
   test_tsp_great_circle(16);
 
