@@ -70,7 +70,7 @@ compute_landmark_distance_matrix(
   };
   if(k < 2) return D;
 #ifdef CGAL_LINKED_WITH_TBB
-  if(g.size() * (k - 1) > 200000) { // (about a millisecond of searches)
+  if(g.size() * (k - 1) > 200000) { // (tens of milliseconds of searches)
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, k - 1, 1),
                       [&](const tbb::blocked_range<std::size_t>& r) { runs(r.begin(), r.end()); });
     return D;
