@@ -1577,6 +1577,118 @@ TEST_CASE(preconditioned_and_direct_solvers_agree)
   }
 }
 
+// From Solver_options::multigrid_from vertices on, no factorisation: the initialisation and
+// Newton's preconditioner use algebraic multigrid (smoothed_aggregation.h). Forced here on
+// meshes of a few thousand vertices, it must reach the one minimiser the direct solver
+// reaches (see check_solvers_agree), from a Tutte initialisation equal to the factored one
+// (the same linear system), with and without the initialisation's interior Laplacian for the
+// gauge of the seam rotations.
+TEST_CASE(multigrid_and_factorisations_reach_the_same_embedding)
+{
+  for(const auto& c : std::vector<std::pair<std::string, int> >{{"hand", 7}, {"bear", 7}, {"hand", 23}}) {
+    Sphere_problem S;
+    CHECK(make_sphere_problem(c.first, c.second, S));
+    const std::string name = c.first + " k=" + std::to_string(c.second);
+    HOT::internal::Interior_laplacian mg;
+    mg.multigrid_from = 0;
+    std::vector<double> x;
+    CHECK(HOT::internal::initialize_embedding(S.P, S.tile, S.pts, x, &mg) == HOT::OK);
+    CHECK(mg.multigrid && !mg.own_factor && !mg.connection);
+    const double init_gap = largest_hyperbolic_distance(S.P, x, S.x);
+    std::cout << "  " << name << ": Tutte initialisations, multigrid against factored: " << init_gap << std::endl;
+    CHECK_MSG(init_gap < 1e-6, name << ": " << init_gap);
+    HOT::internal::Solver_options direct;
+    direct.direct_solver = true;
+    std::vector<double> xd = S.x;
+    HOT::Solver_statistics sd;
+    CHECK(HOT::internal::minimize_energy(S.P, xd, direct, sd) == HOT::OK);
+    for(const bool with_interior : {true, false}) {
+      HOT::internal::Solver_options opt;
+      opt.multigrid_from = 0;
+      std::vector<double> xm = x;
+      HOT::Solver_statistics sm;
+      CHECK_MSG(HOT::internal::minimize_energy(S.P, xm, opt, sm, with_interior ? &mg : nullptr) == HOT::OK, name);
+      const double worst = largest_hyperbolic_distance(S.P, xm, xd);
+      std::cout << "  " << name << (with_interior ? " (interior gauge)" : " (no gauge: set up anew)") << ": multigrid "
+                << sm.iterations << " steps, " << sm.cg_iterations << " CG; largest hyperbolic distance to the direct solver's "
+                << worst << std::endl;
+      CHECK(sm.cg_failures == 0);
+      CHECK_MSG(worst < 1e-7, name << ": " << worst);
+      CHECK(std::abs(sm.energy - sd.energy) <= 1e-12 * sd.energy);
+    }
+  }
+  // a disk (border vertices on their sides: one real unknown) and genus 2 with no cone
+  // (nothing fixed), no interior Laplacian given
+  auto agree = [](const HOT::internal::Flat_problem& P, const std::vector<double>& x0, const std::string& name) {
+    HOT::internal::Solver_options direct, opt;
+    direct.direct_solver = true;
+    opt.multigrid_from = 0;
+    std::vector<double> xd = x0, xm = x0;
+    HOT::Solver_statistics sd, sm;
+    CHECK(HOT::internal::minimize_energy(P, xd, direct, sd) == HOT::OK);
+    CHECK_MSG(HOT::internal::minimize_energy(P, xm, opt, sm) == HOT::OK, name);
+    const double worst = largest_hyperbolic_distance(P, xm, xd);
+    std::cout << "  " << name << ": multigrid " << sm.cg_iterations << " CG; largest hyperbolic distance " << worst << std::endl;
+    CHECK_MSG(worst < 1e-7, name << ": " << worst);
+  };
+  {
+    Mesh mm;
+    CHECK(read_demo_mesh("mushroom", mm));
+    Disk_problem D;
+    CHECK(make_disk_problem(mm, boundary_landmarks(mm, 6, 0.3), D));
+    agree(D.P, D.x, "mushroom (disk)");
+    Sphere_problem G;
+    CHECK(make_genus_problem("eight", 0, G));
+    agree(G.P, G.x, "eight (genus 2, no cone)");
+  }
+  // the public switch: the one-call function with multigrid from 0 vertices certifies the
+  // same embedding as with factorisations
+  Mesh m;
+  CHECK(read_demo_mesh("bear", m));
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 7);
+  auto uv0 = m.add_property_map<boost::graph_traits<Mesh>::halfedge_descriptor, K::Point_2>("h:uv0").first;
+  auto uv1 = m.add_property_map<boost::graph_traits<Mesh>::halfedge_descriptor, K::Point_2>("h:uv1").first;
+  HOT::Embedding_statistics s0, s1;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, uv0, HOT::parameters::embedding_statistics(&s0)) == HOT::OK);
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(
+          m, lm, uv1, HOT::parameters::multigrid_threshold(std::size_t(0), HOT::parameters::embedding_statistics(&s1))) == HOT::OK);
+  CHECK(s0.certificate.is_bijective() && s1.certificate.is_bijective());
+  CHECK(!s0.shared_factorization || s1.shared_factorization == false);
+  double worst = 0;
+  for(auto h : halfedges(m)) {
+    const C a(uv0[h].x(), uv0[h].y()), b(uv1[h].x(), uv1[h].y());
+    worst = std::max(worst, 2 * std::asinh(std::sqrt(HOT::internal::squared_modulus(a - b) /
+                                                     ((1 - HOT::internal::squared_modulus(a)) * (1 - HOT::internal::squared_modulus(b))))));
+  }
+  std::cout << "  bear, one-call function: largest hyperbolic distance between the two embeddings " << worst << std::endl;
+  CHECK_MSG(worst < 1e-7, worst);
+}
+
+// Newton's CG multiplies by the exact Riemannian Hessian column by column in parallel
+// (symmetric_product): that Hessian is symmetric to the last bit, so the numbers are those of
+// Eigen's own product (the same sums in the same order). The projected Hessian is not (its
+// blocks' eigen-decompositions round differently on each side): Newton keeps Eigen's product there.
+TEST_CASE(parallel_hessian_product_is_eigens)
+{
+  Sphere_problem S;
+  CHECK(make_sphere_problem("bear", 7, S));
+  HOT::internal::Energy_evaluator ev(S.P);
+  {
+    std::vector<double> g;
+    Eigen::SparseMatrix<double> H;
+    ev.evaluate(S.x, g, &H, false);
+    HOT::internal::subtract_christoffel_terms(S.P, S.x, g, H);
+    CHECK(H.rows() > 20000);
+    CHECK((H - Eigen::SparseMatrix<double>(H.transpose())).norm() == 0); // (symmetric, both triangles stored)
+    Eigen::VectorXd d(H.rows()), y;
+    for(Eigen::Index i = 0; i < d.size(); ++i) d[i] = rng.get_double(-1, 1);
+    HOT::internal::symmetric_product(H, d, y);
+    const Eigen::VectorXd ye = H * d;
+    CHECK(y.size() == ye.size());
+    CHECK_MSG((y - ye).cwiseAbs().maxCoeff() == 0, (y - ye).cwiseAbs().maxCoeff()); // (the same sums in the same order)
+  }
+}
+
 // The factor of a matrix's leading block is the leading block of its factor when the order
 // keeps that block first: Laplacian_factorization::solve_leading() against a dense LL^T of the
 // block itself (a complex Hermitian positive definite matrix, random rotations on a grid, the

@@ -153,6 +153,16 @@ public:
   void set_maximum_number_of_iterations(int n) { settings_.solver.max_iterations = n; }
   /// prints the solver's progress on `std::cerr` when `v` is `true` (default `false`)
   void set_verbose(bool v) { settings_.solver.verbose = v; }
+  /// From `n` vertices of the cut mesh on (default 400000), the solver does not factor its
+  /// Laplacians: the Euclidean Tutte initialisation and Newton's systems are solved by
+  /// conjugate gradients preconditioned by algebraic multigrid (smoothed aggregation), whose
+  /// work grows linearly with the size where a sparse factorisation's grows like
+  /// \f$n^{1.5}\f$. Both reach the same embedding (the energy has one minimiser); the
+  /// certificate is the same. 0: always; `std::numeric_limits<std::size_t>::max()`: never.
+  void set_multigrid_threshold(std::size_t n)
+  {
+    settings_.solver.multigrid_from = static_cast<Eigen::Index>(std::min<std::size_t>(n, static_cast<std::size_t>(std::numeric_limits<Eigen::Index>::max())));
+  }
   /// uses `w(e)` as the weight of every edge `e` of the underlying mesh instead of the
   /// `Weight_type`; each must be positive and finite (else `ERROR_WRONG_PARAMETER`).
   /// An empty function restores the `Weight_type`.

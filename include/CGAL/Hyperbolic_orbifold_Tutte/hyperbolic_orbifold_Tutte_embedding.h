@@ -96,6 +96,10 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     centred at them, and receives each corner's chart point (\ref HOT_Charts);
     `Embedding_statistics::charts` receives the charts}
     \cgalParamDefault{none: such an embedding is refused (`ERROR_NO_1_TO_1_MAPPING`)} \cgalParamNEnd
+  \cgalParamNBegin{multigrid_threshold} \cgalParamDescription{`std::size_t`: from this many vertices of the
+    cut mesh on, the linear systems are solved by conjugate gradients preconditioned by algebraic multigrid
+    instead of sparse factorisations (`Hyperbolic_orbifold_Tutte_parameterizer_3::set_multigrid_threshold()`)}
+    \cgalParamDefault{`400000`} \cgalParamNEnd
   \cgalParamNBegin{verbose} \cgalParamDescription{prints the solver's progress on `std::cerr`}
     \cgalParamDefault{`false`} \cgalParamNEnd
   \cgalParamNBegin{embedding_statistics} \cgalParamDescription{an `Embedding_statistics*` filled on return}
@@ -173,6 +177,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   parameterizer.set_gradient_tolerance(choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-10));
   parameterizer.set_maximum_number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200));
   parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
+  parameterizer.set_multigrid_threshold(choose_parameter(get_parameter(np, internal_np::multigrid_threshold),
+                                                         static_cast<std::size_t>(internal::default_multigrid_from)));
   parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
   parameterizer.set_cone_orders(ordered_orders);
   if(genus > 0) // the tile's corner 0: where the border runs along the cut graph's first edge

@@ -44,6 +44,7 @@ enum cut_graph_t { cut_graph };
 enum maximum_hole_length_t { maximum_hole_length };
 enum keep_largest_component_t { keep_largest_component };
 enum split_boundary_chords_t { split_boundary_chords };
+enum multigrid_threshold_t { multigrid_threshold };
 } // namespace internal_np
 
 namespace parameters {
@@ -73,6 +74,11 @@ CGAL_HOT_NAMED_PARAMETER(landmark_order)
 CGAL_HOT_NAMED_PARAMETER(gradient_tolerance)
 /// `Embedding_statistics*`: receives statistics, timings and the certificate
 CGAL_HOT_NAMED_PARAMETER(embedding_statistics)
+/// `std::size_t`: the size (vertices of the cut mesh) from which the solver's linear systems
+/// are solved by conjugate gradients preconditioned by algebraic multigrid instead of sparse
+/// factorisations (default 400000; see
+/// `Hyperbolic_orbifold_Tutte_parameterizer_3::set_multigrid_threshold()`)
+CGAL_HOT_NAMED_PARAMETER(multigrid_threshold)
 
 /// a readable property map from the mesh's edges to positive `double` weights, used
 /// instead of `weight_type`

@@ -13,12 +13,14 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/interior_laplacian.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/laplacian_factorization.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/smoothed_aggregation.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
 #include <complex>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -84,10 +86,20 @@ public:
       if(node_[v] >= 0)
         owner_[node_[v]] = v;
     shares_ = share_interior;
-    if(interior_ && (interior_->index.size() != static_cast<std::size_t>(P.n) || !interior_->own_factor ||
-                     !interior_->solver.definite()))
+    if(interior_ && (interior_->index.size() != static_cast<std::size_t>(P.n) ||
+                     !(interior_->multigrid || (interior_->own_factor && interior_->solver.definite()))))
       interior_ = nullptr;
   }
+
+  // From now on A is not factored: its solves are one V-cycle of algebraic multigrid
+  // (smoothed_aggregation.h), a Hermitian positive definite preconditioner whose set-up and
+  // solves cost linear work. Call before the first factor(); the interior is not shared.
+  void use_multigrid()
+  {
+    use_multigrid_ = true;
+    shares_ = false;
+  }
+  bool uses_multigrid() const { return use_multigrid_; }
 
   const Flat_problem& problem() const { return P_; }
 
@@ -142,6 +154,15 @@ public:
     }
     for(int i = 0; i < n_nodes_; ++i)
       trip.emplace_back(i, i, Cd(diag[i], 0.0));
+    if(use_multigrid_) {
+      typename Smoothed_aggregation<Cd>::Matrix Ar(n_nodes_, n_nodes_);
+      Ar.setFromTriplets(trip.begin(), trip.end());
+      std::vector<Eigen::Triplet<Cd> >().swap(trip);
+      multigrid_.reset(new Smoothed_aggregation<Cd>());
+      factored_ = multigrid_->compute(std::move(Ar));
+      set_reference_rotations(x);
+      return factored_;
+    }
     CMat A(n_nodes_, n_nodes_);
     A.setFromTriplets(trip.begin(), trip.end());
     std::vector<Eigen::Triplet<Cd> >().swap(trip); // (freed before the factorisation: 0.3 GB at a million vertices)
@@ -157,10 +178,7 @@ public:
       factor_gauge_laplacian(A, x);
     }
     solver_.factorize(A);
-    rho0_.assign(P_.n, Cd(1.0, 0.0));
-    for(int v = 0; v < P_.n; ++v)
-      if(P_.kind[v] == Transformed)
-        rho0_[v] = rotation(v, x);
+    set_reference_rotations(x);
     factored_ = solver_.definite();
     if(factored_ && single_precision_)
       solver_.round_to_single_precision(simplicial_single_precision_);
@@ -174,7 +192,7 @@ public:
   {
     single_precision_ = true;
     simplicial_single_precision_ = simplicial;
-    if(factored_)
+    if(factored_ && !use_multigrid_)
       solver_.round_to_single_precision(simplicial_single_precision_);
   }
   bool solves_in_single_precision() const { return solver_.single_precision(); }
@@ -200,7 +218,9 @@ public:
   // z = S^-1 A^-1 S^-T r
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const
   {
-    Eigen::VectorXcd b(n_nodes_);
+    Eigen::VectorXcd& b = b_; // (kept: a fresh vector of this size costs its pages' first touch)
+    Eigen::VectorXcd& xi = xi_;
+    b.resize(n_nodes_);
     for(int i = 0; i < n_nodes_; ++i) {
       const int v = owner_[i], k = P_.var[v];
       if(P_.kind[v] == Free)
@@ -210,7 +230,10 @@ public:
     }
     for(int i = 0; i < n_nodes_; ++i)
       b[i] *= gauge_[i];
-    Eigen::VectorXcd xi = solver_.solve(b);
+    if(use_multigrid_)
+      multigrid_->apply(b, xi);
+    else
+      xi = solver_.solve(b);
     for(int i = 0; i < n_nodes_; ++i)
       xi[i] *= std::conj(gauge_[i]);
     z.resize(r.size());
@@ -242,8 +265,18 @@ private:
     if(!any) return;
     if(interior_ || shares_)
       harmonic_gauge(delta);
+    else if(use_multigrid_)
+      factor(x); // (no Laplacian for a gauge: the hierarchy anew, at these rotations)
     else
       least_squares_gauge(delta);
+  }
+
+  void set_reference_rotations(const std::vector<double>& x)
+  {
+    rho0_.assign(P_.n, Cd(1.0, 0.0));
+    for(int v = 0; v < P_.n; ++v)
+      if(P_.kind[v] == Transformed)
+        rho0_[v] = rotation(v, x);
   }
 
   // harmonic in the interior, +delta/2 on a seam vertex's side, -delta/2 on its twin's
@@ -270,6 +303,11 @@ private:
       if(!solve_interior(rhs.cast<Cd>(), c))
         return; // (cannot happen once factored; no gauge is a valid, weaker, preconditioner)
       psi = c.real();
+    } else if(interior_->multigrid) {
+      // (from the last gauge: the rotations change little between two)
+      if(!interior_->solve_by_multigrid(rhs.cast<Cd>(), psi_, gauge_tolerance))
+        return; // (no gauge: a valid, weaker, preconditioner)
+      psi = psi_.real();
     } else {
       psi = interior_->solver.solve(rhs);
     }
@@ -337,6 +375,12 @@ private:
   Laplacian_factorization<double> gauge_solver_;
   Laplacian_factorization<Cd> solver_;
   bool analyzed_ = false;
+  bool use_multigrid_ = false;
+  std::unique_ptr<Smoothed_aggregation<Cd> > multigrid_;
+  Eigen::VectorXcd psi_;                // the last gauge's harmonic function (multigrid; real)
+  mutable Eigen::VectorXcd b_, xi_;     // apply()'s work vectors
+  // the gauge's harmonic function by multigrid: only its smoothness matters
+  static constexpr double gauge_tolerance = 1e-2;
 };
 
 } // namespace internal

@@ -78,6 +78,7 @@ public:
       return ec;
     st_.time_setup = seconds_since(t0);
     const auto t1 = Clock::now();
+    interior_.multigrid_from = settings_.solver.multigrid_from;
     ec = initialize_embedding(P_, tile_, base_points_, x_, &interior_); // factors what the solver reuses
     st_.time_initialization = seconds_since(t1);
     st_.shared_factorization = interior_.connection != nullptr;

@@ -12,7 +12,9 @@
 // preconditioner's gauge.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/laplacian_factorization.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/smoothed_aggregation.h>
 
+#include <complex>
 #include <memory>
 #include <vector>
 
@@ -21,6 +23,11 @@ namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
 class Connection_laplacian_preconditioner; // (connection_preconditioner.h)
+
+// The size (cut-mesh vertices) from which the Laplacians are solved by multigrid-preconditioned
+// conjugate gradients instead of factored: a sparse factorisation's work grows like n^1.5 on a
+// surface (22x from 250K to 2M vertices), multigrid's linearly.
+constexpr Eigen::Index default_multigrid_from = 400000;
 
 // The weighted Laplacian of the cut mesh's interior vertices (the border held fixed), for the
 // initialisation and the preconditioner's gauge. Either a factorisation of its own (`solver`)
@@ -46,6 +53,19 @@ struct Interior_laplacian
   // ratio 0.96), 7% lost with 23 (ratio 1.008: 39 CG iterations and 7 gauge solves to pay).
   double share_max_fill = 1.0;
   std::shared_ptr<Connection_laplacian_preconditioner> connection;
+  // From this many cut-mesh vertices on, no factorisation: the initialisation solves with
+  // conjugate gradients preconditioned by algebraic multigrid (`multigrid`, kept for the
+  // gauge), and so does the solver (Solver_options::multigrid_from, the same default)
+  Eigen::Index multigrid_from = default_multigrid_from;
+  typedef Smoothed_aggregation<double, std::complex<double> > Multigrid; // (two real right-hand sides at once)
+  std::shared_ptr<Multigrid> multigrid;
+  // solves with the interior Laplacian's hierarchy (relative residual `tolerance`), from x
+  // if it has b's size (else from 0): the real and imaginary parts are two real systems
+  bool solve_by_multigrid(const Eigen::VectorXcd& b, Eigen::VectorXcd& x, double tolerance) const
+  {
+    return multigrid && multigrid->solve(b, x, tolerance, multigrid_max_iterations) >= 0 && x.allFinite();
+  }
+  static constexpr int multigrid_max_iterations = 500;
 };
 
 } // namespace internal

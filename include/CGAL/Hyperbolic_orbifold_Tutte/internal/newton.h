@@ -22,6 +22,9 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -57,6 +60,9 @@ struct Solver_options
   // squeezed region (newton_on_region.h), where it was seen to spoil the recentring at the
   // limit of double's range (a tube of length 350)
   bool single_precision_small_preconditioner = true;
+  // from this many cut-mesh vertices on, the preconditioner is a V-cycle of algebraic
+  // multigrid instead of a factorisation (see Interior_laplacian::multigrid_from)
+  Eigen::Index multigrid_from = default_multigrid_from;
   bool verbose = false;
 };
 
@@ -83,6 +89,27 @@ inline void subtract_christoffel_terms(const Flat_problem& P, const std::vector<
     H.coeffRef(i, i + 1) -= s0 * g1 + s1 * g0;
     H.coeffRef(i + 1, i) -= s0 * g1 + s1 * g0;
   }
+}
+
+// y = H d for a symmetric H stored whole (column-major): column i's entries are row i's, so
+// each y_i is one column's sum, in parallel over the columns; each sum is in the order of
+// Eigen's own product (ascending rows), whatever the number of threads
+inline void symmetric_product(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& d, Eigen::VectorXd& y)
+{
+  y.resize(H.rows());
+  const int* outer = H.outerIndexPtr();
+  const int* inner = H.innerIndexPtr();
+  const int* nnz = H.innerNonZeroPtr(); // (null when compressed)
+  const double* val = H.valuePtr();
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, H.cols(), 8192), [&](const tbb::blocked_range<Eigen::Index>& r) {
+    for(Eigen::Index i = r.begin(); i < r.end(); ++i) {
+      const int end = nnz ? outer[i] + nnz[i] : outer[i + 1];
+      double s = 0;
+      for(int k = outer[i]; k < end; ++k)
+        s += val[k] * d[inner[k]];
+      y[i] = s;
+    }
+  });
 }
 
 // Minimises the energy with a backtracking (Armijo) line search, in up to two phases:
@@ -165,6 +192,8 @@ private:
     pre_ = interior ? interior->connection.get() : nullptr;
     if(pre_ == nullptr || &pre_->problem() != &P_) {
       own_pre_.reset(new Connection_laplacian_preconditioner(P_, interior));
+      if(P_.n >= opt_.multigrid_from)
+        own_pre_->use_multigrid();
       pre_ = own_pre_.get();
     }
     use_direct_ = opt_.direct_solver;
@@ -341,7 +370,10 @@ private:
     double rz = r_.dot(zv_);
     int k = 0;
     for(; k < max_cg_iterations; ++k) {
-      Hd_.noalias() = H_ * d_;
+      if(phase_ == Exact) // (symmetric to the last bit; the projected blocks are not quite)
+        symmetric_product(H_, d_, Hd_);
+      else
+        Hd_.noalias() = H_ * d_;
       const double dHd = d_.dot(Hd_);
       if(!(dHd > 0)) {
         negative_curvature = true;

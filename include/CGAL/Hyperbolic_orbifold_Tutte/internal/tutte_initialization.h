@@ -114,7 +114,8 @@ inline void number_interior(const Flat_problem& P, const std::vector<double>& x,
   interior_index.assign(P.n, -1);
   lap.own_factor = false;
   lap.connection.reset();
-  if(lap.share && P.n >= lap.share_from) {
+  lap.multigrid.reset();
+  if(lap.share && P.n >= lap.share_from && P.n < lap.multigrid_from) {
     auto pre = std::make_shared<Connection_laplacian_preconditioner>(P, nullptr, true, lap.share_max_fill);
     if(pre->factor(x) && pre->shares_interior())
       lap.connection = pre;
@@ -128,8 +129,13 @@ inline void number_interior(const Flat_problem& P, const std::vector<double>& x,
   lap.size = ni;
 }
 
+// the relative residual of the Tutte embedding's solves by multigrid (a factorisation's are
+// about 1e-15): Newton starts from it, and the embedding lies inside the disk
+constexpr double klein_tutte_tolerance = 1e-9;
+
 // The Tutte embedding of the interior in Klein coordinates (kxy: one column per coordinate),
-// the border at z: with the connection's leading block, or with a factorisation of its own
+// the border at z: with the connection's leading block, with a factorisation of its own, or
+// (from lap.multigrid_from vertices) by conjugate gradients preconditioned by multigrid
 inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<std::complex<double> >& z, Interior_laplacian& lap,
                                     Eigen::MatrixXd& kxy)
 {
@@ -178,6 +184,24 @@ inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<std
   }
   for(int i = 0; i < ni; ++i)
     trip.emplace_back(i, i, diag[i]);
+  if(P.n >= lap.multigrid_from) { // conjugate gradients, preconditioned by multigrid
+    typedef Interior_laplacian::Multigrid Multigrid;
+    typename Multigrid::Matrix Lr(ni, ni);
+    Lr.setFromTriplets(trip.begin(), trip.end());
+    std::vector<Eigen::Triplet<double> >().swap(trip);
+    lap.multigrid = std::make_shared<Multigrid>();
+    if(!lap.multigrid->compute(std::move(Lr))) {
+      lap.multigrid.reset();
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    }
+    Eigen::VectorXcd k; // (from 0; both coordinates at once)
+    if(!lap.solve_by_multigrid(bxy.col(0).cast<C>() + C(0.0, 1.0) * bxy.col(1).cast<C>(), k, klein_tutte_tolerance))
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    kxy.resize(ni, 2);
+    kxy.col(0) = k.real();
+    kxy.col(1) = k.imag();
+    return OK;
+  }
   SpMat Lm(ni, ni);
   Lm.setFromTriplets(trip.begin(), trip.end());
   std::vector<Eigen::Triplet<double> >().swap(trip); // (freed before the factorisation)
