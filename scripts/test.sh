@@ -36,7 +36,7 @@ fi
 # Measured with one job: build 11-12 min with an empty ccache (seconds with a warm one),
 # tests under 3 min; the CI's two jobs about halve both.
 labels='^(unit|input|cut|maps|cli|embedding)$'
-targets=(test_hyperbolic_kernel test_orbifold_tiles test_traits_archetype test_input_checks test_prepare_mesh test_cut_graph
+targets=(test_hyperbolic_kernel test_orbifold_tiles test_multigrid test_traits_archetype test_input_checks test_prepare_mesh test_cut_graph
          test_parameterizer test_maps test_cgal_drop_in test_certify fuzz_mesh_reader hyperbolic_orbifold_tutte)
 asan="${HOT_ASAN_BUILD_DIR:-$build-asan}"
 t0=$SECONDS
