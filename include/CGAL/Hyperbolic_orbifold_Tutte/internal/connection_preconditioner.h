@@ -99,7 +99,6 @@ public:
     use_multigrid_ = true;
     shares_ = false;
   }
-  bool uses_multigrid() const { return use_multigrid_; }
 
   const Flat_problem& problem() const { return P_; }
 

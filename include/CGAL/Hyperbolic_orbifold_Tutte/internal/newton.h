@@ -17,13 +17,11 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dirichlet_energy.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/interior_laplacian.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/smoothed_aggregation.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
@@ -96,20 +94,7 @@ inline void subtract_christoffel_terms(const Flat_problem& P, const std::vector<
 // Eigen's own product (ascending rows), whatever the number of threads
 inline void symmetric_product(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& d, Eigen::VectorXd& y)
 {
-  y.resize(H.rows());
-  const int* outer = H.outerIndexPtr();
-  const int* inner = H.innerIndexPtr();
-  const int* nnz = H.innerNonZeroPtr(); // (null when compressed)
-  const double* val = H.valuePtr();
-  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, H.cols(), 8192), [&](const tbb::blocked_range<Eigen::Index>& r) {
-    for(Eigen::Index i = r.begin(); i < r.end(); ++i) {
-      const int end = nnz ? outer[i] + nnz[i] : outer[i + 1];
-      double s = 0;
-      for(int k = outer[i]; k < end; ++k)
-        s += val[k] * d[inner[k]];
-      y[i] = s;
-    }
-  });
+  sparse_outer_products(H.cols(), H.outerIndexPtr(), H.innerNonZeroPtr(), H.innerIndexPtr(), H.valuePtr(), d, y);
 }
 
 // Minimises the energy with a backtracking (Armijo) line search, in up to two phases:

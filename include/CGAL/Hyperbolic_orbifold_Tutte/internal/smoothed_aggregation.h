@@ -33,9 +33,11 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +51,38 @@
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
+
+// f(begin, end) over [0, n) in blocks of about `grain`: in parallel with TBB, else one call
+template <class F>
+void for_each_row_block(Eigen::Index n, Eigen::Index grain, const F& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, grain),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) { f(r.begin(), r.end()); });
+#else
+  (void)grain;
+  f(Eigen::Index(0), n);
+#endif
+}
+
+// y_i = sum over the stored entries k of outer-index i of val[k] x[inner[k]], in parallel over
+// i, each sum in storage order (the same bits on any number of threads). For a row-major
+// matrix y = A x; for a column-major one y = A^T x (= A x when A is symmetric). `nnz`: the
+// entries per outer index of an uncompressed matrix (else null).
+template <class Entry, class V>
+void sparse_outer_products(Eigen::Index n, const int* outer, const int* nnz, const int* inner, const Entry* val, const V& x, V& y)
+{
+  y.resize(n);
+  for_each_row_block(n, 8192, [&](Eigen::Index b, Eigen::Index e) {
+    for(Eigen::Index i = b; i < e; ++i) {
+      const int end = nnz ? outer[i] + nnz[i] : outer[i + 1];
+      typename V::Scalar s(0);
+      for(int k = outer[i]; k < end; ++k)
+        s += val[k] * x[inner[k]];
+      y[i] = s;
+    }
+  });
+}
 
 // Scalar: the matrix's entries; Value: the vectors' (complex with real entries: a pair of
 // real vectors, solved at once at the price of one pass over the matrices)
@@ -203,18 +237,7 @@ public:
   template <class V>
   static void multiply(const Matrix& A, const V& x, V& y)
   {
-    y.resize(A.rows());
-    const int* outer = A.outerIndexPtr();
-    const int* inner = A.innerIndexPtr();
-    const Scalar* val = A.valuePtr();
-    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, A.rows(), 8192), [&](const tbb::blocked_range<Eigen::Index>& rg) {
-      for(Eigen::Index i = rg.begin(); i < rg.end(); ++i) {
-        typename V::Scalar s(0);
-        for(int k = outer[i]; k < outer[i + 1]; ++k)
-          s += val[k] * x[inner[k]];
-        y[i] = s;
-      }
-    });
+    sparse_outer_products(A.rows(), A.outerIndexPtr(), A.innerNonZeroPtr(), A.innerIndexPtr(), A.valuePtr(), x, y);
   }
 
 private:
@@ -256,14 +279,18 @@ private:
       std::vector<Scalar> acc;
       std::vector<int> touched;
     };
+#ifdef CGAL_LINKED_WITH_TBB
     tbb::enumerable_thread_specific<Scratch> scratch; // (one per thread, not per task)
-    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, nchunks, 1), [&](const tbb::blocked_range<Eigen::Index>& rg) {
+#else
+    struct { Scratch s; Scratch& local() { return s; } } scratch;
+#endif
+    for_each_row_block(nchunks, 1, [&](Eigen::Index c0, Eigen::Index c1) {
       Scratch& sc = scratch.local();
       if(sc.mark.empty()) {
         sc.mark.assign(nc, -1);
         sc.acc.assign(nc, Scalar(0));
       }
-      for(Eigen::Index c = rg.begin(); c < rg.end(); ++c) {
+      for(Eigen::Index c = c0; c < c1; ++c) {
         const Eigen::Index i0 = c * chunk, i1 = std::min(m, i0 + chunk);
         for(Eigen::Index i = i0; i < i1; ++i) {
           sc.touched.clear();
