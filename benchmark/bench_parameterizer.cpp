@@ -5,7 +5,7 @@
 // parallelogram orbifold, cotangent weights), our hyperbolic embedding (cut, init, optimise,
 // certify) and the "Cholesky floor" (one factorisation + solve of the cotangent Laplacian, the
 // faster of Eigen's simplicial LDL^T and, where available, CHOLMOD's supernodal LL^T).
-//   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] [--repeat N] [--multigrid-from N] (mesh.off | generated:N) [...]
+//   bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] [--verbose] [--repeat N] [--multigrid-from N] (mesh.off | generated:N) [...]
 // generated:N is a genus-0 blob with protrusions of about N vertices (made here);
 // mesh.off@cones.txt uses the landmarks listed in cones.txt instead of K farthest points.
 // Prints one table row per mesh; nothing is asserted here (see test/ for correctness).
@@ -113,7 +113,7 @@ int main(int argc, char** argv)
 {
   std::size_t k = 7;
   std::size_t euclid_max = 500000; // CGAL's Euclidean solve takes minutes and > 4 GB beyond
-  bool with_map = true, with_floor = true, detail = false;
+  bool with_map = true, with_floor = true, detail = false, verbose = false;
   std::size_t multigrid_from = HOT::internal::default_multigrid_from; // (--multigrid-from N)
   int repeat = 1; // our embedding and the floor: the fastest of this many runs (timings vary on shared machines)
   std::vector<std::string> files;
@@ -124,12 +124,13 @@ int main(int argc, char** argv)
     else if(a == "--no-map") with_map = false;
     else if(a == "--no-floor") with_floor = false; // peak memory of the embedding alone
     else if(a == "--detail") detail = true; // the optimisation's parts, on a second line
+    else if(a == "--verbose") verbose = true; // the solver's steps on stderr
     else if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
     else if(a == "--multigrid-from" && i + 1 < argc) multigrid_from = std::strtoul(argv[++i], nullptr, 10);
     else files.push_back(a);
   }
   if(files.empty()) {
-    std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] [--repeat N] [--multigrid-from N] (mesh.off | generated:N) [...]" << std::endl;
+    std::cerr << "usage: bench_parameterizer [--landmarks K] [--euclid-max N] [--no-map] [--no-floor] [--detail] [--verbose] [--repeat N] [--multigrid-from N] (mesh.off | generated:N) [...]" << std::endl;
     return 1;
   }
   std::printf("%-24s %8s %3s | %9s | %7s %7s %7s %7s %8s | %10s %9s | %7s %9s %7s | %7s | %7s %s\n", "mesh", "vertices", "k",
@@ -180,7 +181,7 @@ int main(int argc, char** argv)
       HOT::Embedding_statistics str;
       const auto t = Clock::now();
       const HOT::Error_code ecr = HOT::hyperbolic_orbifold_Tutte_embedding(
-        sm, landmarks, uv, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::multigrid_threshold(multigrid_from, HOT::parameters::embedding_statistics(&str))));
+        sm, landmarks, uv, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::multigrid_threshold(multigrid_from, HOT::parameters::embedding_statistics(&str).verbose(verbose))));
       const double tr = seconds_since(t);
       if(r == 0 || tr < total) {
         total = tr;

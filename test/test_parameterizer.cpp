@@ -1932,13 +1932,13 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
 // P^T L~ D L~^* P, L~ = fl32(L), built here from Eigen's own factor (not the library's
 // copy); its backward error against A is float's, not double's; the operator is Hermitian
 // and definite; a new factorisation gives the double solve back; a real factor is not rounded
-TEST_CASE(simplicial_float_factor_solves_with_the_rounded_factor)
+static void simplicial_float_factor_case(int side)
 {
   typedef std::complex<double> Cd;
   typedef Eigen::SparseMatrix<Cd> SpC;
-  const int side = 50, n = side * side;
+  const int n = side * side;
   std::vector<int> order(n);
-  for(int v = 0; v < n; ++v) order[v] = (v * 7919) % n; // (7919 prime to 2500: a permutation)
+  for(int v = 0; v < n; ++v) order[v] = (v * 7919) % n; // (7919 prime to 2500 and 8100: a permutation)
   const SpC A = random_grid_connection_laplacian(side, order, 1e-3);
   CHECK(n < HOT::internal::Laplacian_factorization<Cd>::cholmod_threshold);
   HOT::internal::Laplacian_factorization<Cd> f;
@@ -1972,7 +1972,19 @@ TEST_CASE(simplicial_float_factor_solves_with_the_rounded_factor)
   const double with_rounded = (tilde_x - b).norm() / (normA * xf.norm());
   const double backward = (A * xf - b).norm() / (normA * xf.norm());
   const double hermitian = std::abs(u.dot(xf) - sf_u.dot(b)) / (u.norm() * xf.norm());
-  std::cout << "  simplicial rounded factor: residual with L~ D L~^* " << with_rounded << ", backward error against A " << backward
+  // the rounded factor's own solves: split on the larger grid, the same bits on one thread
+  HOT::internal::Simplicial_float_factor single;
+  single.assign(eigen);
+  CHECK_MSG(single.split() == (n > 4096), "split " << single.split() << " for " << n << " rows");
+  Eigen::VectorXcd xs, xs1;
+  single.solve(b, xs);
+  CHECK(xs == xf);
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena one(1);
+  one.execute([&] { single.solve(b, xs1); });
+  CHECK_MSG(xs1 == xs, "not the same bits on one thread: " << (xs1 - xs).norm());
+#endif
+  std::cout << "  simplicial rounded factor (" << n << " rows" << (single.split() ? ", split" : "") << "): residual with L~ D L~^* " << with_rounded << ", backward error against A " << backward
             << ", Hermitian to " << hermitian << std::endl;
   CHECK_MSG(with_rounded < 1e-13, "not a solve with the rounded factor: " << with_rounded);
   CHECK_MSG(backward < 1e-5 && backward > 1e-11, "backward error " << backward); // (float's: it is rounded)
@@ -1992,6 +2004,15 @@ TEST_CASE(simplicial_float_factor_solves_with_the_rounded_factor)
   const Eigen::SparseMatrix<double> R = A.real();
   g.compute(R);
   CHECK(!g.round_to_single_precision() && !g.single_precision());
+}
+
+// (on a grid of 2500 vertices the solves are in one piece; on one of 8100 they are split in
+// two sets of subtrees and a top, solved on two threads: the same checks, and the same bits
+// on one thread)
+TEST_CASE(simplicial_float_factor_solves_with_the_rounded_factor)
+{
+  for(int side : {50, 90})
+    simplicial_float_factor_case(side);
 }
 
 // The initialisation's Tutte embedding solved with the leading block of the solver's

@@ -220,23 +220,21 @@ public:
     Eigen::VectorXcd& b = b_; // (kept: a fresh vector of this size costs its pages' first touch)
     Eigen::VectorXcd& xi = xi_;
     b.resize(n_nodes_);
-    for(int i = 0; i < n_nodes_; ++i) {
+    for_each_node([&](int i) {
       const int v = owner_[i], k = P_.var[v];
       if(P_.kind[v] == Free)
         b[i] = Cd(r[k], r[k + 1]) / scale_[i].real();
       else
         b[i] = scale_[i] * (r[k] / std::norm(scale_[i]));
-    }
-    for(int i = 0; i < n_nodes_; ++i)
       b[i] *= gauge_[i];
+    });
     if(use_multigrid_)
       multigrid_->apply(b, xi);
     else
       xi = solver_.solve(b);
-    for(int i = 0; i < n_nodes_; ++i)
-      xi[i] *= std::conj(gauge_[i]);
     z.resize(r.size());
-    for(int i = 0; i < n_nodes_; ++i) {
+    for_each_node([&](int i) {
+      xi[i] *= std::conj(gauge_[i]);
       const int v = owner_[i], k = P_.var[v];
       if(P_.kind[v] == Free) {
         z[k] = xi[i].real() / scale_[i].real();
@@ -244,10 +242,21 @@ public:
       } else {
         z[k] = std::real(std::conj(scale_[i]) * xi[i]) / std::norm(scale_[i]);
       }
-    }
+    });
   }
 
 private:
+  // f(i) for every node: in parallel on large meshes (each node's own entries)
+  template <class F>
+  void for_each_node(const F& f) const
+  {
+    if(n_nodes_ >= 65536)
+      for_each_row(n_nodes_, [&](Eigen::Index i) { f(static_cast<int>(i)); });
+    else
+      for(int i = 0; i < n_nodes_; ++i)
+        f(i);
+  }
+
   // gauge: the seam rotations have turned by delta since the factorisation; spread the
   // turn smoothly over the mesh, so that psi jumps by delta across the seam
   void set_gauge(const std::vector<double>& x)

@@ -217,15 +217,30 @@ private:
     double* hv = H.valuePtr();
     std::fill(hv, hv + H.nonZeros(), 0.0);
     // the Hessian blocks a chunk of edges at a time (a small buffer, not 16 doubles per
-    // edge: 0.4 GB at a million vertices), added in edge order: bit for bit the same
-    const std::size_t chunk = 65536;
-    for(std::size_t c = 0; c < m; c += chunk) {
-      const std::size_t c_end = (std::min)(m, c + chunk);
+    // edge: 0.4 GB at a million vertices), each chunk's blocks added to the columns of the
+    // groups it touches, in parallel over those groups (disjoint columns); each entry gets its
+    // terms in edge order, as a sequential sum over the edges would: the same bits on any
+    // number of threads
+    std::vector<int> next(incidence_first_.begin(), incidence_first_.end() - 1); // per group, its next incidence
+    for(std::size_t c = 0, ci = 0; c < m; c += hessian_chunk, ++ci) {
+      const std::size_t c_end = (std::min)(m, c + hessian_chunk);
       hessian_offset_ = static_cast<std::size_t>(slot_begin_[c]);
       edge_hessian_.resize(static_cast<std::size_t>(slot_begin_[c_end]) - hessian_offset_);
       for_each_edge(c, c_end, [&](std::size_t e) { edge_terms(x, e, true, project); });
-      for(std::size_t k = hessian_offset_; k < static_cast<std::size_t>(slot_begin_[c_end]); ++k)
-        hv[slots_[k]] += edge_hessian_[k - hessian_offset_];
+      for_each_index(chunk_groups_first_[ci], chunk_groups_first_[ci + 1], [&](std::size_t q) {
+        const int g = chunk_groups_[q];
+        int gi[4];
+        for(int& k = next[g]; k < incidence_first_[g + 1] && static_cast<std::size_t>(incidence_[k] >> 2) < c_end; ++k) {
+          const std::size_t e = static_cast<std::size_t>(incidence_[k] >> 2);
+          const int ends = incidence_[k] & 3;
+          const int n = local_variables(e, gi), na = end_dimension(P_.edges[e][0]);
+          const std::size_t b = static_cast<std::size_t>(slot_begin_[e]);
+          for(int i = 0; i < n; ++i)
+            for(int j = 0; j < n; ++j)
+              if(ends & (j < na ? 1 : 2))
+                hv[slots_[b + i * n + j]] += edge_hessian_[b - hessian_offset_ + i * n + j];
+        }
+      });
     }
     hessian_offset_ = 0;
   }
@@ -236,15 +251,22 @@ private:
     g.assign(P_.n_vars, 0.0);
     g_abs_.assign(P_.n_vars, 0.0);
     double E = 0;
-    int gi[4];
-    for(std::size_t e = 0; e < P_.edges.size(); ++e) {
+    for(std::size_t e = 0; e < P_.edges.size(); ++e)
       E += edge_energy_[e];
-      const int n = local_variables(e, gi);
-      for(int i = 0; i < n; ++i) {
-        g[gi[i]] += edge_gradient_[4 * e + i];
-        g_abs_[gi[i]] += std::abs(edge_gradient_[4 * e + i]);
+    // (per group of variables, its edges in edge order: in parallel, the same sums)
+    for_each_index(0, incidence_first_.size() - 1, [&](std::size_t group) {
+      int gi[4];
+      for(int k = incidence_first_[group]; k < incidence_first_[group + 1]; ++k) {
+        const std::size_t e = static_cast<std::size_t>(incidence_[k] >> 2);
+        const int ends = incidence_[k] & 3;
+        const int n = local_variables(e, gi), na = end_dimension(P_.edges[e][0]);
+        for(int i = 0; i < n; ++i)
+          if(ends & (i < na ? 1 : 2)) {
+            g[gi[i]] += edge_gradient_[4 * e + i];
+            g_abs_[gi[i]] += std::abs(edge_gradient_[4 * e + i]);
+          }
       }
-    }
+    });
     return E;
   }
 
@@ -271,12 +293,34 @@ private:
       f(e);
   }
 
+  // f(i) for i in [begin, end) (groups of variables, or a chunk's groups), in parallel on
+  // meshes of more than 20000 edges
+  template <class F>
+  void for_each_index(std::size_t begin, std::size_t end, const F& f) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(P_.edges.size() > 20000) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t i = r.begin(); i != r.end(); ++i)
+          f(i);
+      });
+      return;
+    }
+#endif
+    for(std::size_t i = begin; i < end; ++i)
+      f(i);
+  }
+
   // energy, gradient and (projected) Hessian block of edge e, into the per-edge buffers
   void edge_terms(const std::vector<double>& x, std::size_t e, bool want_hessian, bool project) const
   {
+    const int a = P_.edges[e][0], b = P_.edges[e][1];
+    if(P_.kind[a] == Free && P_.kind[b] == Free) {
+      free_edge_terms(x, e, a, b, want_hessian, project);
+      return;
+    }
     Position_jet ja, jb;
     Squared_distance_derivatives sd;
-    const int a = P_.edges[e][0], b = P_.edges[e][1];
     position_jet(P_, x, a, ja);
     position_jet(P_, x, b, jb);
     const double hw = 0.5 * P_.edge_weight[e];
@@ -322,6 +366,41 @@ private:
         out[i * n + j] = M(i, j);
   }
 
+  // edge_terms() of an edge between two free vertices (most edges): the variables are the
+  // positions themselves (identity Jacobian, no second derivatives), so the terms are those
+  // of the squared distance, scaled; the same values as the general case's (its products
+  // with 1 and 0 change no bit)
+  void free_edge_terms(const std::vector<double>& x, std::size_t e, int a, int b, bool want_hessian, bool project) const
+  {
+    Squared_distance_derivatives sd;
+    const C za(x[P_.var[a]], x[P_.var[a] + 1]), zb(x[P_.var[b]], x[P_.var[b] + 1]);
+    const double hw = 0.5 * P_.edge_weight[e];
+    squared_hyperbolic_distance(za, zb, sd, want_hessian);
+    edge_energy_[e] = hw * sd.f;
+    for(int i = 0; i < 4; ++i)
+      edge_gradient_[4 * e + i] = hw * sd.g[i];
+    if(!want_hessian)
+      return;
+    double* out = &edge_hessian_[slot_begin_[e] - hessian_offset_];
+    if(project) {
+      Eigen::Matrix4d M;
+      for(int i = 0; i < 4; ++i)
+        for(int j = 0; j < 4; ++j)
+          M(i, j) = hw * sd.H[i][j];
+      project_psd(M, 4);
+      for(int i = 0; i < 4; ++i)
+        for(int j = 0; j < 4; ++j)
+          out[i * 4 + j] = M(i, j);
+      return;
+    }
+    for(int i = 0; i < 4; ++i)
+      for(int j = 0; j < 4; ++j)
+        out[i * 4 + j] = hw * sd.H[i][j];
+  }
+
+  // number of variables of a vertex's position
+  int end_dimension(int v) const { return P_.kind[v] == Fixed ? 0 : (P_.kind[v] == On_line ? 1 : 2); }
+
   // local variables of edge e: those of its first end, then those of its second
   int local_variables(std::size_t e, int* gi) const
   {
@@ -329,7 +408,7 @@ private:
     for(int s = 0; s < 2; ++s) {
       const int v = P_.edges[e][s];
       const int o = variable_owner(P_, v);
-      const int dim = P_.kind[v] == Fixed ? 0 : (P_.kind[v] == On_line ? 1 : 2);
+      const int dim = end_dimension(v);
       for(int i = 0; i < dim; ++i)
         gi[n++] = o + i;
     }
@@ -367,6 +446,54 @@ private:
     std::vector<int> outer;
     build_columns(G, outer);
     build_slots(G, outer);
+    build_incidences(G);
+  }
+
+  // per group of variables, its edges in edge order (incidence_: 4 e + the ends of e in the
+  // group, bit 1 the first, bit 2 the second), and per chunk of `hessian_chunk` edges the
+  // groups its edges touch
+  void build_incidences(const Variable_groups& G) const
+  {
+    const std::size_t m = P_.edges.size();
+    const int ng = static_cast<int>(G.start.size());
+    auto ends_groups = [&](std::size_t e, int& ga, int& gb) {
+      const int a = P_.edges[e][0], b = P_.edges[e][1];
+      ga = P_.kind[a] == Fixed ? -1 : G.group_of[variable_owner(P_, a)];
+      gb = P_.kind[b] == Fixed ? -1 : G.group_of[variable_owner(P_, b)];
+    };
+    incidence_first_.assign(ng + 1, 0);
+    int ga, gb;
+    for(std::size_t e = 0; e < m; ++e) {
+      ends_groups(e, ga, gb);
+      if(ga >= 0) ++incidence_first_[ga + 1];
+      if(gb >= 0 && gb != ga) ++incidence_first_[gb + 1];
+    }
+    for(int g = 0; g < ng; ++g)
+      incidence_first_[g + 1] += incidence_first_[g];
+    incidence_.resize(incidence_first_[ng]);
+    std::vector<int> fill(incidence_first_.begin(), incidence_first_.end() - 1);
+    std::vector<int> last_chunk(ng, -1);
+    chunk_groups_first_.assign(1, 0);
+    chunk_groups_.clear();
+    for(std::size_t e = 0; e < m; ++e) {
+      const int ci = static_cast<int>(e / hessian_chunk);
+      if(e % hessian_chunk == 0 && e > 0)
+        chunk_groups_first_.push_back(static_cast<int>(chunk_groups_.size()));
+      ends_groups(e, ga, gb);
+      const int code = 4 * static_cast<int>(e);
+      if(ga >= 0 && ga == gb) {
+        incidence_[fill[ga]++] = code | 3;
+      } else {
+        if(ga >= 0) incidence_[fill[ga]++] = code | 1;
+        if(gb >= 0) incidence_[fill[gb]++] = code | 2;
+      }
+      for(int g : {ga, gb})
+        if(g >= 0 && last_chunk[g] != ci) {
+          last_chunk[g] = ci;
+          chunk_groups_.push_back(g);
+        }
+    }
+    chunk_groups_first_.push_back(static_cast<int>(chunk_groups_.size()));
   }
 
   // owners as groups of consecutive variables: group of each variable, its start and size
@@ -523,6 +650,8 @@ private:
   mutable Eigen::Index pattern_nnz_ = 0;
   mutable bool pattern_given_ = false;
   mutable std::vector<int> slot_begin_, slots_;
+  static constexpr std::size_t hessian_chunk = 65536; // edges whose Hessian blocks are buffered at a time
+  mutable std::vector<int> incidence_first_, incidence_, chunk_groups_first_, chunk_groups_; // (build_incidences)
   mutable std::vector<double> edge_energy_, edge_gradient_, edge_hessian_;
   mutable std::size_t hessian_offset_ = 0; // slot of the first edge of the chunk in edge_hessian_
   mutable std::vector<double> terms_x_;     // the point of the last evaluate(): the per-edge terms are its

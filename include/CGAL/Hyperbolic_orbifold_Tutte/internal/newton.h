@@ -59,7 +59,9 @@ struct Solver_options
   // limit of double's range (a tube of length 350)
   bool single_precision_small_preconditioner = true;
   // from this many cut-mesh vertices on, the preconditioner is a V-cycle of algebraic
-  // multigrid instead of a factorisation (see Interior_laplacian::multigrid_from)
+  // multigrid instead of a factorisation, where minimize_energy() is given no initialisation's
+  // interior Laplacian (with one, the preconditioner follows the initialisation: multigrid
+  // where it solved by multigrid, see Interior_laplacian::multigrid_from)
   Eigen::Index multigrid_from = default_multigrid_from;
   bool verbose = false;
 };
@@ -177,7 +179,9 @@ private:
     pre_ = interior ? interior->connection.get() : nullptr;
     if(pre_ == nullptr || &pre_->problem() != &P_) {
       own_pre_.reset(new Connection_laplacian_preconditioner(P_, interior));
-      if(P_.n >= opt_.multigrid_from)
+      // (the initialisation's choice where it is given: one threshold, Interior_laplacian's)
+      if(interior && interior->index.size() == static_cast<std::size_t>(P_.n) ? interior->multigrid != nullptr
+                                                                                : P_.n >= opt_.multigrid_from)
         own_pre_->use_multigrid();
       pre_ = own_pre_.get();
     }

@@ -69,18 +69,36 @@ void for_each_row_block(Eigen::Index n, Eigen::Index grain, const F& f)
 // i, each sum in storage order (the same bits on any number of threads). For a row-major
 // matrix y = A x; for a column-major one y = A^T x (= A x when A is symmetric). `nnz`: the
 // entries per outer index of an uncompressed matrix (else null).
-template <class Entry, class V>
-void sparse_outer_products(Eigen::Index n, const int* outer, const int* nnz, const int* inner, const Entry* val, const V& x, V& y)
+// (store(i, y_i) receives each sum: the caller's use of it fused into the same pass)
+template <class Entry, class V, class Store>
+void sparse_outer_products(Eigen::Index n, const int* outer, const int* nnz, const int* inner, const Entry* val, const V& x,
+                           const Store& store)
 {
-  y.resize(n);
   for_each_row_block(n, 8192, [&](Eigen::Index b, Eigen::Index e) {
     for(Eigen::Index i = b; i < e; ++i) {
       const int end = nnz ? outer[i] + nnz[i] : outer[i + 1];
       typename V::Scalar s(0);
       for(int k = outer[i]; k < end; ++k)
         s += val[k] * x[inner[k]];
-      y[i] = s;
+      store(i, s);
     }
+  });
+}
+
+template <class Entry, class V>
+void sparse_outer_products(Eigen::Index n, const int* outer, const int* nnz, const int* inner, const Entry* val, const V& x, V& y)
+{
+  y.resize(n);
+  sparse_outer_products(n, outer, nnz, inner, val, x, [&y](Eigen::Index i, const typename V::Scalar& s) { y[i] = s; });
+}
+
+// f(i) for i in [0, n), in parallel
+template <class F>
+void for_each_row(Eigen::Index n, const F& f)
+{
+  for_each_row_block(n, 16384, [&](Eigen::Index b, Eigen::Index e) {
+    for(Eigen::Index i = b; i < e; ++i)
+      f(i);
   });
 }
 
@@ -182,9 +200,12 @@ public:
   // Not reentrant: the levels' work vectors are shared.
   void apply(const Vector& r, Vector& z) const
   {
-    levels_[0].b = r;
+    const Level& L = levels_[0];
+    const Eigen::Index n = L.A.rows();
+    for_each_row(n, [&](Eigen::Index i) { L.b[i] = r[i]; }); // (L.b has n rows: see compute)
     cycle(0);
-    z = levels_[0].x;
+    z.resize(n);
+    for_each_row(n, [&](Eigen::Index i) { z[i] = L.x[i]; });
   }
 
   // Conjugate gradients preconditioned by the V-cycle, from x (resized to zero if its size is
@@ -238,6 +259,12 @@ public:
   static void multiply(const Matrix& A, const V& x, V& y)
   {
     sparse_outer_products(A.rows(), A.outerIndexPtr(), A.innerNonZeroPtr(), A.innerIndexPtr(), A.valuePtr(), x, y);
+  }
+  // store(i, (A x)_i), in parallel over A's rows
+  template <class V, class Store>
+  static void multiply_into(const Matrix& A, const V& x, const Store& store)
+  {
+    sparse_outer_products(A.rows(), A.outerIndexPtr(), A.innerNonZeroPtr(), A.innerIndexPtr(), A.valuePtr(), x, store);
   }
 
 private:
@@ -487,32 +514,39 @@ private:
   }
 
   // x += p(D^-1 A) D^-1 (b - A x): Chebyshev's polynomial of degree `smoothing` for
-  // [lambda / range, lambda] (`from_zero`: x is 0, the residual is b)
+  // [lambda / range, lambda] (`from_zero`: x is 0, the residual is b). Each step's vector
+  // updates run in the pass of its product, in parallel over the rows.
   void smooth(const Level& L, bool from_zero) const
   {
     const double hi = L.lambda, lo = hi / opt_.smoothing_range;
     const double theta = (hi + lo) / 2, delta = (hi - lo) / 2, sigma = theta / delta;
     double rho = 1 / sigma;
     const Eigen::Index n = L.A.rows();
+    Vector &x = L.x, &res = L.res, &d = L.d, &t = L.t;
+    const Real_vector& inv_diag = L.inv_diag;
     if(from_zero) {
-      L.res = L.b;
-    } else {
-      multiply(L.A, L.x, L.t);
-      L.res = L.b - L.t;
+      for_each_row(n, [&](Eigen::Index i) {
+        res[i] = L.b[i];
+        d[i] = res[i] * (inv_diag[i] / theta);
+      });
+    } else { // res = b - A x
+      multiply_into(L.A, x, [&](Eigen::Index i, const Value& s) {
+        res[i] = L.b[i] - s;
+        d[i] = res[i] * (inv_diag[i] / theta);
+      });
     }
-    for(Eigen::Index i = 0; i < n; ++i)
-      L.d[i] = L.res[i] * (L.inv_diag[i] / theta);
-    for(int k = 1; k <= opt_.smoothing; ++k) {
-      L.x += L.d;
-      if(k == opt_.smoothing)
-        break;
-      multiply(L.A, L.d, L.t);
-      L.res -= L.t;
-      const double rho1 = 1 / (2 * sigma - rho);
-      for(Eigen::Index i = 0; i < n; ++i)
-        L.d[i] = (rho1 * rho) * L.d[i] + (2 * rho1 / delta) * L.inv_diag[i] * L.res[i];
+    for(int k = 1; k < opt_.smoothing; ++k) {
+      // x += d; res -= A d; the next d into t (d is read by the other rows' products)
+      const double rho1 = 1 / (2 * sigma - rho), a = rho1 * rho, c = 2 * rho1 / delta;
+      multiply_into(L.A, d, [&](Eigen::Index i, const Value& s) {
+        x[i] += d[i];
+        res[i] -= s;
+        t[i] = a * d[i] + c * inv_diag[i] * res[i];
+      });
+      d.swap(t);
       rho = rho1;
     }
+    for_each_row(n, [&](Eigen::Index i) { x[i] += d[i]; });
   }
 
   void coarse_solve(const Vector& b, Vector& x, std::true_type) const { x = coarse_->solve(b); }
@@ -531,15 +565,13 @@ private:
       coarse_solve(L.b, L.x, std::is_same<Scalar, Value>());
       return;
     }
-    L.x.setZero();
+    for_each_row(L.A.rows(), [&](Eigen::Index i) { L.x[i] = Value(0); });
     smooth(L, true);
-    multiply(L.A, L.x, L.t);
-    L.res = L.b - L.t;
+    multiply_into(L.A, L.x, [&](Eigen::Index i, const Value& s) { L.res[i] = L.b[i] - s; });
     const Level& C = levels_[l + 1];
     multiply(L.R, L.res, C.b);
     cycle(l + 1);
-    multiply(L.P, C.x, L.t);
-    L.x += L.t;
+    multiply_into(L.P, C.x, [&](Eigen::Index i, const Value& s) { L.x[i] += s; });
     smooth(L, false);
   }
 
