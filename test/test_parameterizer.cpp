@@ -2058,6 +2058,52 @@ TEST_CASE(initialisation_shares_the_solver_factorisation)
   compare(D.P, xs, xo, "mushroom (disk)");
 }
 
+// Below CHOLMOD's size the initialisation factors the solver's connection Laplacian on a second
+// thread while it factors the interior Laplacian (Interior_laplacian::prefactored). The solver
+// takes that factorisation over: the same computations as its own, so the same embedding to
+// the last bit as with no prefactoring, and no factorisation in the solver.
+TEST_CASE(initialisation_prefactors_the_solver_preconditioner)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  const bool expected = true;
+#else
+  const bool expected = false; // (no second thread: the solver factors it)
+#endif
+  auto check = [&](const HOT::internal::Flat_problem& P, const auto& tile, const auto& pts, const std::string& name) {
+    HOT::internal::Interior_laplacian with, without;
+    without.prefactor = false;
+    std::vector<double> xw, xo;
+    CHECK(HOT::internal::initialize_embedding(P, tile, pts, xw, &with) == HOT::OK);
+    CHECK(HOT::internal::initialize_embedding(P, tile, pts, xo, &without) == HOT::OK);
+    CHECK(xw == xo);
+    CHECK_MSG((with.prefactored != nullptr) == expected, name);
+    CHECK(!without.prefactored && !with.connection);
+    if(with.prefactored)
+      CHECK(with.prefactored->factored_at(xw));
+    HOT::internal::Solver_options opt;
+    HOT::Solver_statistics sw, so;
+    CHECK(HOT::internal::minimize_energy(P, xw, opt, sw, &with) == HOT::OK);
+    CHECK(HOT::internal::minimize_energy(P, xo, opt, so, &without) == HOT::OK);
+    std::cout << "  " << name << ": " << sw.iterations << " steps, " << sw.cg_iterations << " CG with the prefactored preconditioner, "
+              << so.iterations << " steps, " << so.cg_iterations << " CG without" << std::endl;
+    CHECK_MSG(xw == xo, name << ": not the same embedding, largest hyperbolic distance " << largest_hyperbolic_distance(P, xw, xo));
+    CHECK(sw.cg_iterations == so.cg_iterations && sw.preconditioner_factorizations == so.preconditioner_factorizations);
+    // the solver took it over: it rounded that factor for its solves
+    if(with.prefactored)
+      CHECK_MSG(with.prefactored->solves_in_single_precision(), name << ": the solver did not use the prefactored preconditioner");
+  };
+  for(const auto& c : std::vector<std::pair<std::string, int> >{{"hand", 7}, {"bear", 7}, {"bear", 23}}) {
+    Sphere_problem S;
+    CHECK(make_sphere_problem(c.first, c.second, S));
+    check(S.P, S.tile, S.pts, c.first + " k=" + std::to_string(c.second));
+  }
+  Mesh m;
+  CHECK(read_demo_mesh("mushroom", m));
+  Disk_problem D;
+  CHECK(make_disk_problem(m, boundary_landmarks(m, 6, 0.3), D));
+  check(D.P, D.tile, D.pts, "mushroom (disk)");
+}
+
 // The Riemannian Hessian is the second derivative of the energy along geodesics: move every
 // free vertex along the geodesic of a random initial velocity v (exponential map of the
 // Poincare disk), then d2E/dt2 at t = 0 is v^T H v. The coordinate Hessian differs from it

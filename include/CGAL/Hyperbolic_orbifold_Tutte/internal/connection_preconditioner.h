@@ -86,9 +86,21 @@ public:
       if(node_[v] >= 0)
         owner_[node_[v]] = v;
     shares_ = share_interior;
-    if(interior_ && (interior_->index.size() != static_cast<std::size_t>(P.n) ||
-                     !(interior_->multigrid || (interior_->own_factor && interior_->solver.definite()))))
+    if(interior_ && !usable(*interior_))
       interior_ = nullptr;
+  }
+
+  // Factored before the interior Laplacian is (at the same time, on another thread: see
+  // initialize_embedding): no real Laplacian of its own for the gauge; attach_interior()
+  // must give it the interior's once factored. Call before factor().
+  void expect_interior() { interior_later_ = true; }
+  // the interior Laplacian for the gauge, now factored: false (and the preconditioner not to
+  // be used) if it cannot serve
+  bool attach_interior(const Interior_laplacian* interior)
+  {
+    interior_later_ = false;
+    interior_ = interior && usable(*interior) ? interior : nullptr;
+    return interior_ != nullptr || !has_seams_;
   }
 
   // From now on A is not factored: its solves are one V-cycle of algebraic multigrid
@@ -172,7 +184,7 @@ public:
         return factored_ = false;
       }
     }
-    if(has_seams_ && !interior_ && !shares_ && !gauge_factored_) {
+    if(has_seams_ && !interior_ && !shares_ && !gauge_factored_ && !interior_later_) {
       gauge_factored_ = true;
       factor_gauge_laplacian(A, x);
     }
@@ -359,6 +371,12 @@ private:
     gauge_solver_.compute(L);
   }
 
+  // an interior Laplacian of this problem, factored or solved by multigrid
+  bool usable(const Interior_laplacian& lap) const
+  {
+    return lap.index.size() == static_cast<std::size_t>(P_.n) && (lap.multigrid || (lap.own_factor && lap.solver.definite()));
+  }
+
   int node_of(int v) const { return P_.kind[v] == Transformed ? node_[P_.twin[v]] : node_[v]; }
 
   // how a tangent vector of the owner turns on its way to this copy
@@ -378,7 +396,7 @@ private:
   const Interior_laplacian* interior_;
   bool shares_ = false, factored_ = false, single_precision_ = false, simplicial_single_precision_ = true;
   std::vector<int> copy_;      // the seam twin of a vertex, -1 if none
-  bool has_seams_ = false, gauge_factored_ = false;
+  bool has_seams_ = false, gauge_factored_ = false, interior_later_ = false;
   std::vector<Cd> scale_, gauge_, rho0_;
   Laplacian_factorization<double> gauge_solver_;
   Laplacian_factorization<Cd> solver_;

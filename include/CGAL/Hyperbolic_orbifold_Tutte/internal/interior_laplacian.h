@@ -53,6 +53,13 @@ struct Interior_laplacian
   // ratio 0.96), 7% lost with 23 (ratio 1.008: 39 CG iterations and 7 gauge solves to pay).
   double share_max_fill = 1.0;
   std::shared_ptr<Connection_laplacian_preconditioner> connection;
+  // Where the interior Laplacian is factored on its own by Eigen (below `share_from` cut-mesh
+  // vertices, or where sharing failed below that size), the solver's connection Laplacian is
+  // factored at the same time on a second thread (both factorisations are sequential; the
+  // connection's depends on the border's positions only): `prefactored`, which the solver
+  // takes over. (With TBB only; `prefactor` false: the solver factors it itself.)
+  bool prefactor = true;
+  std::shared_ptr<Connection_laplacian_preconditioner> prefactored;
   // From this many cut-mesh vertices on, no factorisation: the initialisation solves with
   // conjugate gradients preconditioned by algebraic multigrid (`multigrid`, kept for the
   // gauge), and so does the solver (Solver_options::multigrid_from, the same default)

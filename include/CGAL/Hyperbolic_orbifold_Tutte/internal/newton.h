@@ -172,11 +172,12 @@ private:
   static double seconds(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
   Energy_evaluator& ev() { return *ev_; }
 
-  // the initialisation's preconditioner where it made one for this problem (it is factored
-  // again here only if the seam rotations have changed since), else one of our own
+  // the initialisation's preconditioner where it made one for this problem (shared, or
+  // prefactored: see Interior_laplacian; factored again here only if the seam rotations have
+  // changed since), else one of our own
   void set_up_preconditioner(const Interior_laplacian* interior)
   {
-    pre_ = interior ? interior->connection.get() : nullptr;
+    pre_ = interior ? (interior->connection ? interior->connection.get() : interior->prefactored.get()) : nullptr;
     if(pre_ == nullptr || &pre_->problem() != &P_) {
       own_pre_.reset(new Connection_laplacian_preconditioner(P_, interior));
       // (the initialisation's choice where it is given: one threshold, Interior_laplacian's)

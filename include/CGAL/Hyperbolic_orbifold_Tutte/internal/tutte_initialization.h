@@ -20,6 +20,10 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_group.h>
+#endif
+
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -114,6 +118,7 @@ inline void number_interior(const Flat_problem& P, const std::vector<double>& x,
   interior_index.assign(P.n, -1);
   lap.own_factor = false;
   lap.connection.reset();
+  lap.prefactored.reset();
   lap.multigrid.reset();
   if(lap.share && P.n >= lap.share_from && P.n < lap.multigrid_from) {
     auto pre = std::make_shared<Connection_laplacian_preconditioner>(P, nullptr, true, lap.share_max_fill);
@@ -235,7 +240,34 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
   if(lap.size == 0)
     return OK;
   Eigen::MatrixXd kxy;
-  const Error_code solved = solve_klein_tutte(P, z, lap, kxy);
+  Error_code solved = OK;
+#ifdef CGAL_LINKED_WITH_TBB
+  // the solver's connection Laplacian factored meanwhile, where both factorisations are
+  // Eigen's (sequential): see Interior_laplacian::prefactored
+  bool both_sequential = !lap.connection && P.n < lap.multigrid_from;
+#ifdef CGAL_HOT_USE_CHOLMOD
+  both_sequential = both_sequential && P.n < Laplacian_factorization<double>::cholmod_threshold;
+#endif
+  if(lap.prefactor && both_sequential) {
+    auto pre = std::make_shared<Connection_laplacian_preconditioner>(P);
+    pre->expect_interior();
+    bool factored = false;
+    tbb::task_group tasks;
+    tasks.run([&] { factored = pre->factor(x); }); // (reads the border's positions only, placed)
+    try {
+      solved = solve_klein_tutte(P, z, lap, kxy);
+    } catch(...) {
+      tasks.wait();
+      throw;
+    }
+    tasks.wait();
+    if(factored && pre->attach_interior(&lap))
+      lap.prefactored = pre;
+  } else
+#endif
+  {
+    solved = solve_klein_tutte(P, z, lap, kxy);
+  }
   if(solved != OK)
     return solved;
   const auto kx = kxy.col(0);
