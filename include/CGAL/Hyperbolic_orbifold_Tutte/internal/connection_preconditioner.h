@@ -140,7 +140,8 @@ public:
     return true;
   }
 
-  // assembles A with the seam rotations at x and factors it (symbolic analysis once)
+  // assembles A with the seam rotations at x and factors it (symbolic analysis once); after
+  // use_multigrid(), sets its multigrid hierarchy up instead ("factored" then means that)
   bool factor(const std::vector<double>& x)
   {
     std::vector<Eigen::Triplet<Cd> > trip;

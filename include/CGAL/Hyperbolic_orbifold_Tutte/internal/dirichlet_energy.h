@@ -280,32 +280,24 @@ private:
   template <class F>
   void for_each_edge(std::size_t begin, std::size_t end, const F& f) const
   {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(P_.edges.size() > 20000) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-        for(std::size_t e = r.begin(); e != r.end(); ++e)
-          f(e);
-      });
-      return;
-    }
-#endif
-    for(std::size_t e = begin; e < end; ++e)
-      f(e);
+    for_each_index(begin, end, f, 4096);
   }
 
-  // f(i) for i in [begin, end) (groups of variables, or a chunk's groups), in parallel on
-  // meshes of more than 20000 edges
+  // f(i) for i in [begin, end) (edges, groups of variables, or a chunk's groups), in
+  // parallel, in blocks of `grain`, on meshes of more than 20000 edges
   template <class F>
-  void for_each_index(std::size_t begin, std::size_t end, const F& f) const
+  void for_each_index(std::size_t begin, std::size_t end, const F& f, std::size_t grain = 1024) const
   {
 #ifdef CGAL_LINKED_WITH_TBB
     if(P_.edges.size() > 20000) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, grain), [&](const tbb::blocked_range<std::size_t>& r) {
         for(std::size_t i = r.begin(); i != r.end(); ++i)
           f(i);
       });
       return;
     }
+#else
+    (void)grain;
 #endif
     for(std::size_t i = begin; i < end; ++i)
       f(i);
