@@ -5,7 +5,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  g++ cmake make ccache pkg-config
+  g++ cmake make ninja-build ccache pkg-config   # (Ninja builds the named targets of a build in parallel)
   libcgal-dev        # CGAL 5.5 (header-only), pulls Boost
   libcgal-demo       # ships data/meshes/*.off used by tests and the demo
   libeigen3-dev      # sparse linear algebra

@@ -19,11 +19,17 @@ for a in "$@"; do
     *) ctest_args+=("$a") ;;
   esac
 done
+# each step's time is printed ("== <step>: N s"): install, build, tests, sanitizer build, sanitizer tests
+step() { echo "== $1: $(( SECONDS - t_step )) s"; t_step=$SECONDS; }
+t_step=$SECONDS
 "$root/scripts/install-deps.sh"
+step install
 "$root/scripts/build.sh"
+step build
 build="${HOT_BUILD_DIR:-$root/build}"
 jobs="${HOT_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 (cd "$build" && ctest --output-on-failure -j "$jobs" ${ctest_args[@]+"${ctest_args[@]}"} | tee "$build/ctest-summary.log")
+step tests
 if grep -q "Not Run\|Skipped" "$build/ctest-summary.log"; then
   echo "== skipped in this build (not passed):"
   grep "\*\*\*Skipped\|Not Run" "$build/ctest-summary.log" || true
@@ -32,17 +38,21 @@ fi
 [ "${HOT_SANITIZE_STAGE:-1}" != 0 ] || exit 0
 # The subset: labels unit, input, cut, maps, cli, embedding (not heavy, example, doc), the
 # replay of the fuzz corpus included (label input); only the programs these tests run are
-# built (add new test programs to `targets`), in Debug (CGAL's and Eigen's assertions on).
-# Measured with one job: build 11-12 min with an empty ccache (seconds with a warm one),
-# tests under 3 min; the CI's two jobs about halve both.
+# built (add new test programs to `targets`), in Debug (CGAL's and Eigen's assertions on),
+# with Ninja where it is installed (make would build the named targets one after the other).
 labels='^(unit|input|cut|maps|cli|embedding)$'
 targets=(test_hyperbolic_kernel test_orbifold_tiles test_multigrid test_traits_archetype test_input_checks test_prepare_mesh test_cut_graph
          test_parameterizer test_maps test_cgal_drop_in test_certify fuzz_mesh_reader hyperbolic_orbifold_tutte)
 asan="${HOT_ASAN_BUILD_DIR:-$build-asan}"
 t0=$SECONDS
 echo "== sanitizer stage (address, undefined) in $asan"
-cmake -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=Debug -DHOT_SANITIZE=ON -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
+generator=()
+if [ ! -f "$asan/CMakeCache.txt" ] && command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+cmake ${generator[@]+"${generator[@]}"} -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=Debug -DHOT_SANITIZE=ON \
+  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
 cmake --build "$asan" -j "$jobs" --target "${targets[@]}"
+step "sanitizer build"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 (cd "$asan" && ctest --output-on-failure -j "$jobs" -L "$labels")
+step "sanitizer tests"
 echo "== sanitizer stage: passed in $(( SECONDS - t0 ))s"

@@ -294,7 +294,7 @@ public:
       settings.cut_graph_start = std::make_pair(static_cast<int>(base_of(start_[0])), static_cast<int>(base_of(start_[1])));
     }
     internal::Seam_mesh_embedding<SeamMesh, Tile> job(mesh, bhd, landmarks, tile, settings, st);
-    const Error_code ec = job.run();
+    const Error_code ec = internal::run_embedding_stage(job);
     if(ec != OK)
       return ec;
     for(std::size_t v = 0; v < job.cut_vertices().size(); ++v) {

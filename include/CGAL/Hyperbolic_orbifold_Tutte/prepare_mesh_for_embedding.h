@@ -36,32 +36,23 @@ Status run_preparation(const PointRange& points, const PolygonRange& polygons, T
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   namespace P = preparation;
-  const double max_hole = choose_parameter(get_parameter(np, internal_np::maximum_hole_length), 0.5);
-  const bool keep_largest = choose_parameter(get_parameter(np, internal_np::keep_largest_component), false);
-  const bool split_chords = choose_parameter(get_parameter(np, internal_np::split_boundary_chords), true);
-  std::optional<Orbifold_type> required;
+  P::Preparation_options o;
+  o.max_hole = choose_parameter(get_parameter(np, internal_np::maximum_hole_length), 0.5);
+  o.keep_largest = choose_parameter(get_parameter(np, internal_np::keep_largest_component), false);
+  o.split_chords = choose_parameter(get_parameter(np, internal_np::split_boundary_chords), true);
   if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value)
-    required = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
-  if(!(max_hole >= 0) || !std::isfinite(max_hole))
+    o.required = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
+  if(!(o.max_hole >= 0) || !std::isfinite(o.max_hole))
     return Status::failure(ERROR_WRONG_PARAMETER, "maximum_hole_length must be a finite number >= 0");
 
   P::Soup soup;
   Status r = P::load_points(points, soup, prep);
   if(r) r = P::load_polygons(polygons, soup, prep);
-  if(r) r = P::merge_border_duplicates(soup, prep);
-  if(r) r = P::make_oriented_manifold(soup, prep);
+  std::vector<P::Point> prepared_points;
+  std::vector<std::array<std::size_t, 3> > prepared_triangles;
+  if(r) r = P::prepare_loaded_soup(soup, o, prep, prepared_points, prepared_triangles);
   if(!r) return r;
-  P::drop_unused_points(soup, prep);
-  P::Work w;
-  r = P::build_work_mesh(soup, w, prep.number_of_input_vertices);
-  if(r) r = P::triangulate_polygons(w, prep);
-  if(r) r = P::keep_one_component(w, keep_largest, prep);
-  if(r) r = P::remove_degenerate_faces(w, prep);
-  if(r) r = P::fill_holes(w, max_hole, required, prep);
-  if(!r) return r;
-  if(prep.type == Disk_type && split_chords)
-    P::split_boundary_chords(w, prep);
-  P::write_prepared_mesh(w, soup, out, prep);
+  P::write_prepared_mesh(prepared_points, prepared_triangles, out);
   return check_mesh(out, prep.type);
 }
 

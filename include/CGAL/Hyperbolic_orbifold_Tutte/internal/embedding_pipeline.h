@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certify_and_repair.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/compiled_once.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_chart_solve.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
@@ -303,9 +304,40 @@ private:
   Unresolved_faces tiny_;
 };
 
+// Runs the solve stage (a door compiled once in the project's own builds for the seam mesh of
+// a CGAL::Surface_mesh over Epick's points and the default tile: internal/compiled_once.h).
+template <class SeamMesh, class Tile>
+Error_code run_embedding_stage(Seam_mesh_embedding<SeamMesh, Tile>& job)
+{
+  return job.run();
+}
+
 } // namespace internal
 } // namespace Hyperbolic_orbifold_Tutte
 } // namespace CGAL
+
+// (declared where the unit included CGAL/Surface_mesh.h before: a program embedding a
+// Surface_mesh through a Seam_mesh must include it before CGAL/boost/graph/Seam_mesh.h)
+#if defined(CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EXTERN_INSTANCES) && defined(CGAL_TOP_LEVEL_SURFACE_MESH_H) && \
+    defined(CGAL_EXACT_PREDICATES_INEXACT_CONSTRUCTIONS_KERNEL_H)
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+typedef Seam_mesh_storage<CGAL::Surface_mesh<CGAL::Epick::Point_3> >::Mesh Instance_seam_mesh;
+
+#define CGAL_HOT_RUN_EMBEDDING_STAGE_DOOR                                                                 \
+  Error_code run_embedding_stage<Instance_seam_mesh, Orbifold_tile<> >(                                \
+    Seam_mesh_embedding<Instance_seam_mesh, Orbifold_tile<> >&)
+CGAL_HOT_INSTANCE(extern, CGAL_HOT_RUN_EMBEDDING_STAGE_DOOR)
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+#endif
 
 #include <CGAL/enable_warnings.h>
 

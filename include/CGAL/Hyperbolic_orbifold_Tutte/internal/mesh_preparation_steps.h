@@ -5,6 +5,7 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/compiled_once.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/soup_preparation.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -24,6 +25,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -47,6 +49,15 @@ typedef CGAL::Surface_mesh<Point> Work_mesh;
 typedef Work_mesh::Vertex_index Work_vertex;
 typedef Work_mesh::Halfedge_index Work_halfedge;
 typedef Work_mesh::Face_index Work_face;
+
+// the options of the steps (prepare_polygon_soup_for_embedding()'s named parameters)
+struct Preparation_options
+{
+  bool keep_largest = false;
+  double max_hole = 0.5;
+  std::optional<Orbifold_type> required;
+  bool split_chords = true;
+};
 
 struct Work
 {
@@ -378,11 +389,11 @@ inline std::vector<std::size_t> nearest_points(const std::vector<Point>& points,
   return result;
 }
 
-// Writes the prepared mesh into `out` in the addressing order (input vertices in input
-// order, then the added ones) and fills the addressing of `prep`, whose `prepared_vertex`
-// holds on entry the soup point of each input vertex (npos: on no face).
-template <class TriangleMesh>
-void write_prepared_mesh(const Work& w, const Soup& soup, TriangleMesh& out, Mesh_preparation& prep)
+// The prepared mesh as a soup in the addressing order (input vertices in input order, then
+// the added ones), and the addressing of `prep`, whose `prepared_vertex` holds on entry the
+// soup point of each input vertex (npos: on no face).
+inline void prepared_soup(const Work& w, const Soup& soup, Mesh_preparation& prep, std::vector<Point>& points,
+                          std::vector<std::array<std::size_t, 3> >& triangles)
 {
   const std::size_t n = prep.number_of_input_vertices;
   std::vector<std::pair<std::size_t, Work_vertex> > order;
@@ -391,7 +402,8 @@ void write_prepared_mesh(const Work& w, const Soup& soup, TriangleMesh& out, Mes
   std::sort(order.begin(), order.end());
   std::vector<std::size_t> prepared(num_vertices(w.mesh) + w.mesh.number_of_removed_vertices(), Mesh_preparation::npos);
   std::vector<std::size_t> prepared_of_input(n, Mesh_preparation::npos);
-  std::vector<Point> points;
+  points.clear();
+  triangles.clear();
   prep.output_index.clear();
   std::size_t added = 0;
   for(const auto& o : order) {
@@ -404,15 +416,12 @@ void write_prepared_mesh(const Work& w, const Soup& soup, TriangleMesh& out, Mes
     }
     points.push_back(w.mesh.point(o.second));
   }
-  std::vector<std::array<std::size_t, 3> > triangles;
   for(Work_face f : faces(w.mesh)) {
     std::array<std::size_t, 3> t;
     std::size_t k = 0;
     for(Work_vertex v : vertices_around_face(halfedge(f, w.mesh), w.mesh)) t[k++] = prepared[v.idx()];
     triangles.push_back(t);
   }
-  CGAL::clear(out);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, out);
   // the input's vertices: themselves, merged into the first at their position, or (collapsed
   // by the removal of degenerate faces) the nearest remaining vertex
   std::vector<std::size_t> collapsed;
@@ -437,6 +446,47 @@ void write_prepared_mesh(const Work& w, const Soup& soup, TriangleMesh& out, Mes
     prep.filled_holes[i].vertex = prep.output_index[prepared[w.hole_vertex[i].idx()]];
   for(const auto& c : w.chords)
     prep.split_chords.emplace_back(prep.output_index[prepared[c.first.idx()]], prep.output_index[prepared[c.second.idx()]]);
+}
+
+// The steps after the soup is loaded, up to the prepared soup (prepared_soup()): merge,
+// orient, build the work mesh, triangulate, keep one component, remove degenerate faces,
+// fill holes, split the chords of a disk. (A door compiled once in the project's own builds:
+// internal/compiled_once.h.)
+template <int = 0>
+Status prepare_loaded_soup(Soup& soup, const Preparation_options& o, Mesh_preparation& prep, std::vector<Point>& points,
+                           std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  Status r = merge_border_duplicates(soup, prep);
+  if(r) r = make_oriented_manifold(soup, prep);
+  if(!r) return r;
+  drop_unused_points(soup, prep);
+  Work w;
+  r = build_work_mesh(soup, w, prep.number_of_input_vertices);
+  if(r) r = triangulate_polygons(w, prep);
+  if(r) r = keep_one_component(w, o.keep_largest, prep);
+  if(r) r = remove_degenerate_faces(w, prep);
+  if(r) r = fill_holes(w, o.max_hole, o.required, prep);
+  if(!r) return r;
+  if(prep.type == Disk_type && o.split_chords)
+    split_boundary_chords(w, prep);
+  prepared_soup(w, soup, prep, points, triangles);
+  return r;
+}
+
+#define CGAL_HOT_PREPARE_LOADED_SOUP_DOOR                                                                 \
+  Status prepare_loaded_soup<0>(Soup&, const Preparation_options&, Mesh_preparation&, std::vector<Point>&, \
+                                std::vector<std::array<std::size_t, 3> >&)
+#ifdef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EXTERN_INSTANCES
+CGAL_HOT_INSTANCE(extern, CGAL_HOT_PREPARE_LOADED_SOUP_DOOR)
+#endif
+
+// Writes the prepared soup (prepared_soup()) into `out` as a mesh.
+template <class TriangleMesh>
+void write_prepared_mesh(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 3> >& triangles,
+                         TriangleMesh& out)
+{
+  CGAL::clear(out);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, out);
 }
 
 } // namespace preparation

@@ -13,6 +13,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/compiled_once.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/connection_preconditioner.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dirichlet_energy.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
@@ -542,8 +543,10 @@ private:
 // Minimises the energy (see Newton_minimizer), from x, in place. `interior`: the
 // initialisation's interior Laplacian, for the preconditioner's gauge, and its connection
 // Laplacian where it factored one for this problem.
-inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const Solver_options& opt,
-                                  Solver_statistics& st, const Interior_laplacian* interior = nullptr)
+// (A door compiled once in the project's own builds: internal/compiled_once.h.)
+template <int = 0>
+Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const Solver_options& opt,
+                           Solver_statistics& st, const Interior_laplacian* interior = nullptr)
 {
   st = Solver_statistics();
   if(P.n_vars == 0) {
@@ -552,6 +555,13 @@ inline Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x,
   }
   return Newton_minimizer(P, x, opt, st).run(interior);
 }
+
+#define CGAL_HOT_MINIMIZE_ENERGY_DOOR                                                                     \
+  Error_code minimize_energy<0>(const Flat_problem&, std::vector<double>&, const Solver_options&,       \
+                                Solver_statistics&, const Interior_laplacian*)
+#ifdef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EXTERN_INSTANCES
+CGAL_HOT_INSTANCE(extern, CGAL_HOT_MINIMIZE_ENERGY_DOOR)
+#endif
 
 } // namespace internal
 } // namespace Hyperbolic_orbifold_Tutte

@@ -13,6 +13,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/compiled_once.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/connection_preconditioner.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/interior_laplacian.h>
@@ -221,21 +222,15 @@ inline Error_code solve_klein_tutte(const Flat_problem& P, const std::vector<std
   return OK;
 }
 
-// Places the border: cone copies at their corners, other border vertices along their
-// tile side at the fraction of the 3D arc length between the side's corners (sphere:
-// p-side vertices on the side's geodesic, their twins follow by the pairing; disk: the
-// parameter t of the Klein segment). Interior vertices: Euclidean Tutte embedding in the
-// Klein model with the same weights (paper, section 5), mapped back to Poincare.
-template <class Point3, class Tile>
-Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const std::vector<Point3>& base_points,
-                                std::vector<double>& x, Interior_laplacian* keep = nullptr)
+// The initialisation's solve, once the border is placed (x, and z at every vertex on the
+// border): the interior's Tutte embedding in the Klein model, written into x in Poincare
+// coordinates; lap numbers the interior and keeps what the solver reuses. (A door compiled
+// once in the project's own builds: internal/compiled_once.h.)
+template <int = 0>
+Error_code solve_interior_tutte(const Flat_problem& P, const std::vector<std::complex<double> >& z, std::vector<double>& x,
+                                Interior_laplacian& lap)
 {
-  Interior_laplacian local;
-  Interior_laplacian& lap = keep ? *keep : local;
   typedef std::complex<double> C;
-  x.assign(P.n_vars, 0.0);
-  std::vector<C> z(P.n);
-  place_border(P, tile, side_arc_fractions(P, base_points), x, z);
   number_interior(P, x, lap);
   if(lap.size == 0)
     return OK;
@@ -287,6 +282,31 @@ Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const s
     }
   }
   return OK;
+}
+
+#define CGAL_HOT_SOLVE_INTERIOR_TUTTE_DOOR                                                                \
+  Error_code solve_interior_tutte<0>(const Flat_problem&, const std::vector<std::complex<double> >&,     \
+                                     std::vector<double>&, Interior_laplacian&)
+#ifdef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EXTERN_INSTANCES
+CGAL_HOT_INSTANCE(extern, CGAL_HOT_SOLVE_INTERIOR_TUTTE_DOOR)
+#endif
+
+// Places the border: cone copies at their corners, other border vertices along their
+// tile side at the fraction of the 3D arc length between the side's corners (sphere:
+// p-side vertices on the side's geodesic, their twins follow by the pairing; disk: the
+// parameter t of the Klein segment). Interior vertices: Euclidean Tutte embedding in the
+// Klein model with the same weights (paper, section 5), mapped back to Poincare.
+template <class Point3, class Tile>
+Error_code initialize_embedding(const Flat_problem& P, const Tile& tile, const std::vector<Point3>& base_points,
+                                std::vector<double>& x, Interior_laplacian* keep = nullptr)
+{
+  Interior_laplacian local;
+  Interior_laplacian& lap = keep ? *keep : local;
+  typedef std::complex<double> C;
+  x.assign(P.n_vars, 0.0);
+  std::vector<C> z(P.n);
+  place_border(P, tile, side_arc_fractions(P, base_points), x, z);
+  return solve_interior_tutte(P, z, x, lap);
 }
 
 } // namespace internal
