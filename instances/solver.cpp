@@ -7,7 +7,7 @@
 // initialisation's solve.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/tutte_initialization.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/tutte_interior_solve.h>
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {

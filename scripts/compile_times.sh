@@ -8,7 +8,8 @@
 #   scripts/compile_times.sh [--asan] [--phases] [--jobs N] [--dir DIR] [target ...]
 #   scripts/compile_times.sh --from BUILD_DIR   (the table of a build already made with Ninja,
 #                                                e.g. build/ after a cold scripts/test.sh)
-# --asan measures the sanitizer stage's build (Debug, -DHOT_SANITIZE=ON) instead of Release.
+# --asan measures the sanitizer stage's build (Debug, -DHOT_SANITIZE=ON, clang++ as in
+# scripts/test.sh) instead of Release.
 # --phases: -ftime-report reads the clock at every phase change, which on a virtual machine
 # costs system time: the wall times are then 1.5-3 times those of a plain build (compare
 # the phases' shares, not their seconds, with a run without it).
@@ -32,7 +33,7 @@ while [ $# -gt 0 ]; do
     --jobs) jobs="$2"; shift ;;
     --dir) dir="$2"; shift ;;
     --from) from="$2"; shift ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     -*) echo "compile_times.sh: unknown option $1" >&2; exit 2 ;;
     *) targets+=("$1") ;;
   esac
@@ -80,7 +81,12 @@ keep=1
 if [ -z "$dir" ]; then dir="$(mktemp -d)"; keep=0; trap 'rm -rf "$dir"' EXIT; fi
 log="$dir/compile_times.log"
 config=(-DCMAKE_BUILD_TYPE=Release)
-[ "$asan" = 1 ] && config=(-DCMAKE_BUILD_TYPE=Debug -DHOT_SANITIZE=ON -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE)
+if [ "$asan" = 1 ]; then
+  config=(-DCMAKE_BUILD_TYPE=Debug -DHOT_SANITIZE=ON -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE)
+  # the sanitizer stage's compiler (scripts/test.sh): clang++ where installed, or $HOT_ASAN_CXX
+  asan_cxx="${HOT_ASAN_CXX:-$(command -v clang++ || true)}"
+  if [ -n "$asan_cxx" ]; then config+=(-DCMAKE_CXX_COMPILER="$asan_cxx"); fi
+fi
 export CCACHE_DISABLE=1
 flags=""
 [ "$phases" = 1 ] && flags=-ftime-report

@@ -17,7 +17,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/convex_polygon_domain.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/edge_weights.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver_doors.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/statistics_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/tutte_initialization.h>

@@ -12,7 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_preparation_steps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/preparation_door.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Named_function_parameters.h>

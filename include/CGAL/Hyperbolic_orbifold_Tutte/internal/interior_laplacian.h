@@ -67,7 +67,10 @@ struct Interior_laplacian
   typedef Smoothed_aggregation<double, std::complex<double> > Multigrid; // (two real right-hand sides at once)
   std::shared_ptr<Multigrid> multigrid;
   // solves with the interior Laplacian's hierarchy (relative residual `tolerance`), from x
-  // if it has b's size (else from 0): the real and imaginary parts are two real systems
+  // if it has b's size (else from 0): the real and imaginary parts are two real systems.
+  // (A template so that only the units that call it, those of the solver, compile the
+  // multigrid's solve: compiled_once.h.)
+  template <int = 0>
   bool solve_by_multigrid(const Eigen::VectorXcd& b, Eigen::VectorXcd& x, double tolerance) const
   {
     return multigrid && multigrid->solve(b, x, tolerance, multigrid_max_iterations) >= 0 && x.allFinite();

@@ -5,7 +5,7 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/compiled_once.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/preparation_door.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/soup_preparation.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -49,15 +49,6 @@ typedef CGAL::Surface_mesh<Point> Work_mesh;
 typedef Work_mesh::Vertex_index Work_vertex;
 typedef Work_mesh::Halfedge_index Work_halfedge;
 typedef Work_mesh::Face_index Work_face;
-
-// the options of the steps (prepare_polygon_soup_for_embedding()'s named parameters)
-struct Preparation_options
-{
-  bool keep_largest = false;
-  double max_hole = 0.5;
-  std::optional<Orbifold_type> required;
-  bool split_chords = true;
-};
 
 struct Work
 {
@@ -450,9 +441,8 @@ inline void prepared_soup(const Work& w, const Soup& soup, Mesh_preparation& pre
 
 // The steps after the soup is loaded, up to the prepared soup (prepared_soup()): merge,
 // orient, build the work mesh, triangulate, keep one component, remove degenerate faces,
-// fill holes, split the chords of a disk. (A door compiled once in the project's own builds:
-// internal/compiled_once.h.)
-template <int = 0>
+// fill holes, split the chords of a disk. (The door declared in preparation_door.h.)
+template <int>
 Status prepare_loaded_soup(Soup& soup, const Preparation_options& o, Mesh_preparation& prep, std::vector<Point>& points,
                            std::vector<std::array<std::size_t, 3> >& triangles)
 {
@@ -471,22 +461,6 @@ Status prepare_loaded_soup(Soup& soup, const Preparation_options& o, Mesh_prepar
     split_boundary_chords(w, prep);
   prepared_soup(w, soup, prep, points, triangles);
   return r;
-}
-
-#define CGAL_HOT_PREPARE_LOADED_SOUP_DOOR                                                                 \
-  Status prepare_loaded_soup<0>(Soup&, const Preparation_options&, Mesh_preparation&, std::vector<Point>&, \
-                                std::vector<std::array<std::size_t, 3> >&)
-#ifdef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EXTERN_INSTANCES
-CGAL_HOT_INSTANCE(extern, CGAL_HOT_PREPARE_LOADED_SOUP_DOOR)
-#endif
-
-// Writes the prepared soup (prepared_soup()) into `out` as a mesh.
-template <class TriangleMesh>
-void write_prepared_mesh(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 3> >& triangles,
-                         TriangleMesh& out)
-{
-  CGAL::clear(out);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, out);
 }
 
 } // namespace preparation

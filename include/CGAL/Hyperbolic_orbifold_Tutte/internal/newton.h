@@ -8,17 +8,17 @@
 #include <CGAL/disable_warnings.h>
 
 /// \file newton.h
-// The energy's minimisation: Riemannian Newton with a preconditioned conjugate gradient
-// (minimize_energy), its options and statistics.
+// The energy's minimisation: Riemannian Newton with a preconditioned conjugate gradient, the
+// definition of minimize_energy() (declared, with its options, in solver_doors.h).
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/compiled_once.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/connection_preconditioner.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dirichlet_energy.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/interior_laplacian.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/smoothed_aggregation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver_doors.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -35,38 +35,6 @@
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
-
-// (The fields that nothing set are constants of Newton_minimizer now: the conjugate gradients'
-// iterations, when the preconditioner is refactored, when Newton takes over from gradient
-// steps; always on: geodesic steps, the Riemannian Hessian, the single-precision preconditioner.)
-struct Solver_options
-{
-  double gradient_tolerance = 1e-10; // force imbalance (relative hyperbolic gradient norm)
-  int max_iterations = 200;
-  // Preconditioned gradient steps before Newton (phase 1 of minimize_energy). Off: Newton
-  // from the start is as fast with 7 landmarks and up to 1.8x faster with 50, where the
-  // gradient steps' long moves need the preconditioner factored again two or three times.
-  bool gradient_steps = false;
-  bool direct_solver = false;        // factor every Newton system instead of conjugate gradients
-  // Newton steps from the start, until rounding stops them (the tolerance is ignored): for a
-  // converged embedding whose small regions need the last digits (see the parameterizer)
-  bool polish = false;
-  // converged also means: no vertex's own forces are out of balance by more than this
-  // fraction of their sizes, unless rounding explains it (else Newton goes on to the floor)
-  double vertex_imbalance = 1e-8;
-  // the preconditioner's solves with its factor rounded to single precision where that factor
-  // is Eigen's (below 50K rows; CHOLMOD's, from 50K, always are): off for the solves of a
-  // squeezed region (newton_on_region.h), where it was seen to spoil the recentring at the
-  // limit of double's range (a tube of length 350)
-  bool single_precision_small_preconditioner = true;
-  // from this many cut-mesh vertices on, the preconditioner is a V-cycle of algebraic
-  // multigrid instead of a factorisation, where minimize_energy() is given no initialisation's
-  // interior Laplacian (with one, the preconditioner follows the initialisation: multigrid
-  // where it solved by multigrid, see Interior_laplacian::multigrid_from)
-  Eigen::Index multigrid_from = default_multigrid_from;
-  bool verbose = false;
-};
-
 
 // The energy is geodesically convex, its Hessian in the disk's coordinates is not: this
 // subtracts the Christoffel terms of the metric (2/(1-|z|^2))^2 |dz|^2 at each free vertex,
@@ -540,13 +508,10 @@ private:
   int polish_start_ = 0, stalls_ = 0, last_cg_ = 0, slow_steps_ = 0, refactorings_ = 0, since_best_ = 0;
 };
 
-// Minimises the energy (see Newton_minimizer), from x, in place. `interior`: the
-// initialisation's interior Laplacian, for the preconditioner's gauge, and its connection
-// Laplacian where it factored one for this problem.
-// (A door compiled once in the project's own builds: internal/compiled_once.h.)
-template <int = 0>
+// Minimises the energy (see Newton_minimizer): the door declared in solver_doors.h.
+template <int>
 Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const Solver_options& opt,
-                           Solver_statistics& st, const Interior_laplacian* interior = nullptr)
+                           Solver_statistics& st, const Interior_laplacian* interior)
 {
   st = Solver_statistics();
   if(P.n_vars == 0) {
@@ -555,13 +520,6 @@ Error_code minimize_energy(const Flat_problem& P, std::vector<double>& x, const 
   }
   return Newton_minimizer(P, x, opt, st).run(interior);
 }
-
-#define CGAL_HOT_MINIMIZE_ENERGY_DOOR                                                                     \
-  Error_code minimize_energy<0>(const Flat_problem&, std::vector<double>&, const Solver_options&,       \
-                                Solver_statistics&, const Interior_laplacian*)
-#ifdef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_EXTERN_INSTANCES
-CGAL_HOT_INSTANCE(extern, CGAL_HOT_MINIMIZE_ENERGY_DOOR)
-#endif
 
 } // namespace internal
 } // namespace Hyperbolic_orbifold_Tutte

@@ -12,7 +12,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver_doors.h>
 
 #include <cstddef>
 #include <vector>

@@ -12,20 +12,23 @@
 //  - interior_laplacian.h:        Interior_laplacian (the interior's factored Laplacian, shared)
 //  - dirichlet_energy.h:          Energy_evaluator (energy, gradient, Hessian, force imbalance)
 //  - connection_preconditioner.h: Connection_laplacian_preconditioner
-//  - tutte_initialization.h:      initialize_embedding
-//  - newton.h:                    Solver_options, minimize_energy (filling the public Solver_statistics; the steps of
+//  - tutte_initialization.h:      initialize_embedding (the border placed, then solve_interior_tutte)
+//  - solver_doors.h:              Solver_options; minimize_energy and solve_interior_tutte declared
+//                                 (compiled once in the project's own builds: compiled_once.h)
+//  - newton.h:                    minimize_energy (filling the public Solver_statistics; the steps of
 //                                 Newton_minimizer), subtract_christoffel_terms
+//  - tutte_interior_solve.h:      solve_interior_tutte
 //  - newton_on_region.h:          minimize_energy_on_region
 //  - one_ring_repair.h:           positive_triangle, One_ring_faces, repair_one_rings, snap_one_rings
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/edge_weights.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/laplacian_factorization.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/interior_laplacian.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dirichlet_energy.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/connection_preconditioner.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver_doors.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/tutte_initialization.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton_on_region.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/one_ring_repair.h>
+// (newton.h, dirichlet_energy.h, connection_preconditioner.h and tutte_interior_solve.h come
+// through solver_doors.h in header-only use; the project's own units do not parse them)
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_ORBIFOLD_SOLVER_H

@@ -7,6 +7,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Mesh_preparation.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/soup_loading.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
@@ -27,7 +28,7 @@
 #include <vector>
 
 // The polygon-soup half of prepare_polygon_soup_for_embedding(): the soup is read into
-// double points, duplicated border points are merged (exact equality), invalid polygons dropped,
+// double points (soup_loading.h), duplicated border points are merged (exact equality), invalid polygons dropped,
 // and, when the soup is not already an oriented manifold polygon mesh, CGAL PMP removes
 // duplicated polygons and orients the soup (duplicating non-manifold vertices). Every point
 // keeps the input index it comes from, so that the prepared mesh stays addressed by the input.
@@ -36,17 +37,6 @@ namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 namespace preparation {
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
-typedef Kernel::Point_3 Point;
-
-struct Soup
-{
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  std::vector<std::size_t> input; // per point: the input vertex it is (first of equal ones), or npos (added)
-  std::vector<std::size_t> copy_of; // per point: for a copy of a non-manifold vertex, the input vertex it copies, else npos
-};
 
 // records, per point added by orient_polygon_soup(), the point it duplicates (the visitor is
 // copied by PMP, hence the pointer)
@@ -59,18 +49,6 @@ struct Copy_recorder : CGAL::Polygon_mesh_processing::Default_orientation_visito
     (*copy_of)[copy] = original;
   }
 };
-
-// the coordinates of a point of any kernel, or of a std::array<double, 3>
-template <class P>
-std::array<double, 3> coordinates(const P& p)
-{
-  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-}
-template <class T>
-std::array<double, 3> coordinates(const std::array<T, 3>& p)
-{
-  return {{static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])}};
-}
 
 struct Coordinates_hash
 {
@@ -86,67 +64,6 @@ struct Coordinates_hash
     return h;
   }
 };
-
-// Reads the points and checks they are finite; `prep.prepared_vertex[i]` temporarily holds the
-// soup point of input vertex i (itself until merge_border_duplicates()).
-template <class PointRange>
-Status load_points(const PointRange& points, Soup& soup, Mesh_preparation& prep)
-{
-  std::size_t i = 0;
-  for(const auto& p : points) {
-    const std::array<double, 3> c = coordinates(p);
-    if(!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
-      std::ostringstream os;
-      os << "vertex " << i << " has a coordinate that is not a finite number; no repair can place it";
-      return Status::failure(ERROR_NON_FINITE_COORDINATES, os.str());
-    }
-    soup.points.push_back(Point(c[0], c[1], c[2]));
-    soup.input.push_back(i);
-    prep.prepared_vertex.push_back(i);
-    ++i;
-  }
-  prep.number_of_input_vertices = i;
-  return Status();
-}
-
-// true if `poly` (consecutive repeats dropped in place) is a polygon: 3 or more corners, none repeated
-inline bool simplify_polygon(std::vector<std::size_t>& poly, std::vector<std::size_t>& scratch)
-{
-  poly.erase(std::unique(poly.begin(), poly.end()), poly.end());
-  while(poly.size() > 1 && poly.front() == poly.back())
-    poly.pop_back();
-  scratch = poly;
-  std::sort(scratch.begin(), scratch.end());
-  return poly.size() >= 3 && std::adjacent_find(scratch.begin(), scratch.end()) == scratch.end();
-}
-
-// Reads the polygons; polygons with fewer than 3 corners or with a repeated corner are removed.
-template <class PolygonRange>
-Status load_polygons(const PolygonRange& polygons, Soup& soup, Mesh_preparation& prep)
-{
-  const std::size_t n = prep.number_of_input_vertices;
-  std::size_t j = 0;
-  std::vector<std::size_t> poly, scratch;
-  for(const auto& polygon : polygons) {
-    poly.clear();
-    for(const auto id : polygon) {
-      const std::size_t v = static_cast<std::size_t>(id);
-      if(v >= n) {
-        std::ostringstream os;
-        os << "face " << j << " uses vertex " << v << ", but there are only " << n << " vertices";
-        return Status::failure(ERROR_WRONG_PARAMETER, os.str());
-      }
-      poly.push_back(v);
-    }
-    if(simplify_polygon(poly, scratch)) soup.polygons.push_back(poly);
-    else ++prep.invalid_faces_removed;
-    ++j;
-  }
-  prep.number_of_input_faces = j;
-  if(soup.polygons.empty())
-    return Status::failure(ERROR_EMPTY_MESH, j == 0 ? "the mesh has no face" : "the mesh has no valid face");
-  return Status();
-}
 
 // Merges the points on the border of the soup (on an edge of one polygon only) that have equal
 // coordinates into the first of them: unwelded seams and triangle soups (STL) get glued.
