@@ -170,7 +170,11 @@ case "$case_name" in
     [ "$(json_number "$tmp/r.json" components_removed)" -eq 2 ] || fail "2 components dropped"
     # a hole longer than --max-hole stays: mushroom.off is a disk
     "$prog" landmarks --mesh "$M/mushroom.off" --repair --count 5 --out "$tmp/m.txt" >/dev/null || fail "landmarks mushroom"
-    expect_error "$tmp/e3.obj" "bounding box diagonal" embed --mesh "$M/mushroom.off" --cones "$tmp/m.txt" --orbifold sphere --repair --out "$tmp/e3.obj"
+    expect_error "$tmp/e3.obj" "bounding box diagonal" embed --mesh "$M/mushroom.off" --cones "$tmp/m.txt" --orbifold sphere --repair --max-hole 0.5 --out "$tmp/e3.obj"
+    # without --max-hole, landmarks and the sphere asked for close it whatever its length
+    "$prog" embed --mesh "$M/mushroom.off" --cones "$tmp/m.txt" --orbifold sphere --repair --out "$tmp/e3.obj" --report "$tmp/r3.json" >/dev/null || fail "mushroom as a sphere"
+    grep -q '"orbifold": "sphere"' "$tmp/r3.json" || fail "mushroom closed: sphere type"
+    [ "$(grep -o '{"vertex": [^}]*}' "$tmp/r3.json" | wc -l)" -eq 1 ] || fail "one hole filled"
     # a NaN coordinate cannot be repaired
     awk 'NR == 3 { print "nan 0 0"; next } { print }' "$M/bear.off" > "$tmp/nan.off"
     expect_error "$tmp/e4.obj" "finite" embed --mesh "$tmp/nan.off" --cones "$tmp/c.txt" --repair --out "$tmp/e4.obj"

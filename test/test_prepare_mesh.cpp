@@ -534,6 +534,153 @@ TEST_CASE(non_manifold_vertex)
   CHECK(y.V() == 2 * k + 2 + 2 * k - 1 && y.F() == 2 * k + 2 * (2 * k - 1));
 }
 
+// --- scans as they come: debris and openings, with the landmarks given -----------
+
+// the faces of a prepared mesh as triples of output indices (rotated to start at the
+// smallest): the filling ones (Mesh_preparation::filled_faces) or the others
+std::set<Triple> output_faces(const Run& x, bool filled)
+{
+  std::set<std::size_t> fill(x.prep.filled_faces.begin(), x.prep.filled_faces.end());
+  std::set<Triple> r;
+  std::size_t j = 0;
+  for(SM::Face_index f : faces(x.out)) {
+    const bool is_filled = fill.count(j++) != 0;
+    if(is_filled != filled) continue;
+    Triple t;
+    std::size_t k = 0;
+    for(SM::Vertex_index v : vertices_around_face(halfedge(f, x.out), x.out)) t[k++] = x.prep.output_index[v.idx()];
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    r.insert(t);
+  }
+  return r;
+}
+
+std::set<Triple> rotated_triples(const std::vector<Polygon>& faces)
+{
+  std::set<Triple> r;
+  for(const Polygon& f : faces) {
+    Triple t{{f[0], f[1], f[2]}};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    r.insert(t);
+  }
+  return r;
+}
+
+// 10. debris: a stray triangle (under 1% of the faces, no landmark) is dropped without being
+// asked for; a component of 1.6% is not debris; landmarks choose the component kept and must
+// all lie on one
+TEST_CASE(debris)
+{
+  const Soup big = icosphere(3); // 1280 faces
+  const Soup stray{{Point(5, 0, 0), Point(6, 0, 0), Point(5, 1, 0)}, {{0, 1, 2}}};
+  const Soup s = append(stray, big);
+  const Run x = prepare(s);
+  CHECK_OK(x);
+  CHECK(x.prep.components_removed == 1 && x.prep.debris_components_removed == 1 && x.prep.component_faces_removed == 1);
+  CHECK(x.V() == big.points.size() && x.F() == big.faces.size());
+  std::size_t bad = 0;
+  for(std::size_t i = 0; i < s.points.size() && x.r; ++i)
+    bad += i < 3 ? x.prep.prepared_vertex[i] != npos : x.prep.prepared_vertex[i] != i - 3;
+  CHECK_MSG(bad == 0, bad << " vertices wrongly addressed");
+  CHECK(x.prep.summary().find("debris") != std::string::npos);
+  // a sphere of 20 faces beside 1280 is 1.5%: not debris, unless the fraction says so
+  const Soup t = append(big, icosphere(0, Point(5, 0, 0)));
+  const Run y = prepare(t);
+  CHECK_CODE(y, HOT::ERROR_SEVERAL_COMPONENTS);
+  CHECK_MSG(y.r.message.find("--largest-component") != std::string::npos && y.r.message.find(" 20") != std::string::npos, y.r.message);
+  const Run z = prepare(t, HOT::parameters::maximum_debris_fraction(0.02));
+  CHECK_OK(z);
+  CHECK(z.prep.debris_components_removed == 1 && z.F() == big.faces.size());
+  CHECK_CODE(prepare(t, HOT::parameters::maximum_debris_fraction(-0.5)), HOT::ERROR_WRONG_PARAMETER);
+  // landmarks on the small sphere: it is the one kept (asked for), not the largest
+  const std::size_t n = big.points.size();
+  const std::vector<std::size_t> on_small{n, n + 3, n + 5, n + 7, n + 9};
+  const Run w = prepare(t, HOT::parameters::input_landmarks(on_small, HOT::parameters::keep_largest_component(true)));
+  CHECK_OK(w);
+  CHECK(w.F() == 20 && w.prep.components_removed == 1 && w.prep.debris_components_removed == 0);
+  for(std::size_t i : on_small) CHECK(w.r && w.prep.prepared_vertex[i] != npos);
+  // without keep_largest_component the big sphere, without landmark, is not debris
+  CHECK_CODE(prepare(t, HOT::parameters::input_landmarks(on_small)), HOT::ERROR_SEVERAL_COMPONENTS);
+  // landmarks on the stray triangle and on the sphere: refused, naming them
+  const std::vector<std::size_t> split{3, 1, 10, 20, 30};
+  const Run u = prepare(s, HOT::parameters::input_landmarks(split, HOT::parameters::keep_largest_component(true)));
+  CHECK_CODE(u, HOT::ERROR_SEVERAL_COMPONENTS);
+  CHECK_MSG(u.r.message.find("landmark 1 on one of 1 faces") != std::string::npos, u.r.message);
+  CHECK_CODE(prepare(s, HOT::parameters::input_landmarks(std::vector<std::size_t>{3, 4, 5, 6, s.points.size()})),
+             HOT::ERROR_LANDMARK_OUT_OF_RANGE);
+}
+
+// 11. an opening much longer than maximum_hole_length (a cap of the sphere removed, its inner
+// vertices left isolated): a disk without landmarks; landmarks inside the surface ask for the
+// sphere type and it is closed, its new faces listed; landmarks all on its rim keep the disk
+TEST_CASE(opening_under_landmarks)
+{
+  const Soup sphere = icosphere(3);
+  Soup open = sphere;
+  open.faces.clear();
+  for(const Polygon& f : sphere.faces) {
+    bool cap = false;
+    for(std::size_t v : f) cap = cap || sphere.points[v].z() > 0.5;
+    if(!cap) open.faces.push_back(f);
+  }
+  std::vector<std::size_t> inside, rim;
+  {
+    std::map<std::pair<std::size_t, std::size_t>, int> uses;
+    for(const Polygon& f : open.faces)
+      for(int i = 0; i < 3; ++i) ++uses[std::make_pair(std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3]))];
+    std::set<std::size_t> border;
+    for(const auto& e : uses)
+      if(e.second == 1) border.insert({e.first.first, e.first.second});
+    for(std::size_t v : border) if(rim.size() < 6) rim.push_back(v);
+    for(std::size_t v = 0; v < sphere.points.size() && inside.size() < 6; ++v)
+      if(sphere.points[v].z() < -0.3) inside.push_back(v);
+  }
+  CHECK(rim.size() == 6 && inside.size() == 6 && open.faces.size() < sphere.faces.size());
+  const Run disk = prepare(open);
+  CHECK_OK(disk);
+  CHECK(disk.prep.type == HOT::Disk_type && disk.prep.filled_holes.empty() && disk.prep.filled_faces.empty());
+  const Run x = prepare(open, HOT::parameters::input_landmarks(inside));
+  CHECK_OK(x);
+  CHECK(x.prep.type == HOT::Sphere_type && x.prep.landmarks_decided && CGAL::is_closed(x.out) && euler_characteristic(x.out) == 2);
+  CHECK(x.prep.filled_holes.size() == 1 && x.prep.filled_faces.size() == x.prep.faces_added_by_hole_filling());
+  CHECK(x.prep.filled_faces.size() + open.faces.size() == x.F());
+  // the faces not listed are exactly the input's, the listed ones all new
+  CHECK(output_faces(x, false) == rotated_triples(open.faces));
+  std::size_t touching_rim_only = 0;
+  for(const Triple& t : output_faces(x, true)) {
+    bool added = false;
+    for(std::size_t v : t) added = added || v >= open.points.size();
+    touching_rim_only += added ? 0 : 1; // a patch face on rim vertices only: possible, not an input face
+  }
+  CHECK(std::set<Triple>(output_faces(x, true)).size() == x.prep.filled_faces.size());
+  CHECK_MSG(touching_rim_only < x.prep.filled_faces.size(), "the patch adds inner vertices");
+  // a maximum given: a limit again
+  CHECK_CODE(prepare(open, HOT::parameters::input_landmarks(inside, HOT::parameters::maximum_hole_length(0.5))),
+             HOT::ERROR_WRONG_TOPOLOGY);
+  // landmarks on the rim: the disk
+  const Run y = prepare(open, HOT::parameters::input_landmarks(rim));
+  CHECK_OK(y);
+  CHECK(y.prep.type == HOT::Disk_type && y.prep.filled_faces.empty());
+  // a second, small hole elsewhere: filled either way; with the landmarks on the rim the
+  // disk stays and the hole's faces are listed
+  Soup two = open;
+  two.faces.clear();
+  for(const Polygon& f : open.faces) {
+    bool bottom = false;
+    for(std::size_t v : f) bottom = bottom || sphere.points[v].z() < -0.97;
+    if(!bottom) two.faces.push_back(f);
+  }
+  CHECK(two.faces.size() < open.faces.size());
+  const Run z = prepare(two, HOT::parameters::input_landmarks(rim));
+  CHECK_OK(z);
+  CHECK(z.prep.type == HOT::Disk_type && z.prep.filled_holes.size() == 1 && !z.prep.filled_faces.empty());
+  CHECK(output_faces(z, false) == rotated_triples(two.faces) || !z.prep.split_chords.empty());
+  const Run both = prepare(two, HOT::parameters::input_landmarks(std::vector<std::size_t>{inside[0], inside[1], rim[0], rim[1], rim[2]}));
+  CHECK_OK(both);
+  CHECK(both.prep.type == HOT::Sphere_type && both.prep.filled_holes.size() == 2);
+  CHECK(output_faces(both, false) == rotated_triples(two.faces));
+}
+
 // two closed meshes sharing vertex 0, either first: split into two components, the larger
 // (the octahedron) kept; the shared vertex lies on it, so it stays addressed as vertex 0
 TEST_CASE(shared_vertex)

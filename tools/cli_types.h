@@ -48,7 +48,13 @@ inline HOT::Orbifold_type read_mesh_and_landmarks(const std::string& mesh_path, 
                                            std::size_t minimum = HOT::minimum_number_of_landmarks)
 {
   HOT::Mesh_info info;
-  require(hot_tools::read_input_mesh(mesh_path, required_type, repair, m, in.file, &info));
+  // --repair aims at the orbifold the landmarks ask for (the component that holds them, the
+  // holes under them closed), except with --snap-landmarks, which asks for a disk whose
+  // boundary the landmarks are moved to; a landmark file that cannot be read is said below
+  std::vector<std::size_t> ids;
+  if(repair.repair && !repair.snap_landmarks && !hot_tools::read_landmarks(cones_path, ids, true))
+    ids.clear();
+  require(hot_tools::read_input_mesh(mesh_path, required_type, repair, m, in.file, &info, ids));
   require(hot_tools::read_input_landmarks(cones_path, m, in.file, info.type, repair.snap_landmarks, landmarks, &in.snaps, minimum));
   return info.type;
 }

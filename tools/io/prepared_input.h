@@ -38,6 +38,7 @@ struct Repair_options
   bool largest_component = false; ///< --largest-component
   bool snap_landmarks = false;    ///< --snap-landmarks
   double max_hole = 0.5;          ///< --max-hole (bounding box diagonals)
+  bool max_hole_given = false;    ///< --max-hole was given (with landmarks, the loops are otherwise closed whatever their length)
 };
 
 /// a mesh file as a job sees it: the file's vertices and how the (prepared) mesh's vertices
@@ -77,18 +78,25 @@ inline void identity_addressing(const std::vector<std::array<double, 3> >& point
 true if the soup, built as without --repair (`mesh`), passes `check_mesh()` and the
 preparation would not change it: closed, or a disk without inner edge joining two boundary
 vertices whose boundary is not a hole to fill (a disk is required, or its boundary is longer
-than `opt.max_hole` bounding box diagonals). A clean mesh then costs nothing more than
-without --repair and gives the same files.
+than `opt.max_hole` bounding box diagonals) and holds `landmarks` (file vertex numbers, in
+range) on its boundary. A clean mesh then costs nothing more than without --repair and gives
+the same files.
 */
 template <class TriangleMesh>
 bool needs_no_repair(const Polygon_soup& soup, std::optional<HOT::Orbifold_type> required_type, const Repair_options& opt,
-                     TriangleMesh& mesh, HOT::Mesh_info& mi)
+                     const std::vector<std::size_t>& landmarks, TriangleMesh& mesh, HOT::Mesh_info& mi)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   if(!polygon_soup_to_mesh(soup, mesh) || !HOT::check_mesh(mesh, required_type, &mi))
     return false;
   if(mi.type == HOT::Sphere_type)
     return true;
+  if(!landmarks.empty()) { // a landmark inside a disk asks for a sphere: the loop is a hole
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> verts(vertices(mesh).begin(), vertices(mesh).end());
+    for(std::size_t i : landmarks)
+      if(!CGAL::is_border(verts[i], mesh))
+        return false;
+  }
   for(auto e : edges(mesh)) {
     const auto h = halfedge(e, mesh);
     if(!CGAL::is_border_edge(h, mesh) && CGAL::is_border(source(h, mesh), mesh) && CGAL::is_border(target(h, mesh), mesh))
@@ -111,11 +119,14 @@ bool needs_no_repair(const Polygon_soup& soup, std::optional<HOT::Orbifold_type>
 Reads the mesh file `path` into `mesh`: with `opt.repair`, its polygon soup is prepared
 (`HOT::prepare_polygon_soup_for_embedding()`), otherwise read and checked as
 `read_and_check_mesh()` does. `info` (if not null) receives the sizes and the type.
-Every message starts with the file name.
+`landmarks` (the file's vertex numbers; ignored if one is out of range, which the landmark
+check says later) make the repair aim at the orbifold they ask for (`input_landmarks`: the
+component that holds them, holes under them closed). Every message starts with the file name.
 */
 template <class TriangleMesh>
 HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold_type> required_type,
-                            const Repair_options& opt, TriangleMesh& mesh, Input_mesh& in, HOT::Mesh_info* info = nullptr)
+                            const Repair_options& opt, TriangleMesh& mesh, Input_mesh& in, HOT::Mesh_info* info = nullptr,
+                            std::vector<std::size_t> landmarks = {})
 {
   in = Input_mesh();
   in.path = path;
@@ -137,7 +148,12 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
   CGAL::clear(mesh);
   HOT::Status r = read_polygon_soup_file(path, soup); // its messages start with the file name
   if(!r) return r;
-  if(needs_no_repair(soup, required_type, opt, mesh, mi)) { // as without --repair: same mesh, same bits
+  for(std::size_t i : landmarks)
+    if(i >= soup.number_of_points()) {
+      landmarks.clear(); // (read_input_landmarks() says which)
+      break;
+    }
+  if(needs_no_repair(soup, required_type, opt, landmarks, mesh, mi)) { // as without --repair: same mesh, same bits
     in.file_points = std::move(soup.points);
     prepared_input_impl::identity_addressing(in.file_points, mi.type, in.prep);
     return r;
@@ -152,8 +168,14 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
                                                               " is out of range (the file has " + std::to_string(soup.number_of_points()) + " vertices)");
   }
   namespace P = HOT::parameters;
-  const auto np = P::maximum_hole_length(opt.max_hole, P::keep_largest_component(opt.largest_component));
-  if(required_type)
+  const auto np = P::input_landmarks(landmarks, P::keep_largest_component(opt.largest_component));
+  if(opt.max_hole_given || landmarks.empty()) {
+    if(required_type)
+      r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep,
+                                                  P::orbifold_type(*required_type, P::maximum_hole_length(opt.max_hole, np)));
+    else
+      r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, P::maximum_hole_length(opt.max_hole, np));
+  } else if(required_type)
     r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, P::orbifold_type(*required_type, np));
   else
     r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, np);

@@ -75,9 +75,19 @@ struct Mesh_preparation
   std::size_t polygons_triangulated = 0;      ///< polygons with more than 3 vertices
   std::size_t triangles_from_polygons = 0;    ///< the triangles they became
   std::size_t degenerate_faces_removed = 0;   ///< degenerate (zero-area) faces removed (by edge collapses or flips)
-  std::size_t components_removed = 0;         ///< connected components dropped (all but the largest)
+  std::size_t components_removed = 0;         ///< connected components dropped (all but the kept one: the landmarks', or the largest)
   std::size_t component_faces_removed = 0;    ///< their faces
+  /// of `components_removed`, those dropped as debris: without a landmark and with fewer faces
+  /// than `maximum_debris_fraction` of the mesh's (the others were dropped because
+  /// `keep_largest_component` was asked for)
+  std::size_t debris_components_removed = 0;
   std::vector<Filled_hole> filled_holes;      ///< the holes filled, in the order they were filled
+  /// the faces of the prepared mesh that fill holes (their positions in `faces()` order),
+  /// increasing: a point on them is not a point of the input's surface
+  std::vector<std::size_t> filled_faces;
+  /// `true` if the landmarks (`input_landmarks`) decided which component is kept and which
+  /// boundary loops are holes (see `prepare_polygon_soup_for_embedding()`)
+  bool landmarks_decided = false;
   /// the inner edges of a disk-type mesh joining two boundary vertices, split at their
   /// midpoint (output indices of their endpoints)
   std::vector<std::pair<std::size_t, std::size_t> > split_chords;
@@ -131,7 +141,10 @@ struct Mesh_preparation
     }
     item(degenerate_faces_removed, "removed degenerate faces:");
     if(components_removed != 0) {
-      os << sep << "dropped components: " << components_removed << " (" << component_faces_removed << " faces)";
+      os << sep << "dropped components: " << components_removed << " (" << component_faces_removed << " faces";
+      if(debris_components_removed != 0)
+        os << "; " << debris_components_removed << " of them small debris without landmark";
+      os << ")";
       sep = ", ";
     }
     if(!filled_holes.empty()) {

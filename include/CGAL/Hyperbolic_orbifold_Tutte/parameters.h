@@ -44,6 +44,8 @@ enum cut_graph_t { cut_graph };
 enum maximum_hole_length_t { maximum_hole_length };
 enum keep_largest_component_t { keep_largest_component };
 enum split_boundary_chords_t { split_boundary_chords };
+enum input_landmarks_t { input_landmarks };
+enum maximum_debris_fraction_t { maximum_debris_fraction };
 enum multigrid_threshold_t { multigrid_threshold };
 } // namespace internal_np
 
@@ -123,6 +125,15 @@ CGAL_HOT_NAMED_PARAMETER(keep_largest_component)
 /// `bool`: for `prepare_polygon_soup_for_embedding()`, splits every inner edge of a disk-type
 /// mesh that joins two boundary vertices (default `true`)
 CGAL_HOT_NAMED_PARAMETER(split_boundary_chords)
+/// `std::vector<std::size_t>`: for `prepare_polygon_soup_for_embedding()`, the landmarks as
+/// input vertex indices; the preparation then aims at the orbifold they ask for: it keeps the
+/// component that holds them and, unless they all lie on one boundary loop (a disk), closes
+/// every boundary loop whatever its length (default: none)
+CGAL_HOT_NAMED_PARAMETER(input_landmarks)
+/// `double`: for `prepare_polygon_soup_for_embedding()`, a connected component without
+/// landmark and with fewer faces than this fraction of the mesh's is debris, dropped
+/// (default 0.01)
+CGAL_HOT_NAMED_PARAMETER(maximum_debris_fraction)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 

@@ -18,6 +18,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <exception>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@ Status run_preparation(const PointRange& points, const PolygonRange& polygons, T
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
   namespace P = preparation;
   P::Preparation_options o;
   o.max_hole = choose_parameter(get_parameter(np, internal_np::maximum_hole_length), 0.5);
@@ -42,8 +44,22 @@ Status run_preparation(const PointRange& points, const PolygonRange& polygons, T
   o.split_chords = choose_parameter(get_parameter(np, internal_np::split_boundary_chords), true);
   if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::orbifold_type_t>::value)
     o.required = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
+  o.max_hole_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::maximum_hole_length_t>::value;
+  o.debris_fraction = choose_parameter(get_parameter(np, internal_np::maximum_debris_fraction), 0.01);
   if(!(o.max_hole >= 0) || !std::isfinite(o.max_hole))
     return Status::failure(ERROR_WRONG_PARAMETER, "maximum_hole_length must be a finite number >= 0");
+  if(!(o.debris_fraction >= 0) || !(o.debris_fraction <= 1))
+    return Status::failure(ERROR_WRONG_PARAMETER, "maximum_debris_fraction must be a number in [0, 1]");
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::input_landmarks_t>::value) {
+    const long long n = static_cast<long long>(std::distance(std::begin(points), std::end(points)));
+    for(const auto j : get_parameter_reference(np, internal_np::input_landmarks)) {
+      const long long i = static_cast<long long>(j);
+      if(i < 0 || i >= n)
+        return Status::failure(ERROR_LANDMARK_OUT_OF_RANGE, "landmark " + std::to_string(o.landmarks.size()) + " (vertex " +
+                                                                std::to_string(i) + ") is not a vertex of the input");
+      o.landmarks.push_back(static_cast<std::size_t>(i));
+    }
+  }
 
   P::Soup soup;
   Status r = P::load_points(points, soup, prep);
@@ -81,13 +97,23 @@ In this order, each step doing nothing on a mesh that does not need it:
     manifold;
  -# points on no polygon (isolated vertices) are dropped;
  -# polygons with more than three corners are triangulated (`triangulate_faces()`);
- -# a mesh with several connected components fails (`ERROR_SEVERAL_COMPONENTS`, with their
-    sizes) unless `keep_largest_component` is `true`: the largest one (in faces) is kept;
+ -# of a mesh with several connected components, one is kept: the one that holds the
+    landmarks (`input_landmarks`), else the largest (in faces). The others are dropped when
+    they hold no landmark and have fewer faces than `maximum_debris_fraction` of the mesh's
+    (debris, e.g. a stray triangle of a scan), or all of them if `keep_largest_component`
+    is `true`; otherwise the mesh fails (`ERROR_SEVERAL_COMPONENTS`, with their sizes).
+    Landmarks on different components fail (`ERROR_SEVERAL_COMPONENTS`, naming them);
  -# degenerate faces (collinear or coincident corners) are removed (`remove_degenerate_faces()`);
- -# holes are filled (`triangulate_refine_and_fair_hole()`): every boundary loop no longer than
-    `maximum_hole_length` times the diagonal of the bounding box, except, when the disk type is
-    required, the longest loop. The loops that remain decide the type: none, sphere type; one,
-    disk type; more, an error (`ERROR_WRONG_TOPOLOGY`) that gives their sizes and lengths;
+ -# holes are filled (`triangulate_refine_and_fair_hole()`). Without landmarks: every boundary
+    loop no longer than `maximum_hole_length` times the diagonal of the bounding box, except,
+    when the disk type is required, the longest loop. With landmarks, the orbifold they ask
+    for: a loop that holds every landmark is the disk's boundary (unless the sphere type is
+    required) and every other loop is filled; landmarks not all on one loop ask for the sphere
+    type, and every loop is filled whatever its length (a scan with an open sole or a missing
+    scalp becomes a sphere), unless `maximum_hole_length` is given. The loops that remain
+    decide the type: none, sphere type; one, disk type; more, an error
+    (`ERROR_WRONG_TOPOLOGY`) that gives their sizes and lengths. The faces that fill holes are
+    listed (`Mesh_preparation::filled_faces`): a point on them is not on the input's surface;
  -# disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
     a boundary ear) is split at its midpoint and the midpoint joined to the two opposite
     corners (Euler operations), so no triangle gets flat on a side of the disk orbifold's tile;
@@ -108,9 +134,15 @@ triangulation of polygons, the filling of holes and the splitting of chords.
 \param prep receives the record of what was done (also on failure, as far as it got)
 \param np optional named parameters (namespace `CGAL::Hyperbolic_orbifold_Tutte::parameters`):
   - `orbifold_type`: the type the result must have (default: the one the remaining loops give);
-  - `maximum_hole_length` (`double`, default 0.5): the longest boundary loop filled, in bounding
-    box diagonals;
-  - `keep_largest_component` (`bool`, default `false`);
+  - `input_landmarks` (`std::vector<std::size_t>`, default none): the landmarks, as input
+    vertex indices (the ones a landmark file holds); a landmark out of range is an error
+    (`ERROR_LANDMARK_OUT_OF_RANGE`); one on no face is left for the landmark check to report;
+  - `maximum_hole_length` (`double`, default 0.5, or no limit with landmarks): the longest
+    boundary loop filled, in bounding box diagonals;
+  - `maximum_debris_fraction` (`double` in [0, 1], default 0.01): components without landmark
+    and with fewer faces than this fraction of the mesh's are dropped;
+  - `keep_largest_component` (`bool`, default `false`): drops every component but the kept one
+    (the landmarks', else the largest), whatever its size;
   - `split_boundary_chords` (`bool`, default `true`).
 \return `OK`, or the reason why the mesh cannot be prepared
 */

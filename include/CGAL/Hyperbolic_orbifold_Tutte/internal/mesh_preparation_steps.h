@@ -58,7 +58,39 @@ struct Work
   std::vector<char> dropped;                               // per input vertex: on a removed component
   std::vector<std::pair<Work_vertex, Work_vertex> > chords; // split chords' endpoints
   std::vector<Work_vertex> hole_vertex;                     // a boundary vertex per filled hole
+  Work_mesh::Property_map<Work_face, bool> filled;           // the faces that fill holes
+  // the landmarks (Preparation_options::landmarks), each as the input vertex that represents
+  // it in the soup (the first of merged ones), npos if on no face
+  std::vector<std::size_t> landmark_input;
 };
+
+// the work mesh's vertex of each landmark (a null vertex where there is none: on no face, on
+// a dropped component, or collapsed with a degenerate face)
+inline std::vector<Work_vertex> landmark_vertices(const Work& w)
+{
+  std::vector<Work_vertex> r(w.landmark_input.size());
+  if(w.landmark_input.empty())
+    return r;
+  std::map<std::size_t, std::vector<std::size_t> > which; // input vertex -> landmarks
+  for(std::size_t k = 0; k < w.landmark_input.size(); ++k)
+    if(w.landmark_input[k] != Mesh_preparation::npos) which[w.landmark_input[k]].push_back(k);
+  for(Work_vertex v : vertices(w.mesh)) {
+    const auto it = which.find(w.input[v]);
+    if(it != which.end())
+      for(std::size_t k : it->second) r[k] = v;
+  }
+  return r;
+}
+
+// "landmarks 0, 2 and 5"
+inline std::string landmark_list(const std::vector<std::size_t>& ks)
+{
+  std::ostringstream os;
+  os << (ks.size() == 1 ? "landmark " : "landmarks ");
+  for(std::size_t i = 0; i < ks.size(); ++i)
+    os << (i == 0 ? "" : i + 1 == ks.size() ? " and " : ", ") << ks[i];
+  return os.str();
+}
 
 inline Status build_work_mesh(const Soup& soup, Work& w, std::size_t number_of_input_vertices)
 {
@@ -73,6 +105,7 @@ inline Status build_work_mesh(const Soup& soup, Work& w, std::size_t number_of_i
     w.input[v] = soup.input[i++];
   }
   w.dropped.assign(number_of_input_vertices, 0);
+  w.filled = w.mesh.add_property_map<Work_face, bool>("f:hot_filled", false).first;
   return Status();
 }
 
@@ -155,9 +188,12 @@ inline Status triangulate_polygons(Work& w, Mesh_preparation& prep)
   return Status();
 }
 
-// Keeps the largest connected component (in faces; the first of equal ones) if asked,
-// otherwise fails with the number of components and their sizes.
-inline Status keep_one_component(Work& w, bool keep_largest, Mesh_preparation& prep)
+// Keeps one connected component: the one holding the landmarks (if any are given and on a
+// face), else the largest (in faces; the first of equal ones). The other components are
+// dropped when they hold no landmark and have fewer faces than `debris_fraction` of the mesh
+// (debris), or all of them if `keep_largest` is asked for; otherwise it fails with the
+// components' sizes. Landmarks on several components always fail.
+inline Status keep_one_component(Work& w, const Preparation_options& o, Mesh_preparation& prep)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   auto fcc = w.mesh.add_property_map<Work_face, std::size_t>("f:hot_component", 0).first;
@@ -166,41 +202,72 @@ inline Status keep_one_component(Work& w, bool keep_largest, Mesh_preparation& p
     w.mesh.remove_property_map(fcc);
     return Status();
   }
+  auto component_of = [&](Work_vertex v) {
+    const Work_halfedge h = halfedge(v, w.mesh);
+    return fcc[is_border(h, w.mesh) ? face(opposite(h, w.mesh), w.mesh) : face(h, w.mesh)];
+  };
   std::vector<std::size_t> size(n, 0);
   for(Work_face f : faces(w.mesh)) ++size[fcc[f]];
-  const std::size_t largest = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
-  if(!keep_largest) {
-    std::vector<std::size_t> sorted = size;
-    std::sort(sorted.rbegin(), sorted.rend());
+  const std::size_t total = num_faces(w.mesh);
+  std::size_t kept_component = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
+  // the components of the landmarks
+  std::map<std::size_t, std::vector<std::size_t> > landmarks_on; // component -> landmarks
+  const std::vector<Work_vertex> lv = landmark_vertices(w);
+  for(std::size_t k = 0; k < lv.size(); ++k)
+    if(lv[k] != Work_vertex()) landmarks_on[component_of(lv[k])].push_back(k);
+  if(landmarks_on.size() > 1) {
     std::ostringstream os;
-    os << "the mesh has " << n << " connected components (sizes in faces:";
-    for(std::size_t i = 0; i < sorted.size() && i < 5; ++i) os << " " << sorted[i];
-    os << (sorted.size() > 5 ? " ..." : "") << "); keeping the largest one only must be asked for"
+    os << "the landmarks lie on " << landmarks_on.size() << " different connected components of the mesh (";
+    const char* sep = "";
+    for(const auto& c : landmarks_on) {
+      os << sep << landmark_list(c.second) << " on one of " << size[c.first] << " faces";
+      sep = ", ";
+    }
+    os << "): a map needs them on one surface (mend the mesh, or the landmark file)";
+    w.mesh.remove_property_map(fcc);
+    return Status::failure(ERROR_SEVERAL_COMPONENTS, os.str());
+  }
+  if(!landmarks_on.empty())
+    kept_component = landmarks_on.begin()->first;
+  // the others: debris, or components that only keep_largest drops
+  std::vector<std::size_t> large;
+  std::size_t debris = 0;
+  for(std::size_t c = 0; c < n; ++c) {
+    if(c == kept_component) continue;
+    if(static_cast<double>(size[c]) < o.debris_fraction * static_cast<double>(total)) ++debris;
+    else large.push_back(size[c]);
+  }
+  if(!large.empty() && !o.keep_largest) {
+    std::sort(large.rbegin(), large.rend());
+    std::ostringstream os;
+    os << "the mesh has " << n << " connected components: besides the one " << (landmarks_on.empty() ? "kept (the largest, " : "of the landmarks (")
+       << size[kept_component] << " faces), " << large.size() << (large.size() == 1 ? " is" : " are") << " not small debris (sizes in faces:";
+    for(std::size_t i = 0; i < large.size() && i < 5; ++i) os << " " << large[i];
+    os << (large.size() > 5 ? " ..." : "") << "; debris has fewer than " << o.debris_fraction * 100
+       << "% of the faces); keeping " << (landmarks_on.empty() ? "the largest" : "the landmarks'") << " one only must be asked for"
        << " (keep_largest_component, --largest-component)";
     w.mesh.remove_property_map(fcc);
     return Status::failure(ERROR_SEVERAL_COMPONENTS, os.str());
   }
-  auto in_largest = [&](Work_vertex v) {
-    const Work_halfedge h = halfedge(v, w.mesh);
-    return fcc[is_border(h, w.mesh) ? face(opposite(h, w.mesh), w.mesh) : face(h, w.mesh)] == largest;
-  };
+  auto in_kept = [&](Work_vertex v) { return component_of(v) == kept_component; };
   std::vector<char> kept(w.dropped.size(), 0);
   for(Work_vertex v : vertices(w.mesh))
     if(w.input[v] != Mesh_preparation::npos)
-      (in_largest(v) ? kept : w.dropped)[w.input[v]] = 1;
+      (in_kept(v) ? kept : w.dropped)[w.input[v]] = 1;
   // a split non-manifold vertex whose original is on a dropped component but a copy on the
   // kept one: the (first) copy becomes that input vertex, which stays addressed
   for(Work_vertex v : vertices(w.mesh)) {
     const std::size_t c = w.copy_of[v];
-    if(c != Mesh_preparation::npos && !kept[c] && in_largest(v)) {
+    if(c != Mesh_preparation::npos && !kept[c] && in_kept(v)) {
       w.input[v] = c;
       kept[c] = 1;
       w.dropped[c] = 0;
     }
   }
   prep.components_removed = n - 1;
-  prep.component_faces_removed = num_faces(w.mesh) - size[largest];
-  PMP::keep_connected_components(w.mesh, std::vector<std::size_t>(1, largest), fcc);
+  prep.debris_components_removed = debris;
+  prep.component_faces_removed = total - size[kept_component];
+  PMP::keep_connected_components(w.mesh, std::vector<std::size_t>(1, kept_component), fcc);
   w.mesh.remove_property_map(fcc);
   w.mesh.collect_garbage();
   return Status();
@@ -284,6 +351,8 @@ inline Status fill_hole(Work& w, const Boundary_loop& loop, Mesh_preparation& pr
   }
   for(Work_vertex v : new_vertices)
     w.input[v] = Mesh_preparation::npos; // a recycled slot keeps its old value otherwise
+  for(Work_face f : new_faces)
+    w.filled[f] = true;
   Filled_hole hole;
   hole.boundary_vertices = loop.vertices;
   hole.boundary_length = loop.length;
@@ -295,28 +364,57 @@ inline Status fill_hole(Work& w, const Boundary_loop& loop, Mesh_preparation& pr
   return Status();
 }
 
-// Fills the holes (boundary loops no longer than `max_length`; with a disk required, all
-// loops but the longest) and decides the type from the loops that remain.
-inline Status fill_holes(Work& w, double max_hole_length, std::optional<Orbifold_type> required, Mesh_preparation& prep)
+// Fills the holes and decides the type from the loops that remain. Without landmarks: the
+// loops no longer than `max_hole` diagonals (with a disk required, all but the longest). With
+// landmarks (the orbifold they ask for): a loop holding every landmark is the boundary of a
+// disk (unless a sphere is required) and the other loops are holes; landmarks not all on one
+// loop ask for a sphere: every loop is a hole, whatever its length (unless a maximum length
+// is given, `max_hole_given`); a disk required keeps the longest loop as without landmarks.
+inline Status fill_holes(Work& w, const Preparation_options& o, Mesh_preparation& prep)
 {
+  const double max_hole_length = o.max_hole;
+  const std::optional<Orbifold_type> required = o.required;
   const std::vector<Boundary_loop> loops = boundary_loops(w.mesh);
   const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(w.mesh);
   const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
                                     CGAL::square(b.zmax() - b.zmin()));
-  const double limit = max_hole_length * diagonal;
+  // with landmarks: the loop that holds them all (npos: none)
+  std::vector<Work_vertex> lv = landmark_vertices(w);
+  lv.erase(std::remove(lv.begin(), lv.end(), Work_vertex()), lv.end());
+  const bool by_landmarks = !lv.empty();
+  std::size_t landmark_loop = Mesh_preparation::npos;
+  if(by_landmarks && !(required && *required == Sphere_type)) {
+    for(std::size_t i = 0; i < loops.size() && landmark_loop == Mesh_preparation::npos; ++i) {
+      std::vector<Work_vertex> on;
+      for(Work_halfedge c : halfedges_around_face(loops[i].h, w.mesh)) on.push_back(target(c, w.mesh));
+      std::sort(on.begin(), on.end());
+      bool all = true;
+      for(Work_vertex v : lv) all = all && std::binary_search(on.begin(), on.end(), v);
+      if(all) landmark_loop = i;
+    }
+  }
+  prep.landmarks_decided = by_landmarks;
+  const bool any_length = by_landmarks && !o.max_hole_given;
+  const double limit = any_length ? HUGE_VAL : max_hole_length * diagonal;
   std::vector<Boundary_loop> kept;
   std::vector<Boundary_loop> holes;
   for(std::size_t i = 0; i < loops.size(); ++i) {
-    const bool keep_as_disk_border = required && *required == Disk_type && i == 0;
+    const bool keep_as_disk_border = landmark_loop != Mesh_preparation::npos
+                                       ? i == landmark_loop
+                                       : required && *required == Disk_type && i == 0;
     if(!keep_as_disk_border && loops[i].length <= limit) holes.push_back(loops[i]);
     else kept.push_back(loops[i]);
   }
-  if(kept.size() > 1 || (required && *required == Sphere_type && !kept.empty())) {
+  if(kept.size() > 1 || (required && *required == Sphere_type && !kept.empty()) ||
+     (by_landmarks && landmark_loop == Mesh_preparation::npos && !(required && *required == Disk_type) && !kept.empty())) {
     std::ostringstream os;
     os.precision(3);
+    const bool sphere = (required && *required == Sphere_type) || (by_landmarks && landmark_loop == Mesh_preparation::npos);
     os << "after filling the holes no longer than " << max_hole_length << " times the bounding box diagonal, the mesh would keep "
-       << describe_loops(kept, diagonal) << "; " << (required && *required == Sphere_type ? "a sphere-type orbifold needs none"
-                                                                                           : "an orbifold needs at most one")
+       << describe_loops(kept, diagonal) << "; "
+       << (sphere ? (by_landmarks && !required ? "landmarks inside the surface ask for a sphere-type orbifold, which needs none"
+                                               : "a sphere-type orbifold needs none")
+                  : "an orbifold needs at most one")
        << " (raise maximum_hole_length, --max-hole, to fill longer ones)";
     return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
   }
@@ -349,9 +447,14 @@ inline void split_boundary_chords(Work& w, Mesh_preparation&)
     const Work_vertex mv = target(hn, w.mesh);
     w.mesh.point(mv) = m;
     w.input[mv] = Mesh_preparation::npos;
-    CGAL::Euler::split_face(hn, next(h, w.mesh), w.mesh);
+    const bool f1 = w.filled[face(h, w.mesh)], f2 = w.filled[face(opposite(h, w.mesh), w.mesh)];
+    const Work_halfedge s1 = CGAL::Euler::split_face(hn, next(h, w.mesh), w.mesh); // (both sides: parts of one face)
+    w.filled[face(s1, w.mesh)] = f1;
+    w.filled[face(opposite(s1, w.mesh), w.mesh)] = f1;
     const Work_halfedge oh = opposite(h, w.mesh);   // b -> m
-    CGAL::Euler::split_face(oh, next(opposite(hn, w.mesh), w.mesh), w.mesh);
+    const Work_halfedge s2 = CGAL::Euler::split_face(oh, next(opposite(hn, w.mesh), w.mesh), w.mesh);
+    w.filled[face(s2, w.mesh)] = f2;
+    w.filled[face(opposite(s2, w.mesh), w.mesh)] = f2;
     w.chords.emplace_back(a, b);
   }
 }
@@ -407,7 +510,9 @@ inline void prepared_soup(const Work& w, const Soup& soup, Mesh_preparation& pre
     }
     points.push_back(w.mesh.point(o.second));
   }
+  prep.filled_faces.clear();
   for(Work_face f : faces(w.mesh)) {
+    if(w.filled[f]) prep.filled_faces.push_back(triangles.size());
     std::array<std::size_t, 3> t;
     std::size_t k = 0;
     for(Work_vertex v : vertices_around_face(halfedge(f, w.mesh), w.mesh)) t[k++] = prepared[v.idx()];
@@ -452,10 +557,14 @@ Status prepare_loaded_soup(Soup& soup, const Preparation_options& o, Mesh_prepar
   drop_unused_points(soup, prep);
   Work w;
   r = build_work_mesh(soup, w, prep.number_of_input_vertices);
+  for(std::size_t i : o.landmarks) { // (checked in range by the caller)
+    const std::size_t p = prep.prepared_vertex[i];
+    w.landmark_input.push_back(p == Mesh_preparation::npos ? p : soup.input[p]);
+  }
   if(r) r = triangulate_polygons(w, prep);
-  if(r) r = keep_one_component(w, o.keep_largest, prep);
+  if(r) r = keep_one_component(w, o, prep);
   if(r) r = remove_degenerate_faces(w, prep);
-  if(r) r = fill_holes(w, o.max_hole, o.required, prep);
+  if(r) r = fill_holes(w, o, prep);
   if(!r) return r;
   if(prep.type == Disk_type && o.split_chords)
     split_boundary_chords(w, prep);

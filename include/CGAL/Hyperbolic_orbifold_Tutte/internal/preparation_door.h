@@ -38,6 +38,9 @@ struct Preparation_options
   double max_hole = 0.5;
   std::optional<Orbifold_type> required;
   bool split_chords = true;
+  bool max_hole_given = false; // (with landmarks, the loops are closed whatever their length unless a maximum is given)
+  std::vector<std::size_t> landmarks; // input vertex indices (input_landmarks); empty: none
+  double debris_fraction = 0.01;
 };
 
 // The steps after the soup is loaded, up to the prepared soup: points, and triangles as
