@@ -286,24 +286,34 @@ std::string path_string(py::handle path)
   return std::string(b);
 }
 
-py::object read_mesh(py::handle path, bool repair, const std::string& orbifold, double max_hole, bool largest_component,
-                     bool return_file_index)
+py::object read_mesh(py::handle path, bool repair, const std::string& orbifold, std::optional<double> max_hole, bool largest_component,
+                     bool return_file_index, py::handle landmarks)
 {
   const std::string p = path_string(path);
   const std::optional<HOT::Orbifold_type> type = parse_orbifold(orbifold);
-  if(!(max_hole >= 0) || !(max_hole <= 1e6))
-    fail(HOT::ERROR_WRONG_PARAMETER, "max_hole must be a number >= 0 (a length in bounding box diagonals), got " + std::to_string(max_hole));
+  if(max_hole && (!(*max_hole >= 0) || !(*max_hole <= 1e6)))
+    fail(HOT::ERROR_WRONG_PARAMETER, "max_hole must be a number >= 0 (a length in bounding box diagonals), got " + std::to_string(*max_hole));
   if(largest_component && !repair)
     fail(HOT::ERROR_WRONG_PARAMETER, "largest_component needs repair=True");
+  if(!landmarks.is_none() && !repair)
+    fail(HOT::ERROR_WRONG_PARAMETER, "landmarks needs repair=True (they guide the repair)");
   hot_tools::Repair_options opt;
   opt.repair = repair;
   opt.largest_component = largest_component;
-  opt.max_hole = max_hole;
+  opt.max_hole = max_hole ? *max_hole : 0.5;
+  opt.max_hole_given = max_hole.has_value();
+  std::vector<std::size_t> ids;
+  if(!landmarks.is_none())
+    ids = index_list(landmarks, "landmarks", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
   Surface_mesh mesh;
   hot_tools::Input_mesh in;
   {
     py::gil_scoped_release release;
-    require(hot_tools::read_input_mesh(p, type, opt, mesh, in)); // the CLI's reader and checks
+    require(hot_tools::read_input_mesh(p, type, opt, mesh, in, nullptr, ids)); // the CLI's reader and checks
+    for(std::size_t i : ids)
+      if(i >= in.prep.number_of_input_vertices)
+        fail(HOT::ERROR_LANDMARK_OUT_OF_RANGE, "landmark vertex " + std::to_string(i) + " is not a vertex of " + p + ", which has " +
+                                                 std::to_string(in.prep.number_of_input_vertices) + " vertices");
   }
   py::tuple VF = mesh_arrays(mesh);
   if(!return_file_index)
@@ -344,8 +354,9 @@ py::array select_landmarks(py::handle V, py::handle F, long long k)
 void register_io(py::module_& m)
 {
   m.def("read_mesh", &read_mesh, py::arg("path"), py::kw_only(), py::arg("repair") = false, py::arg("orbifold") = "auto",
-        py::arg("max_hole") = 0.5, py::arg("largest_component") = false, py::arg("return_file_index") = false,
-        R"doc(read_mesh(path, *, repair=False, orbifold="auto", max_hole=0.5, largest_component=False, return_file_index=False)
+        py::arg("max_hole") = py::none(), py::arg("largest_component") = false, py::arg("return_file_index") = false,
+        py::arg("landmarks") = py::none(),
+        R"doc(read_mesh(path, *, repair=False, orbifold="auto", max_hole=None, largest_component=False, return_file_index=False, landmarks=None)
 
 Reads a triangle mesh file with the command-line program's reader and checks
 (OFF, OBJ, PLY, STL, GOCAD .ts; the format by the extension) and returns (V, F):
@@ -363,8 +374,12 @@ orbifold: "auto" (closed or disk, from the mesh), "sphere" (or "closed") or "dis
   the type the mesh is checked for.
 repair: prepares the mesh first as the command line's --repair does (merges
   duplicated border vertices, orients, removes bad faces, splits non-manifold
-  vertices, triangulates, fills holes up to max_hole bounding box diagonals, keeps
-  the largest component with largest_component=True). V and F are then the prepared
+  vertices, triangulates, drops debris, fills holes up to max_hole bounding box
+  diagonals (default 0.5), keeps the largest component with largest_component=True).
+  With landmarks (the file's vertex numbers, as a landmark file holds them) it aims at
+  the orbifold they ask for: the component that holds them is kept, and unless they
+  all lie on one boundary loop every loop is closed whatever its length (unless
+  max_hole is given), so a scan with a large opening becomes a sphere. V and F are then the prepared
   mesh's, in its own vertex order; with return_file_index=True a third array gives,
   for every vertex of V, its number in the command line's files (the file's vertex,
   or a number after them for a vertex the repair added). A clean mesh is returned as

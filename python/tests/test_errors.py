@@ -177,3 +177,37 @@ def test_transfer_checks_its_arguments(bear):
     raises("ERROR_WRONG_PARAMETER", hot.transfer, np.array([0, len(F)]), bary, F, V, match="out of range")
     raises("ERROR_WRONG_PARAMETER", hot.transfer, faces, bary, F, V[:2], match="beyond")
     assert hot.transfer(faces, bary, F, V).shape == (2, 3)
+
+
+def edge_uses(F):
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    return np.unique(edges, axis=0, return_counts=True)[1]
+
+
+def test_repair_with_landmarks(bear, tmp_path):
+    # a scan's defects on bear, its vertex numbers kept: an opening of the faces within 0.3 of
+    # the diagonal from a vertex far from the landmarks, and a stray triangle (debris)
+    V, F, lm = bear
+    diagonal = np.linalg.norm(V.max(axis=0) - V.min(axis=0))
+    far = int(np.argmax(np.min(np.linalg.norm(V[:, None, :] - V[None, lm, :], axis=2), axis=1)))
+    inside = np.linalg.norm(V - V[far], axis=1) < 0.3 * diagonal
+    assert not inside[lm].any()
+    keep = ~inside[F].any(axis=1)
+    n = len(V)
+    VD = np.vstack([V, V[0] + 1e-3 * diagonal * np.array([[2, 2, 2], [3, 2, 2], [2, 3, 2]])])
+    FD = np.vstack([F[keep], [[n, n + 1, n + 2]]])
+    path = write_off(tmp_path / "scan.off", VD, FD)
+    # without the landmarks the opening is too long to be a hole: the repair keeps a disk
+    VR, FR = hot.read_mesh(path, repair=True)
+    assert (edge_uses(FR) == 1).any()
+    # the landmarks inside ask for a sphere: closed, the debris dropped, the input's vertices kept
+    VS, FS, index = hot.read_mesh(path, repair=True, landmarks=lm, return_file_index=True)
+    assert (edge_uses(FS) == 2).all()
+    assert len(VS) - 3 * len(FS) // 2 + len(FS) == 2  # Euler: a sphere
+    used = np.unique(F[keep])
+    assert set(index[index < n]) == set(used) and not ((index >= n) & (index < n + 3)).any()
+    assert np.array_equal(VS[index < n], V[index[index < n]])
+    raises("ERROR_WRONG_PARAMETER", hot.read_mesh, path, landmarks=lm, match="needs repair")
+    raises("ERROR_LANDMARK_OUT_OF_RANGE", hot.read_mesh, path, repair=True, landmarks=list(lm) + [n + 10])
+    # a maximum hole length given is a limit again
+    raises("ERROR_WRONG_TOPOLOGY", hot.read_mesh, path, repair=True, landmarks=lm, max_hole=0.5, orbifold="sphere")
