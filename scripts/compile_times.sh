@@ -82,10 +82,8 @@ if [ -z "$dir" ]; then dir="$(mktemp -d)"; keep=0; trap 'rm -rf "$dir"' EXIT; fi
 log="$dir/compile_times.log"
 config=(-DCMAKE_BUILD_TYPE=Release)
 if [ "$asan" = 1 ]; then
-  config=(-DCMAKE_BUILD_TYPE=Debug -DHOT_SANITIZE=ON -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE)
-  # the sanitizer stage's compiler (scripts/test.sh): clang++ where installed, or $HOT_ASAN_CXX
-  asan_cxx="${HOT_ASAN_CXX:-$(command -v clang++ || true)}"
-  if [ -n "$asan_cxx" ]; then config+=(-DCMAKE_CXX_COMPILER="$asan_cxx"); fi
+  . "$root/scripts/sanitizer_config.sh" # the sanitizer stage's settings and compiler (scripts/test.sh)
+  config=("${sanitizer_config[@]}")
 fi
 export CCACHE_DISABLE=1
 flags=""

@@ -6,7 +6,7 @@ set -euo pipefail
 
 PACKAGES=(
   g++ cmake make ninja-build ccache pkg-config   # (Ninja builds the named targets of a build in parallel)
-  clang libclang-rt-14-dev   # the sanitizer stage of scripts/test.sh (clang++ compiles it in about 0.6 of g++'s time)
+  clang libclang-rt-14-dev   # the sanitizer stage of scripts/test.sh (clang++ compiles it in about 0.77 of g++'s time)
   libcgal-dev        # CGAL 5.5 (header-only), pulls Boost
   libcgal-demo       # ships data/meshes/*.off used by tests and the demo
   libeigen3-dev      # sparse linear algebra

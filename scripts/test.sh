@@ -46,17 +46,16 @@ targets=(test_hyperbolic_kernel test_orbifold_tiles test_multigrid test_traits_a
 asan="${HOT_ASAN_BUILD_DIR:-$build-asan}"
 t0=$SECONDS
 echo "== sanitizer stage (address, undefined) in $asan"
-# The compiler: clang++ where it is installed ($HOT_ASAN_CXX to choose another), which compiles
-# these programs with the sanitizers in about 0.6 of g++'s time (scripts/compile_times.sh
-# --asan); the first stage keeps the default compiler (g++: the outputs users get).
+# The settings and the compiler (clang++ where installed, $HOT_ASAN_CXX): sanitizer_config.sh.
+. "$root/scripts/sanitizer_config.sh"
 configure=()
 if [ ! -f "$asan/CMakeCache.txt" ]; then
   if command -v ninja >/dev/null 2>&1; then configure+=(-G Ninja); fi
-  asan_cxx="${HOT_ASAN_CXX:-$(command -v clang++ || true)}"
-  if [ -n "$asan_cxx" ]; then configure+=(-DCMAKE_CXX_COMPILER="$asan_cxx"); fi
+  configure+=("${sanitizer_config[@]}")
+else
+  configure+=("${sanitizer_config[@]:0:3}") # (the compiler of a configured folder stays)
 fi
-cmake ${configure[@]+"${configure[@]}"} -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=Debug -DHOT_SANITIZE=ON \
-  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
+cmake "${configure[@]}" -S "$root" -B "$asan" >/dev/null
 cmake --build "$asan" -j "$jobs" --target "${targets[@]}"
 step "sanitizer build"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
