@@ -24,19 +24,27 @@
 #     on generated blobs of 250K, 1M and 2M vertices (and 4M with --large), the fastest of two
 #     rounds over the sizes: wall time, peak memory (maximum resident set), the initialisation
 #     and Newton's solve, and each time's ratio to the 250K blob's (linear growth: 4, 8, 16).
+#  9. reliability (bench_reliability): map_reliability() against ground truth (vertex i <-> vertex i)
+#     on TOSCA's wolves with 7 landmarks (../shared/data, read in place, when present), clean,
+#     with noise and with a region of slivers, and on libcgal-demo meshes onto twisted copies
+#     (test/twist.awk), clean and noisy: mean and largest error, % flagged, the worst 1% flagged.
+# 10. scans as they come (benchmark/scan_defects.sh): generated scan defects with ground truth
+#     (debris, openings of 2% to 20% of the area beside and between the landmarks, a handle)
+#     on bear.off and on a TOSCA wolf (../shared/data, read in place, when present), mapped
+#     with `map --repair` onto the clean shape: error against the clean pair's, time.
 # Prints the machine first.
-# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty]
+# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans]
 #   --whole: only section 7; --io: only section 6; --scaling: only section 8; --fifty: only
-#   section 1's 50-landmark table (each runs alone in a few minutes; --scaling --large in
-#   about 25)
+#   section 1's 50-landmark table; --reliability: only section 9; --scans: only section 10 (each runs alone in a few
+#   minutes; --scaling --large in about 25)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 large=0; quick=0; only=""
 for a in "$@"; do
   case "$a" in
     --large) large=1 ;; --quick) quick=1 ;; --whole) only=whole ;; --io) only=io ;; --scaling) only=scaling ;;
-    --fifty) only=fifty ;;
-    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling] [--fifty]" >&2; exit 2 ;;
+    --fifty) only=fifty ;; --reliability) only=reliability ;; --scans) only=scans ;;
+    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans]" >&2; exit 2 ;;
   esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
@@ -45,7 +53,9 @@ case "$only" in
   io) targets=(bench_io) ;;
   scaling) targets=(hyperbolic_orbifold_tutte bench_io) ;;
   fifty) targets=(bench_parameterizer) ;;
-  *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte) ;;
+  reliability) targets=(bench_reliability hyperbolic_orbifold_tutte) ;;
+  scans) targets=(hyperbolic_orbifold_tutte) ;;
+  *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte bench_reliability) ;;
 esac
 "$root/scripts/build.sh" "${targets[@]}" >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
@@ -153,6 +163,48 @@ scaling_section() {
     rm -f "$work/blob$n.off" "$work/e$n.obj"
   done
 }
+reliability_section() {
+  echo "== map_reliability() against ground truth (vertex i <-> vertex i; errors in % of the target's diagonal;"
+  echo "   worst1%in: % of the 1% worst vertices flagged; <=5%?: flagged at most 5% where the mean error is under 1%)"
+  local wolf="$root/../shared/data/collections/tosca_wolf" pairs=()
+  if [ -f "$wolf/tosca_wolf.suggested_rows7.txt" ]; then
+    for i in 0 1 2; do # the 7 suggested landmark rows of each pose (read in place, written to the scratch folder)
+      awk 'NR == FNR { row[FNR] = $1 + 1; n = FNR; next } { l[FNR] = $1 } END { for(j = 1; j <= n; ++j) print l[row[j]] }' \
+        "$wolf/tosca_wolf.suggested_rows7.txt" "$wolf/tosca_wolf$i.landmarks.txt" > "$work/wolf$i.c7"
+    done
+    for p in "0 1" "1 0" "0 2" "2 0" "1 2" "2 1"; do
+      set -- $p; pairs+=("$wolf/tosca_wolf$1.off" "$work/wolf$1.c7" "$wolf/tosca_wolf$2.off" "$work/wolf$2.c7")
+    done
+    "$build/bin/bench_reliability" "${pairs[@]}"
+    "$build/bin/bench_reliability" --noise 0.001 "${pairs[@]}" | tail -n +2
+    "$build/bin/bench_reliability" --noise 0.0005 --split 100 0.15 1 "${pairs[@]}" | tail -n +2
+    "$build/bin/bench_reliability" --split 3971 0.15 2 "${pairs[@]:4:4}" | tail -n +2
+  else
+    echo "(../shared/data/collections/tosca_wolf not found: the TOSCA pairs are skipped)"
+  fi
+  local generated=()
+  for m in hand elephant bull; do
+    local off="$build/data/meshes/$m.off"
+    [ -f "$off" ] || continue
+    # a twist of one radian over the mesh's height (z)
+    echo 'BEGIN { n = read_off(ARGV[1], P, F); lo = hi = P[0, 2]
+      for(i = 1; i < n; ++i) { if(P[i, 2] < lo) lo = P[i, 2]; if(P[i, 2] > hi) hi = P[i, 2] } print 1 / (hi - lo) }' > "$work/height.awk"
+    local t; t=$(awk -f "$root/test/off_reader.awk" -f "$work/height.awk" "$off")
+    awk -v T="$t" -f "$root/test/twist.awk" "$off" > "$work/$m-twisted.off"
+    "$cli" landmarks --mesh "$off" --count 7 --out "$work/$m.c7" >/dev/null 2>&1 || continue
+    generated+=("$off" "$work/$m.c7" "$work/$m-twisted.off" "$work/$m.c7")
+  done
+  if [ ${#generated[@]} -gt 0 ]; then
+    "$build/bin/bench_reliability" "${generated[@]}" | tail -n +2
+    "$build/bin/bench_reliability" --noise 0.001 "${generated[@]}" | tail -n +2
+  fi
+}
+scans_section() {
+  echo "== scans as they come: generated defects mapped with map --repair onto the clean shape"
+  bash "$root/benchmark/scan_defects.sh" "$cli" "$build/data" "$root/../shared/data" 2>/dev/null
+}
+if [ "$only" = reliability ]; then reliability_section; exit 0; fi
+if [ "$only" = scans ]; then scans_section; exit 0; fi
 if [ "$only" = whole ]; then whole_section; exit 0; fi
 if [ "$only" = scaling ]; then scaling_section; exit 0; fi
 if [ "$only" = io ]; then io_section; exit 0; fi
@@ -210,3 +262,5 @@ done
 io_section
 whole_section
 scaling_section
+reliability_section
+scans_section

@@ -3,7 +3,8 @@
 # MAP.txt: one line 'face b0 b1 b2' per source vertex ('-1 ...': no image, counted apart);
 # TARGET.off: the mesh whose faces MAP.txt refers to; TRUTH.off: the mesh whose vertex i is the
 # true image of source vertex i. Prints "mapped N unmapped U max E mean M" with E and M
-# relative to the bounding box diagonal of TRUTH.off.
+# relative to the bounding box diagonal of TRUTH.off. With -v per_vertex=FILE, FILE receives
+# "i e" per mapped source vertex i (e: its error in diagonals).
 BEGIN {
   map = ARGV[1]; target = ARGV[2]; truth = ARGV[3]; ARGC = 1
   read_off(target, TP, TF)
@@ -24,6 +25,7 @@ BEGIN {
         e2 += (x - GP[i, d])^2
       }
       e = sqrt(e2) / diag; sum += e; mapped++; if(e > max) max = e
+      if(per_vertex != "") printf "%d %.9g\n", i, e > per_vertex
     }
     i++
   }

@@ -209,5 +209,95 @@ case "$case_name" in
     nfo=$(grep -c '^f ' "$tmp/out/0_holes.obj")
     awk -v nf="$nfo" '$1 >= nf { exit 1 }' "$tmp/out/1_to_0.map.txt" || fail "a face beyond the target OBJ's faces"
     echo ok ;;
+  scan_defects)
+    # the defects of scans, generated on bear.off with its vertex numbers kept (scan_defects.awk),
+    # so the identity is the ground truth: stray triangles (debris, not asked to be dropped), an
+    # opening whose rim passes through a landmark, one between landmarks, and three at once
+    # (about 4%, 10% and 19% of the area); the landmarks ask for a sphere, so every opening is
+    # closed whatever its length
+    mesh="$M/bear.off"
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/c.txt"
+    read -r nv nf <<<"$(off_counts "$mesh")"
+    # the clean pair: the error the defects are measured against
+    "$prog" map --source "$mesh" --source-cones "$tmp/c.txt" --target "$mesh" --target-cones "$tmp/c.txt" --out "$tmp/clean.txt" >/dev/null || fail "clean map"
+    read -r clean_mean <<<"$(awk -f "$here/off_reader.awk" -f "$here/map_error.awk" "$tmp/clean.txt" "$mesh" "$mesh" | awk '{print $8}')"
+    rim_of() { awk -v from="$1" -v rings="$2" -f "$here/ring_distance.awk" "$mesh" | sort -n | head -1; } # a centre R rings from a landmark
+    under="$(rim_of 10138 12):12"
+    three="5000:20,$(rim_of 10138 14):14,$(rim_of 5326 14):14"
+    for spec in "$under" 5000:20 "$three"; do
+      awk -v openings="$spec" -v debris=3 -v stats="$tmp/stats" -f "$here/scan_defects.awk" "$mesh" > "$tmp/d.off"
+      read -r _ removed _ fraction _ dv < "$tmp/stats"
+      for i in 10138 5326 2877 3940 7260 13588 121; do # every landmark is kept on a face (by construction)
+        awk -v nv="$nv" -v dv="$dv" -v i="$i" 'NR > 2 + nv + dv && NF >= 4 && ($2 == i || $3 == i || $4 == i) { f = 1 } END { exit !f }' "$tmp/d.off" || fail "$spec: landmark $i on no face"
+      done
+      # without --repair: refused (the debris); with it, mapped onto the clean mesh
+      rm -f "$tmp/m.txt"
+      expect_error "$tmp/m.txt" "isolated.*--repair mends" map --source "$tmp/d.off" --source-cones "$tmp/c.txt" --target "$mesh" --target-cones "$tmp/c.txt" --out "$tmp/m.txt"
+      "$prog" map --repair --source "$tmp/d.off" --source-cones "$tmp/c.txt" --target "$mesh" --target-cones "$tmp/c.txt" \
+        --out "$tmp/m.txt" --report "$tmp/r.json" >"$tmp/out" 2>"$tmp/err" || fail "$spec: map --repair: $(cat "$tmp/err")"
+      grep -q '"debris_components_removed": 3' "$tmp/r.json" || fail "$spec: 3 debris components dropped"
+      grep -q '"landmarks_decided": true' "$tmp/r.json" || fail "$spec: the landmarks decide"
+      grep -q '"orbifold": "sphere"' "$tmp/r.json" || fail "$spec: sphere type"
+      isolated=$(awk -v nv="$nv" 'NR > 2 + nv + 9 && NF >= 4 { for(i = 2; i <= 4; ++i) used[$i] = 1 } END { for(v = 0; v < nv; ++v) if(!(v in used)) n++; print n + 0 }' "$tmp/d.off")
+      [ "$(wc -l < "$tmp/m.txt")" -ge $((nv + dv)) ] || fail "$spec: one line per vertex of the file (then the added ones)"
+      [ "$(head -n $((nv + dv)) "$tmp/m.txt" | tail -n "$dv" | grep -c '^-1 0 0 0$')" -eq "$dv" ] || fail "$spec: the debris vertices have no image"
+      [ "$(head -n "$nv" "$tmp/m.txt" | grep -c '^-1 ')" -eq "$isolated" ] || fail "$spec: the $isolated vertices inside openings have no image"
+      read -r mapped unmapped max mean <<<"$(awk -f "$here/off_reader.awk" -f "$here/map_error.awk" "$tmp/m.txt" "$mesh" "$mesh" | awk '{print $2, $4, $6, $8}')"
+      echo "defects $spec: $removed faces removed ($fraction of the area), 3 debris triangles: error mean $mean max $max (diagonals; clean pair $clean_mean)"
+      awk -v m="$mean" -v c="$clean_mean" 'BEGIN { exit !(m < 0.02 && m < c + 0.01) }' || fail "$spec: mean error $mean (clean $clean_mean)"
+    done
+    # the other way, onto the mesh with three openings: the vertices whose true image is in an
+    # opening are reported as mapped into a closed hole, and few others are
+    "$prog" map --repair --source "$mesh" --source-cones "$tmp/c.txt" --target "$tmp/d.off" --target-cones "$tmp/c.txt" \
+      --out "$tmp/n.txt" --report "$tmp/q.json" >/dev/null 2>"$tmp/err" || fail "map onto the defects"
+    grep -q "map into holes of the target that --repair closed" "$tmp/err" || fail "no warning: $(cat "$tmp/err")"
+    grep -o '"images_in_filled_holes": \[[^]]*\]' "$tmp/q.json" | grep -o '[0-9][0-9]*' | sort > "$tmp/listed"
+    awk -v nv="$nv" 'NR > 2 + nv + 9 && NF >= 4 { for(i = 2; i <= 4; ++i) used[$i] = 1 } END { for(v = 0; v < nv; ++v) if(!(v in used)) print v }' "$tmp/d.off" | sort > "$tmp/inside"
+    listed=$(wc -l < "$tmp/listed"); inside=$(wc -l < "$tmp/inside"); both=$(comm -12 "$tmp/listed" "$tmp/inside" | wc -l)
+    [ "$(json_number "$tmp/q.json" images_in_filled_holes_count)" -eq "$listed" ] || fail "the count is the list's"
+    echo "images in closed holes: $listed listed, $inside vertices inside the openings, $both both"
+    [ $((10 * both)) -ge $((9 * inside)) ] || fail "fewer than 90% of the vertices inside the openings are listed"
+    [ $((10 * both)) -ge $((9 * listed)) ] || fail "more than 10% of the listed vertices are outside the openings"
+    echo ok ;;
+  handles)
+    # topological noise: bear.off with two faces 30 rings apart but close in space joined by a
+    # tube (add_handle.awk, vertex numbers kept): genus 1 against bear's 0. map --repair cuts
+    # the handle around the tube (its loop through the tube's six vertices, no longer than the
+    # shorter removed triangle's perimeter) and maps within 2% of the diagonal of the identity
+    mesh="$M/bear.off"
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/c.txt"
+    read -r nv nf <<<"$(off_counts "$mesh")"
+    awk -v face=5000 -v min_rings=30 -v stats="$tmp/stats" -f "$here/add_handle.awk" "$mesh" > "$tmp/h.off"
+    read -r _ f1 f2 _ <<<"$(cat "$tmp/stats")"
+    tube=$(awk -v f1="$f1" -v f2="$f2" 'NR == 2 { nv = $1 } NR > 2 + nv && NF >= 4 { if(k == f1 || k == f2) print $2 "\n" $3 "\n" $4; k++ }' "$mesh" | sort -n | tr '\n' ' ')
+    perimeter=$(awk -v f1="$f1" -v f2="$f2" 'NR == 2 { nv = $1 } NR > 2 && NR <= 2 + nv { X[NR - 3] = $1; Y[NR - 3] = $2; Z[NR - 3] = $3 }
+      NR > 2 + nv && NF >= 4 { if(k == f1 || k == f2) { p = 0; for(i = 2; i <= 4; ++i) { j = (i == 4) ? 2 : i + 1; p += sqrt((X[$i] - X[$j])^2 + (Y[$i] - Y[$j])^2 + (Z[$i] - Z[$j])^2) }
+        if(best == "" || p < best) best = p } k++ } END { printf "%.17g\n", best }' "$mesh")
+    expect_error "$tmp/m.txt" "cuts the handles" map --source "$tmp/h.off" --source-cones "$tmp/c.txt" --target "$mesh" --target-cones "$tmp/c.txt" --out "$tmp/m.txt"
+    for way in forward backward; do
+      if [ $way = forward ]; then a="$tmp/h.off"; b="$mesh"; else a="$mesh"; b="$tmp/h.off"; fi
+      "$prog" map --repair --source "$a" --source-cones "$tmp/c.txt" --target "$b" --target-cones "$tmp/c.txt" --out "$tmp/m.txt" \
+        --report "$tmp/r.json" --prepared-target "$tmp/t.off" >"$tmp/out" 2>"$tmp/err" || fail "$way: map --repair: $(cat "$tmp/err")"
+      grep -q "its handles are cut" "$tmp/out" || fail "$way: the cut is not said: $(cat "$tmp/out")"
+      loop=$(grep -o '"cut_handles": \[{"length": [^]]*\]' "$tmp/r.json")
+      length=$(echo "$loop" | grep -o '"length": [0-9.e+-]*' | awk '{print $2}')
+      awk -v l="$length" -v p="$perimeter" 'BEGIN { exit !(l > 0 && l <= p * (1 + 1e-12)) }' || fail "$way: loop length $length, triangle perimeter $perimeter"
+      for v in $(echo "$loop" | grep -o '"vertices": \[[^]]*' | grep -o '[0-9][0-9]*'); do
+        case " $tube" in *" $v "*) ;; *) fail "$way: loop vertex $v is not a tube vertex ($tube)" ;; esac
+      done
+      truth="$mesh"; [ $way = forward ] && target="$mesh" || target="$tmp/t.off"
+      read -r mapped unmapped max mean <<<"$(awk -f "$here/off_reader.awk" -f "$here/map_error.awk" "$tmp/m.txt" "$target" "$truth" | awk '{print $2, $4, $6, $8}')"
+      echo "handle $way: loop $length (perimeter $perimeter), error mean $mean max $max (diagonals), $unmapped unmapped"
+      [ "$unmapped" -eq 0 ] || fail "$way: unmapped vertices"
+      awk -v m="$mean" 'BEGIN { exit !(m < 0.01) }' || fail "$way: mean error $mean"
+    done
+    # a bound below the loop: refused, saying which handle and which option
+    expect_error "$tmp/m2.txt" "handle 1 of 1.*--max-handle" map --repair --max-handle 0.001 --source "$tmp/h.off" --source-cones "$tmp/c.txt" \
+      --target "$mesh" --target-cones "$tmp/c.txt" --out "$tmp/m2.txt"
+    # eight.off's two handles are the shape's (long loops): refused under the default bound
+    echo "0 1 2 3 4 5 6" > "$tmp/e.txt"
+    expect_error "$tmp/e.obj" "handle 1 of 2" embed --mesh "$M/eight.off" --cones "$tmp/e.txt" --repair --target-genus 0 --out "$tmp/e.obj"
+    expect_error "$tmp/e.obj" "needs --repair" embed --mesh "$M/eight.off" --cones "$tmp/e.txt" --target-genus 0 --out "$tmp/e.obj"
+    echo ok ;;
   *) fail "unknown case $case_name" ;;
 esac

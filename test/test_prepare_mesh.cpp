@@ -681,6 +681,78 @@ TEST_CASE(opening_under_landmarks)
   CHECK(output_faces(both, false) == rotated_triples(two.faces));
 }
 
+// 12. handles (topological noise): with target_genus 0 the shortest non-separating loop is cut
+// and both sides closed. On the torus the shortest such loops are the tube's circles and the
+// inner equator, polygons of n chords of a unit circle: 2 n sin(pi / n)
+TEST_CASE(handles_torus)
+{
+  const int n = 12;
+  const Soup t = torus(n);
+  const double pi = 3.14159265358979323846, shortest = 2 * n * std::sin(pi / n);
+  const Run keep = prepare(t);
+  CHECK_OK(keep);
+  CHECK(keep.prep.cut_handles.empty() && euler_characteristic(keep.out) == 0);
+  // the torus's bounding box is 6 x 6 x 2: the loop is 0.72 diagonals, over the default bound
+  const Run refused = prepare(t, HOT::parameters::target_genus(0));
+  CHECK_CODE(refused, HOT::ERROR_WRONG_TOPOLOGY);
+  CHECK_MSG(refused.r.message.find("handle 1 of 1") != std::string::npos && refused.r.message.find("--max-handle") != std::string::npos,
+            refused.r.message);
+  const Run x = prepare(t, HOT::parameters::target_genus(0, HOT::parameters::maximum_handle_length(1.0)));
+  CHECK_OK(x);
+  CHECK(CGAL::is_closed(x.out) && euler_characteristic(x.out) == 2 && x.prep.type == HOT::Sphere_type);
+  CHECK(x.prep.cut_handles.size() == 1 && x.prep.filled_holes.size() == 2);
+  if(x.prep.cut_handles.size() != 1) return;
+  const HOT::Cut_handle& h = x.prep.cut_handles[0];
+  CHECK_MSG(std::abs(h.length - shortest) <= 1e-9 * shortest, "loop length " << h.length << ", shortest " << shortest);
+  CHECK(h.vertices.size() == std::size_t(n));
+  // n vertices copied (one side of the cut), the sides closed: the input's faces all kept
+  CHECK(x.V() == t.points.size() + n + x.prep.filled_holes[0].vertices_added + x.prep.filled_holes[1].vertices_added);
+  CHECK(x.F() == t.faces.size() + x.prep.filled_faces.size() && x.prep.filled_faces.size() == x.prep.faces_added_by_hole_filling());
+  for(const HOT::Filled_hole& f : x.prep.filled_holes) CHECK(f.boundary_vertices == std::size_t(n));
+}
+
+// a sphere whose two antipodal faces (a, b, c) and (d, e, f) are joined by a tube of six
+// triangles (fused limbs): genus 1; the handle is cut around the tube, through its six
+// vertices only, no longer than the shorter of the two triangles' perimeters
+TEST_CASE(handles_tube)
+{
+  Soup s = icosphere(3);
+  std::size_t f1 = 0, f2 = 0;
+  double lowest = HUGE_VAL;
+  const Point top = CGAL::centroid(s.points[s.faces[0][0]], s.points[s.faces[0][1]], s.points[s.faces[0][2]]);
+  for(std::size_t j = 0; j < s.faces.size(); ++j) { // the face opposite face 0
+    const Point c = CGAL::centroid(s.points[s.faces[j][0]], s.points[s.faces[j][1]], s.points[s.faces[j][2]]);
+    const double d = (c - CGAL::ORIGIN) * (top - CGAL::ORIGIN);
+    if(d < lowest) { lowest = d; f2 = j; }
+  }
+  const Polygon A = s.faces[f1], B = s.faces[f2];
+  const std::size_t a = A[0], b = A[1], c = A[2], d = B[0], e = B[1], f = B[2];
+  auto perimeter = [&](const Polygon& q) {
+    double l = 0;
+    for(int i = 0; i < 3; ++i) l += std::sqrt(CGAL::squared_distance(s.points[q[i]], s.points[q[(i + 1) % 3]]));
+    return l;
+  };
+  const double bound = std::min(perimeter(A), perimeter(B));
+  s.faces.erase(s.faces.begin() + std::max(f1, f2));
+  s.faces.erase(s.faces.begin() + std::min(f1, f2));
+  // the tube: a <-> e, b <-> d, c <-> f, so that every new edge has its two sides opposite
+  for(const Polygon& q : std::vector<Polygon>{{a, b, d}, {a, d, e}, {b, c, f}, {b, f, d}, {c, a, e}, {c, e, f}}) s.faces.push_back(q);
+  CHECK(euler_characteristic(mesh_of(s)) == 0 && CGAL::is_closed(mesh_of(s)));
+  const Run x = prepare(s, HOT::parameters::target_genus(0));
+  CHECK_OK(x);
+  CHECK(CGAL::is_closed(x.out) && euler_characteristic(x.out) == 2 && x.prep.cut_handles.size() == 1);
+  if(x.prep.cut_handles.size() != 1) return;
+  const HOT::Cut_handle& h = x.prep.cut_handles[0];
+  CHECK_MSG(h.length <= bound * (1 + 1e-12), "loop " << h.length << ", the triangles' perimeters " << bound);
+  const std::set<std::size_t> tube{a, b, c, d, e, f};
+  for(std::size_t v : h.vertices) CHECK_MSG(tube.count(v) == 1, "loop vertex " << v << " is not on the tube");
+  CHECK(x.prep.summary().find("cut handles: 1") != std::string::npos);
+  // genus 0 asked of a sphere: nothing to do
+  const Run y = prepare(icosphere(2), HOT::parameters::target_genus(0));
+  CHECK_OK(y);
+  CHECK(y.prep.cut_handles.empty() && !y.prep.changed());
+}
+
 // two closed meshes sharing vertex 0, either first: split into two components, the larger
 // (the octahedron) kept; the shared vertex lies on it, so it stays addressed as vertex 0
 TEST_CASE(shared_vertex)

@@ -9,8 +9,11 @@
 // machines sharing the output folder (`collection --stage embed|maps --shard I/N`, then
 // `--stage merge`; the Python module's Dask collection):
 //   - an embedding job per mesh: reads it and its landmarks, embeds it with the collection's
-//     cone order (the paper's tour on mesh 0), writes DIR/<i>_<name>.obj and its entry of the
-//     report (DIR/.parts/mesh_<i>.json);
+//     cone order (collection_order(): the best of the meshes' tours, as Orbifold_collection
+//     ranks them, computed alike by every job; no other order is tried when a mesh refuses it,
+//     since the other jobs have used it: the message says to run the collection in one process,
+//     which tries the others, or to force an order), writes DIR/<i>_<name>.obj and its entry of
+//     the report (DIR/.parts/mesh_<i>.json);
 //   - a map job per pair (a, b) the collection computes: reads the two stored embeddings (no
 //     embedding again), maps a onto b, writes DIR/<a>_to_<b>.map.txt (--all-pairs) and the
 //     map itself for the cycle check (DIR/.parts/map_<a>_<b>.bin) and its time;
@@ -130,6 +133,7 @@ struct Collection_job
   bool all_pairs = false;
   hot_tools::Repair_options repair;
   std::vector<int> orders; // --cone-orders, per landmark in the class-wide order (empty: 2 for all)
+  std::string order = "auto"; // --order given|tsp|auto
 
   std::size_t size() const { return entries.size(); }
   // <i>_<name>: the name of mesh i's files
@@ -152,35 +156,56 @@ inline void make_folder(const std::string& dir)
     throw std::runtime_error("cannot create the folder '" + dir + "'");
 }
 
-// the collection's orbifold, number of landmarks and cone order: mesh 0's type, and the paper's
-// tour on mesh 0 (sphere type), the given order (disk), as Orbifold_collection computes them
+// the collection's orbifold, number of landmarks and cone order: mesh 0's type, and for sphere
+// type the first of the meshes' tours as Orbifold_collection ranks them (with --order tsp mesh
+// 0's tour; every mesh is read for its landmark distances), the given order (disk, --order given)
 struct Collection_order
 {
   HOT::Orbifold_type type = HOT::Sphere_type;
   std::size_t landmarks = 0;
   std::vector<std::size_t> order;
+  std::size_t from = 0; // the mesh whose tour it is (the number of meshes: the given order)
 };
 
 inline Collection_order collection_order(const Collection_job& job)
 {
-  Surface_mesh m;
-  std::vector<SM_vertex> landmarks;
-  Input in;
   Collection_order r;
-  r.type = read_mesh_and_landmarks(job.entries[0].first, job.entries[0].second, std::nullopt, job.repair, m, landmarks, in,
-                                   minimum_landmarks(job.orders));
-  r.landmarks = landmarks.size();
-  if(!job.orders.empty() && job.orders.size() != landmarks.size())
-    throw Failure{HOT::ERROR_WRONG_PARAMETER, std::to_string(job.orders.size()) + " cone orders are given for " +
-                                                std::to_string(landmarks.size()) + " landmarks (one per landmark is needed)"};
-  HOT::Status s = r.type == HOT::Sphere_type ? HOT::check_landmark_vertices(m, landmarks, r.type,
-                                                                          job.orders.empty() ? HOT::minimum_number_of_landmarks : 3)
-                                             : HOT::Status();
-  std::vector<SM_vertex> ordered;
-  if(s)
-    s = HOT::internal::order_landmarks(m, get(CGAL::vertex_point, m), landmarks, r.type, HOT::Tsp_order, ordered, r.order);
-  if(!s)
-    throw Failure{s.code, "mesh 0: " + s.message};
+  std::vector<std::vector<std::vector<double> > > D;
+  for(std::size_t i = 0; i < job.size(); ++i) {
+    Surface_mesh m;
+    std::vector<SM_vertex> landmarks;
+    Input in;
+    const HOT::Orbifold_type type = read_mesh_and_landmarks(job.entries[i].first, job.entries[i].second, std::nullopt, job.repair, m,
+                                                            landmarks, in, minimum_landmarks(job.orders));
+    if(i == 0) {
+      r.type = type;
+      r.landmarks = landmarks.size();
+      if(!job.orders.empty() && job.orders.size() != landmarks.size())
+        throw Failure{HOT::ERROR_WRONG_PARAMETER, std::to_string(job.orders.size()) + " cone orders are given for " +
+                                                    std::to_string(landmarks.size()) + " landmarks (one per landmark is needed)"};
+      for(std::size_t c = 0; c < landmarks.size(); ++c) r.order.push_back(c);
+      r.from = job.size();
+      if(type != HOT::Sphere_type || job.order == "given")
+        return r;
+    } else if(type != r.type || landmarks.size() != r.landmarks || HOT::internal::closed_mesh_genus(m) > 0)
+      break; // (its embedding job says why it is refused; the others use mesh 0's tour)
+    const HOT::Status s = HOT::check_landmark_vertices(m, landmarks, type, job.orders.empty() ? HOT::minimum_number_of_landmarks : 3);
+    if(!s && i == 0)
+      throw Failure{s.code, "mesh 0: " + s.message};
+    if(s)
+      D.push_back(HOT::compute_landmark_distances(m, landmarks, get(CGAL::vertex_point, m)));
+    if(!s || (i > 0 && !HOT::internal::is_finite_distance_matrix(D.back()))) {
+      D.resize(1);
+      break;
+    }
+    if(job.order == "tsp")
+      break;
+  }
+  const std::vector<HOT::Landmark_order_candidate> ranked = HOT::rank_landmark_tours(D);
+  if(ranked.empty())
+    throw Failure{HOT::ERROR_CUT_FAILED, "mesh 0: the landmark tour could not be computed"};
+  r.order = ranked[0].order;
+  r.from = ranked[0].mesh;
   return r;
 }
 
@@ -216,6 +241,10 @@ inline double embed_collection_mesh(const Collection_job& job, const Collection_
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     m, ordered, uv,
     HOT::parameters::cone_orders(cut_orders, HOT::parameters::chart_map(charts, HOT::parameters::orbifold_type(type, HOT::parameters::embedding_statistics(&st)))));
+  if(ec != HOT::OK && co.from < job.size() && job.order == "auto" && HOT::is_landmark_order_failure(ec))
+    throw Failure{ec, path + ": " + st.message + " (in the landmark order of mesh " + std::to_string(co.from) + "'s tour, the first the"
+                  " collection tries; separate jobs try no other: run the collection in one process, which tries the other meshes'"
+                  " tours in turn, or force an order with --order)"};
   if(ec != HOT::OK)
     throw Failure{ec, path + ": " + st.message};
   const hot_tools::Input_mesh* addressed = in.file.repaired ? &in.file : nullptr;
@@ -232,6 +261,7 @@ inline double embed_collection_mesh(const Collection_job& job, const Collection_
   files.write(job.obj_path(i), [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, addressed, &ch, &cones); });
   files.write(job.mesh_part(i), [&](std::ostream& os) {
     os << "reversed " << (st.landmark_order_reversed ? 1 : 0) << "\n"
+       << "order_from " << (co.from < job.size() ? "mesh " + std::to_string(co.from) : std::string("given")) << "\n"
        << hot_tools::collection_mesh_entry(i, path, num_vertices(m), st, &in.file) << "\n";
   });
   files.commit();
@@ -336,9 +366,15 @@ inline hot_tools::Collection_report merge_collection(const Collection_job& job)
     if(!hot_tools::read_file_contents(job.mesh_part(i), text))
       throw Failure{HOT::ERROR_READ_FAILED, job.entries[i].first + ": mesh " + std::to_string(i) +
                                               " was not embedded (run the embed stage of every shard first)"};
-    const std::size_t eol = text.find('\n');
-    if(text.compare(0, 9, "reversed ") != 0 || eol == std::string::npos || text.size() < eol + 2)
+    const std::size_t eol0 = text.find('\n');
+    const std::size_t eol = eol0 == std::string::npos ? eol0 : text.find('\n', eol0 + 1); // (the line "order_from ...")
+    if(text.compare(0, 9, "reversed ") != 0 || eol == std::string::npos || text.size() < eol + 2 ||
+       text.compare(eol0 + 1, 11, "order_from ") != 0)
       throw Failure{HOT::ERROR_READ_FAILED, job.mesh_part(i) + ": malformed"};
+    if(i == 0) {
+      r.order_from = text.substr(eol0 + 12, eol - eol0 - 12);
+      r.orders_tried = 1;
+    }
     const int reversed = text[9] == '1' ? 1 : 0;
     if(i == 0) reversed0 = reversed;
     else if(reversed != reversed0)

@@ -160,7 +160,8 @@ inline HOT::Orbifold_type parse_orbifold(const std::string& s)
 
 // --order given|tsp; `fallback` when the option is absent (empty: the default of the type)
 // the repair options of embed, landmarks, map and collection: --repair, --largest-component,
-// --max-hole F and --snap-landmarks (the last one also works without --repair)
+// --max-hole F, --target-genus G, --max-handle F and --snap-landmarks (the last one also works
+// without --repair)
 inline const std::set<std::string>& repair_flags()
 {
   static const std::set<std::string> f{"repair", "largest-component", "snap-landmarks"};
@@ -174,14 +175,31 @@ inline hot_tools::Repair_options parse_repair_options(const Options& opt)
   r.largest_component = opt.has("largest-component");
   r.snap_landmarks = opt.has("snap-landmarks");
   if(opt.has("max-hole")) {
+    r.max_hole_given = true;
     const std::string s = opt.get("max-hole");
     char* end = nullptr;
     r.max_hole = std::strtod(s.c_str(), &end);
     if(s.empty() || end == nullptr || *end != '\0' || !(r.max_hole >= 0) || !(r.max_hole <= 1e6))
       throw Usage_error{"--max-hole must be a number >= 0 (a length in bounding box diagonals), got '" + s + "'"};
   }
-  if((r.largest_component || opt.has("max-hole")) && !r.repair)
-    throw Usage_error{std::string(r.largest_component ? "--largest-component" : "--max-hole") + " needs --repair"};
+  if(opt.has("target-genus")) {
+    const std::string s = opt.get("target-genus");
+    char* end = nullptr;
+    const long g = std::strtol(s.c_str(), &end, 10);
+    if(s.empty() || end == nullptr || *end != '\0' || g < 0 || g > 1000000)
+      throw Usage_error{"--target-genus must be an integer >= 0, got '" + s + "'"};
+    r.target_genus = g;
+  }
+  if(opt.has("max-handle")) {
+    const std::string s = opt.get("max-handle");
+    char* end = nullptr;
+    r.max_handle = std::strtod(s.c_str(), &end);
+    if(s.empty() || end == nullptr || *end != '\0' || !(r.max_handle >= 0) || !(r.max_handle <= 1e6))
+      throw Usage_error{"--max-handle must be a number >= 0 (a length in bounding box diagonals), got '" + s + "'"};
+  }
+  for(const char* o : {"largest-component", "max-hole", "target-genus", "max-handle"})
+    if(opt.has(o) && !r.repair)
+      throw Usage_error{std::string("--") + o + " needs --repair"};
   return r;
 }
 
@@ -190,6 +208,17 @@ inline std::string parse_order(const Options& opt, const std::string& fallback)
   const std::string s = opt.has("order") ? opt.get("order") : fallback;
   if(!s.empty() && s != "given" && s != "tsp")
     throw Usage_error{"--order must be given or tsp, got '" + s + "'"};
+  return s;
+}
+
+// --order given|tsp|auto of map and collection: one order for all the meshes, as given, the
+// first mesh's tour, or (auto, the default) the best of the meshes' tours with the others tried
+// in turn when an embedding is refused
+inline std::string parse_common_order(const Options& opt)
+{
+  const std::string s = opt.has("order") ? opt.get("order") : "auto";
+  if(s != "given" && s != "tsp" && s != "auto")
+    throw Usage_error{"--order must be given, tsp or auto, got '" + s + "'"};
   return s;
 }
 

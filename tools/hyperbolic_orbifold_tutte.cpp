@@ -84,9 +84,13 @@ const char* const usage_text =
   "      (CONES may be an empty file); the report gives \"genus\" and the \"cut_graph\".\n"
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
   "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off]\n"
-  "      [--report REPORT.json] [--cone-orders P1,P2,...] [REPAIR]\n"
+  "      [--report REPORT.json] [--cone-orders P1,P2,...] [--order auto|tsp|given] [REPAIR]\n"
   "      maps every vertex of A onto B through the common orbifold (landmark i of CA to\n"
-  "      landmark i of CB); MAP.txt: one line 'face b0 b1 b2' per vertex of A (with --repair:\n"
+  "      landmark i of CB), both embedded in one landmark order: for sphere type (genus 0) by\n"
+  "      default (auto) the tour of A or of B whose cut is the least longer than each mesh's own\n"
+  "      tour on the mesh where it is the most so, the other one if a mesh refuses it; tsp: A's\n"
+  "      tour only; given: as in the files (disk type always). The order used is on stdout and\n"
+  "      in REPORT.json (\"landmark_order\", \"landmark_order_from\", \"orders_tried\"); MAP.txt: one line 'face b0 b1 b2' per vertex of A (with --repair:\n"
   "      per vertex of A's file, then per vertex the repair added; '-1 0 0 0' for a vertex on\n"
   "      no face; faces are those of the repaired B, written by --prepared-target).\n"
   "      Vertices of A the map cannot resolve (in a protrusion without a landmark, squeezed by\n"
@@ -101,8 +105,9 @@ const char* const usage_text =
   "      they must put the same landmarks at the same cones (embed B with --order set to A's\n"
   "      \"landmark_positions_used\"); MAP.txt has one line per v line of A.obj; REPORT.json as map's\n"
   "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [REPAIR]\n"
-  "      [--stage embed|maps|merge [--shard I/N]]\n"
-  "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') and maps them onto\n"
+  "      [--order auto|tsp|given] [--stage embed|maps|merge [--shard I/N]]\n"
+  "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') in one landmark order (as\n"
+  "      map's --order, over all the meshes' tours; tsp: the first mesh's) and maps them onto\n"
   "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt).\n"
   "      As separate jobs (array jobs of a batch scheduler; the same options in every job):\n"
   "      --stage embed --shard I/N embeds meshes I, I+N, ...; then --stage maps --shard I/N maps\n"
@@ -136,8 +141,15 @@ const char* const usage_text =
   "      polygons, fills holes, splits the inner edges of a disk that join two boundary\n"
   "      vertices) and says what it did; landmark files and written vertex numbers stay those\n"
   "      of the input file, the added vertices come after them\n"
-  "      --max-hole F: fills boundary loops up to F bounding box diagonals long (default 0.5)\n"
-  "      --largest-component: keeps the largest connected component of a mesh with several\n"
+  "      The landmark file guides it: the component holding the landmarks is kept, debris (no\n"
+  "      landmark, under 1% of the faces) dropped; landmarks inside the surface close every\n"
+  "      boundary loop whatever its length (sphere type); faces closing holes are reported.\n"
+  "      --max-hole F: fills boundary loops up to F bounding box diagonals long (default 0.5,\n"
+  "      no limit when landmarks inside the surface ask for a sphere)\n"
+  "      --largest-component: keeps only the landmarks' (or the largest) component of several\n"
+  "      --target-genus G: cuts handles (shortest non-separating loops, both sides closed)\n"
+  "      down to genus G; automatic (0) in map when the other mesh is of genus 0, and in\n"
+  "      collection; --max-handle F: the longest loop cut (default 0.2 diagonals)\n"
   "      --snap-landmarks: moves disk-type corners that are not on the boundary to the\n"
   "      nearest boundary vertex (also without --repair)\n";
 
@@ -308,7 +320,7 @@ Embed_job parse_embed_options(int argc, char** argv)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("recentre");
-  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole", "cone-orders",
+  const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole", "target-genus", "max-handle", "cone-orders",
                                        "cut-graph", "cut-graph-out"}, flags);
   Embed_job job;
   job.request.mesh_path = opt.get("mesh");
@@ -487,6 +499,11 @@ void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const st
   }
   e.uv = e.mesh.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
   e.charts = e.mesh.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
+  for(SM_halfedge h : halfedges(e.mesh)) { // (as new: a map may embed again in another order)
+    e.uv[h] = Kernel::Point_2(0, 0);
+    e.charts[h] = HOT::Chart_point<Kernel::Point_2>();
+  }
+  e.stats = HOT::Embedding_statistics();
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     e.mesh, e.ordered, e.uv,
     HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(ordered_orders, HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats))))));
@@ -522,7 +539,26 @@ void check_map_pair(const Embedded& A, const Embedded& B)
                                               " landmarks and the target " + std::to_string(B.landmarks.size())};
   if(genus_of(A) != genus_of(B))
     throw Failure{HOT::ERROR_WRONG_TOPOLOGY, "the source has genus " + std::to_string(genus_of(A)) + " and the target genus " +
-                                           std::to_string(genus_of(B))};
+                                           std::to_string(genus_of(B)) +
+                                           (std::min(genus_of(A), genus_of(B)) == 0 ? " (--repair cuts the handles of the other, topological noise such as"
+                                                                                     " fused limbs, up to --max-handle)" : "")};
+}
+
+// With --repair, a map between a mesh of genus 0 and one of genus g >= 1 (topological noise of
+// a scan: fused fingers, an arm touching the body) reads the latter again with its handles cut
+// (--target-genus 0, automatic here); --target-genus given keeps what it asked for.
+void match_genus_zero(const Options& opt, const hot_tools::Repair_options& repair, Embedded& A, Embedded& B, std::size_t minimum)
+{
+  if(!repair.repair || opt.has("target-genus") || genus_of(A) == genus_of(B) || std::min(genus_of(A), genus_of(B)) != 0)
+    return;
+  hot_tools::Repair_options cut = repair;
+  cut.target_genus = 0;
+  Embedded& E = genus_of(A) > 0 ? A : B;
+  const bool source = &E == &A;
+  const std::string mesh = opt.get(source ? "source" : "target"), cones = opt.get(source ? "source-cones" : "target-cones");
+  std::cout << mesh << " has genus " << genus_of(E) << " and the other mesh genus 0: its handles are cut (--target-genus 0)" << std::endl;
+  E = Embedded();
+  read_and_check(mesh, cones, cut, E, minimum);
 }
 
 // Genus g >= 1: the cut graphs of a map's two meshes, for --source-cut-graph / --target-cut-graph
@@ -570,21 +606,97 @@ void check_same_polygon(const Embedded& A, const Embedded& B)
                                               " corners, or other side pairings); give corresponding cut graphs"};
 }
 
-// one cone order for both meshes of a map: the paper's tour on the source (sphere type), the
-// given one (disk)
-std::vector<std::size_t> map_cone_order(const Embedded& A)
+// The cone orders a map tries in turn, best first, each with the mesh whose tour it is (0 the
+// source, 1 the target, npos the given order). Sphere type of genus 0: with --order auto (the
+// default) the source's and the target's tours ranked by HOT::rank_landmark_tours() (the
+// longest, over the two meshes, of the cut's length in that order over the mesh's own tour's;
+// the source's on ties), with --order tsp the source's tour alone, with --order given the
+// given order alone. Disk type keeps the given order, genus g >= 1 takes any (the given one).
+std::vector<HOT::Landmark_order_candidate> map_cone_orders(const std::string& how, const Embedded& A, const Embedded& B)
 {
-  std::vector<std::size_t> order(A.landmarks.size());
-  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  if(A.type == HOT::Sphere_type && genus_of(A) == 0) { // (genus g >= 1: any order)
-    order = HOT::compute_landmark_tour(A.mesh, A.landmarks);
-    if(order.size() != A.landmarks.size())
-      throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the source"};
+  HOT::Landmark_order_candidate given;
+  for(std::size_t i = 0; i < A.landmarks.size(); ++i) given.order.push_back(i);
+  given.mesh = std::size_t(-1);
+  given.longest_ratio = 1;
+  if(A.type != HOT::Sphere_type || genus_of(A) != 0 || how == "given")
+    return {given};
+  std::vector<std::vector<std::vector<double> > > D(1, HOT::compute_landmark_distances(A.mesh, A.landmarks, get(CGAL::vertex_point, A.mesh)));
+  if(how != "tsp")
+    D.push_back(HOT::compute_landmark_distances(B.mesh, B.landmarks, get(CGAL::vertex_point, B.mesh)));
+  const std::vector<HOT::Landmark_order_candidate> r = HOT::rank_landmark_tours(D);
+  if(r.empty())
+    throw Failure{HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the " + std::string(
+                                           HOT::internal::is_finite_distance_matrix(D[0]) ? "target" : "source")};
+  return r;
+}
+
+// "the source's tour", "the target's tour" or "the given order"
+std::string order_origin(const HOT::Landmark_order_candidate& c)
+{
+  return c.mesh == 0 ? "the source's tour" : c.mesh == 1 ? "the target's tour" : "the given order";
+}
+
+// Embeds the source and the target of a map in the first order of `candidates` both accept;
+// an order refused for a reason the order may cause (HOT::is_landmark_order_failure()) passes to
+// the next one. Returns the index of the order used; fails when none works, saying which orders
+// were tried and why each failed. `refusals` gets one line per order refused.
+std::size_t embed_map_pair(Embedded& A, Embedded& B, const std::vector<HOT::Landmark_order_candidate>& candidates,
+                           const std::vector<int>& orders, const std::vector<std::vector<SM_vertex> >& ga,
+                           const std::vector<std::vector<SM_vertex> >& gb, std::vector<std::string>& refusals)
+{
+  std::string tried;
+  for(std::size_t c = 0; c < candidates.size(); ++c) {
+    const std::vector<std::size_t>& order = candidates[c].order;
+    try {
+      // (with a choice, the mesh whose tour it is not first: the more likely to refuse it)
+      const bool target_first = candidates.size() > 1 && candidates[c].mesh == 0;
+      embed_in_order(target_first ? B : A, order, orders, target_first ? "target" : "source", target_first ? gb : ga);
+      embed_in_order(target_first ? A : B, order, orders, target_first ? "source" : "target", target_first ? ga : gb);
+      return c;
+    } catch(const Failure& f) {
+      if(candidates.size() == 1 || !HOT::is_landmark_order_failure(f.code))
+        throw;
+      std::string list;
+      for(std::size_t i : order) list += (list.empty() ? "" : " ") + std::to_string(i);
+      refusals.push_back(order_origin(candidates[c]) + " (" + list + ") was refused by the " + f.message);
+      if(c + 1 == candidates.size()) {
+        std::string why;
+        for(const std::string& r : refusals) why += (why.empty() ? "" : "; ") + r;
+        throw Failure{f.code, "no landmark order works for both meshes (" + std::to_string(candidates.size()) + " tried): " + why};
+      }
+    }
   }
-  return order;
+  return 0; // (not reached: candidates is never empty)
 }
 
 // what `map` reports: sizes, times and the unreliable vertices, numbered as in the files
+// the source's vertices (file numbers, increasing) whose image `f` lies on a face that the
+// target's repair added to close a hole
+std::vector<std::size_t> images_in_filled_holes(const Embedded& A, const Embedded& B, const std::vector<Locator::Location>& f)
+{
+  const std::vector<std::size_t>& filled = B.in.file.prep.filled_faces; // (increasing)
+  std::vector<std::size_t> r;
+  if(filled.empty())
+    return r;
+  const std::vector<SM_vertex> va(vertices(A.mesh).begin(), vertices(A.mesh).end());
+  for(std::size_t i = 0; i < f.size(); ++i)
+    if(std::binary_search(filled.begin(), filled.end(), f[i].face_index))
+      r.push_back(hot_tools::output_vertex(va[i], addressing(A.in)));
+  std::sort(r.begin(), r.end());
+  return r;
+}
+
+// the reliability tests' counts (map_reliability()) in a map's report
+void add_reliability_tests(hot_tools::Map_summary& m, const HOT::Map_reliability& r)
+{
+  m.reliability_tests = true;
+  m.unreliable_by_scale = r.scale_flagged;
+  m.unreliable_by_rounding = r.rounding_flagged;
+  m.unreliable_by_protrusion = r.protrusion_flagged;
+  m.reference_scale = r.reference_scale;
+  m.scale_noise = r.scale_noise;
+}
+
 hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A, const Embedded& B, int k, const HOT::Map_reliability& r)
 {
   hot_tools::Map_summary m;
@@ -618,7 +730,7 @@ hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A, const 
 // the two files were embedded with the same landmarks in the same cone order
 int run_map_stored(const Options& opt)
 {
-  for(const char* o : {"source", "source-cones", "target", "target-cones", "colors-out", "prepared-target", "max-hole", "cone-orders",
+  for(const char* o : {"source", "source-cones", "target", "target-cones", "colors-out", "prepared-target", "max-hole", "target-genus", "max-handle", "cone-orders",
                        "source-cut-graph", "target-cut-graph", "repair", "largest-component", "snap-landmarks"})
     if(opt.has(o))
       throw Usage_error{std::string("--") + o + " does not go with --source-embedding/--target-embedding (the stored embeddings hold the meshes,"
@@ -651,6 +763,7 @@ int run_map_stored(const Options& opt)
   m.regions = reliability.regions;
   for(const HOT::Squeezed_region& g : reliability.regions)
     m.region_vertices.emplace_back(A.vertex_line[g.source_vertex], B.vertex_line[g.target_vertex]);
+  add_reliability_tests(m, reliability);
   m.seconds_map = std::chrono::duration<double>(t1 - t0).count();
   m.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
@@ -665,15 +778,16 @@ int run_map_stored(const Options& opt)
             << std::endl;
   if(!m.unreliable.empty())
     std::cerr << "warning: the map cannot resolve the images of " << m.unreliable.size() << " of the " << num_vertices(A.mesh)
-              << " source vertices (a protrusion without a landmark): put a landmark at the tip of such a protrusion" << std::endl;
+              << " source vertices (the map squeezes or stretches them far from an isometry, or double cannot resolve them): a protrusion"
+              << " without a landmark is the usual cause, put a landmark at the tip of such a protrusion" << std::endl;
   return EXIT_SUCCESS;
 }
 
 int run_map(int argc, char** argv)
 {
   const Options opt(argc, argv, 2,
-                    {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole",
-                     "cone-orders", "source-cut-graph", "target-cut-graph", "source-embedding", "target-embedding"},
+                    {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole", "target-genus", "max-handle",
+                     "cone-orders", "source-cut-graph", "target-cut-graph", "source-embedding", "target-embedding", "order"},
                     repair_flags());
   if(opt.has("source-embedding") || opt.has("target-embedding"))
     return run_map_stored(opt);
@@ -683,16 +797,18 @@ int run_map(int argc, char** argv)
   Embedded A, B;
   read_and_check(opt.get("source"), opt.get("source-cones"), repair, A, minimum_landmarks(orders));
   read_and_check(opt.get("target"), opt.get("target-cones"), repair, B, minimum_landmarks(orders));
+  match_genus_zero(opt, repair, A, B, minimum_landmarks(orders));
   check_map_pair(A, B);
-  const std::vector<std::size_t> order = map_cone_order(A);
+  const std::vector<HOT::Landmark_order_candidate> candidates = map_cone_orders(parse_common_order(opt), A, B);
   std::vector<std::vector<SM_vertex> > ga, gb; // genus g >= 1: the cut graphs
   if(genus_of(A) > 0) {
-    for(std::size_t i : order) A.ordered.push_back(A.landmarks[i]);
+    for(std::size_t i : candidates[0].order) A.ordered.push_back(A.landmarks[i]);
     map_cut_graphs(opt, A, B, ga, gb);
   } else if(opt.has("source-cut-graph") || opt.has("target-cut-graph"))
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the meshes have genus 0: a cut graph is for closed meshes of genus 1 or more"};
-  embed_in_order(A, order, orders, "source", ga);
-  embed_in_order(B, order, orders, "target", gb);
+  std::vector<std::string> refusals;
+  const HOT::Landmark_order_candidate& chosen = candidates[embed_map_pair(A, B, candidates, orders, ga, gb, refusals)];
+  const std::vector<std::size_t>& order = chosen.order;
   if(genus_of(A) > 0)
     check_same_polygon(A, B);
   if(A.stats.landmark_order_reversed != B.stats.landmark_order_reversed)
@@ -708,6 +824,11 @@ int run_map(int argc, char** argv)
   const auto t1 = std::chrono::steady_clock::now();
   const HOT::Map_reliability reliability = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
   hot_tools::Map_summary summary = map_summary(opt, A, B, k, reliability);
+  summary.images_in_filled_holes = images_in_filled_holes(A, B, f);
+  add_reliability_tests(summary, reliability);
+  summary.landmark_order = order;
+  summary.landmark_order_from = chosen.mesh == 0 ? "source" : chosen.mesh == 1 ? "target" : "given";
+  summary.orders_tried = refusals.size() + 1;
   summary.seconds_map = std::chrono::duration<double>(t1 - t0).count();
   summary.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
@@ -726,13 +847,22 @@ int run_map(int argc, char** argv)
     files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g, addressing(B.in)); });
   }
   files.commit();
+  std::cout << "landmark order:";
+  for(std::size_t i : order) std::cout << " " << i;
+  std::cout << " (" << order_origin(chosen);
+  for(const std::string& r : refusals) std::cout << "; " << r;
+  std::cout << ")" << std::endl;
   std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << opt.get("source") << " onto "
             << opt.get("target") << "; wrote " << out << std::endl;
   if(!summary.unreliable.empty())
     std::cerr << "warning: the map cannot resolve the images of " << summary.unreliable.size() << " of the "
-              << num_vertices(A.mesh) << " source vertices (a protrusion without a landmark, squeezed by both embeddings "
-              << "below their disagreement" << (opt.has("report") ? ", listed in " + opt.get("report") : std::string(", --report lists them"))
-              << "): put a landmark at the tip of such a protrusion" << std::endl;
+              << num_vertices(A.mesh) << " source vertices (the map squeezes or stretches them far from an isometry, or double cannot"
+              << " resolve them" << (opt.has("report") ? "; listed in " + opt.get("report") : std::string("; --report lists them"))
+              << "): a protrusion without a landmark is the usual cause, put a landmark at the tip of such a protrusion" << std::endl;
+  if(!summary.images_in_filled_holes.empty())
+    std::cerr << "warning: " << summary.images_in_filled_holes.size() << " of the " << num_vertices(A.mesh)
+              << " source vertices map into holes of the target that --repair closed (not on the target file's surface; "
+              << (opt.has("report") ? "listed in " + opt.get("report") : std::string("--report lists them")) << ")" << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -777,6 +907,8 @@ void embed_collection(const Manifest& entries, Collection& coll)
   const HOT::Error_code ec = coll.embed();
   if(ec == HOT::OK)
     return;
+  if(coll.order_attempts().size() > 1) // (every order tried: the collection's message names each, and why it failed)
+    throw Failure{ec, coll.message()};
   for(std::size_t i = 0; i < N; ++i)
     if(codes[i] != HOT::OK)
       throw Failure{codes[i], entries[i].first + ": " + coll.statistics(i).message};
@@ -785,7 +917,7 @@ void embed_collection(const Manifest& entries, Collection& coll)
       throw Failure{HOT::ERROR_WRONG_PARAMETER, entries[i].first + ": its landmarks run around the boundary the other way than the first mesh's: "
                                                 "the correspondence would reverse orientation"};
   if(ec == HOT::ERROR_CUT_FAILED && coll.order().size() != coll.landmarks(0).size())
-    throw Failure{ec, "the landmark tour could not be computed on the first mesh"};
+    throw Failure{ec, "the landmark tour could not be computed on " + std::string(coll.message().compare(0, 7, "mesh 0:") == 0 ? "the first mesh" : "a mesh")};
   throw Failure{ec, coll.message()};
 }
 
@@ -926,13 +1058,16 @@ int run_collection(int argc, char** argv)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("all-pairs");
-  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "cone-orders", "stage", "shard"}, flags);
+  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "target-genus", "max-handle", "cone-orders", "stage", "shard", "order"}, flags);
   Collection_job job;
   job.manifest_path = opt.get("manifest");
   job.dir = opt.get("out");
   job.all_pairs = opt.has("all-pairs");
   job.repair = parse_repair_options(opt);
+  if(job.repair.repair && job.repair.target_genus < 0)
+    job.repair.target_genus = 0; // (a collection's closed meshes are of genus 0: --repair cuts the handles of the others)
   job.orders = parse_cone_orders(opt);
+  job.order = parse_common_order(opt);
   const std::pair<std::size_t, std::size_t> shard = parse_shard(opt);
   if(opt.has("shard") && !opt.has("stage"))
     throw Usage_error{"--shard needs --stage embed or --stage maps (then --stage merge once)"};
@@ -941,11 +1076,21 @@ int run_collection(int argc, char** argv)
     return run_collection_stage(job, opt.get("stage"), shard);
   Collection coll;
   coll.set_cone_orders(job.orders);
+  coll.set_landmark_order_choice(job.order == "given" ? Collection::Given_landmark_order
+                                 : job.order == "tsp" ? Collection::Tour_of_first_mesh : Collection::Tour_of_any_mesh);
   std::vector<hot_tools::Input_mesh> inputs;
   const HOT::Orbifold_type type = read_collection(job.entries, job.repair, coll, inputs, minimum_landmarks(job.orders));
   embed_collection(job.entries, coll);
   const Collection_maps maps = map_collection(coll, job.all_pairs);
   write_collection_files(job, coll, type, maps, inputs);
+  std::cout << "landmark order:";
+  for(std::size_t i : coll.order()) std::cout << " " << i;
+  const std::vector<Collection::Order_attempt>& tried = coll.order_attempts();
+  std::cout << " (" << (tried.back().mesh < job.size() ? "the tour of mesh " + std::to_string(tried.back().mesh) : std::string("the given order"));
+  for(std::size_t a = 0; a + 1 < tried.size(); ++a)
+    std::cout << "; " << (tried[a].mesh < job.size() ? "the tour of mesh " + std::to_string(tried[a].mesh) : std::string("the given order"))
+              << " was refused by " << tried[a].message;
+  std::cout << ")" << std::endl;
   std::cout << "collection of " << job.size() << " meshes embedded" << (job.all_pairs ? " and mapped pairwise" : "") << "; "
             << maps.triples << " triples checked, cycle consistency " << maps.cycle << "; wrote " << job.dir << std::endl;
   return EXIT_SUCCESS;
@@ -987,7 +1132,7 @@ std::vector<SM_vertex> input_vertices_only(const Surface_mesh& m, const hot_tool
 
 int run_landmarks(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"mesh", "count", "out", "max-hole"}, repair_flags());
+  const Options opt(argc, argv, 2, {"mesh", "count", "out", "max-hole", "target-genus", "max-handle"}, repair_flags());
   const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
   const long k = opt.get_int("count", 1, 100000);
   const hot_tools::Repair_options repair = parse_repair_options(opt);

@@ -31,6 +31,9 @@ hot_cli::Collection_job make_job(const std::string& manifest, const std::string&
   job.repair.max_hole = max_hole;
   job.repair.largest_component = largest_component;
   job.repair.snap_landmarks = snap_landmarks;
+  job.repair.max_hole_given = max_hole != 0.5;
+  if(repair)
+    job.repair.target_genus = 0; // (as the command line's collection --repair: the handles of closed meshes are cut)
   if(!(max_hole >= 0) || !(max_hole <= 1e6))
     fail(HOT::ERROR_WRONG_PARAMETER, "max_hole must be a number >= 0 (a length in bounding box diagonals), got " + std::to_string(max_hole));
   if((largest_component || max_hole != 0.5) && !repair)

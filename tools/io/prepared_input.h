@@ -39,6 +39,8 @@ struct Repair_options
   bool snap_landmarks = false;    ///< --snap-landmarks
   double max_hole = 0.5;          ///< --max-hole (bounding box diagonals)
   bool max_hole_given = false;    ///< --max-hole was given (with landmarks, the loops are otherwise closed whatever their length)
+  long long target_genus = -1;    ///< --target-genus (-1: keep the genus)
+  double max_handle = 0.2;        ///< --max-handle (bounding box diagonals)
 };
 
 /// a mesh file as a job sees it: the file's vertices and how the (prepared) mesh's vertices
@@ -90,7 +92,7 @@ bool needs_no_repair(const Polygon_soup& soup, std::optional<HOT::Orbifold_type>
   if(!polygon_soup_to_mesh(soup, mesh) || !HOT::check_mesh(mesh, required_type, &mi))
     return false;
   if(mi.type == HOT::Sphere_type)
-    return true;
+    return opt.target_genus < 0 || (mi.genus >= 0 && mi.genus <= opt.target_genus); // (else handles to cut)
   if(!landmarks.empty()) { // a landmark inside a disk asks for a sphere: the loop is a hole
     const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> verts(vertices(mesh).begin(), vertices(mesh).end());
     for(std::size_t i : landmarks)
@@ -135,7 +137,17 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
   HOT::Mesh_info& mi = info ? *info : local;
   if(!opt.repair) {
     HOT::Status r = read_and_check_mesh(path, required_type, mesh, &mi);
-    if(!r) return r;
+    if(!r) {
+      switch(r.code) { // the defects the preparation mends: said, with the option
+      case HOT::ERROR_NON_TRIANGULAR_MESH: case HOT::ERROR_NON_MANIFOLD: case HOT::ERROR_SEVERAL_COMPONENTS:
+      case HOT::ERROR_DEGENERATE_FACE: case HOT::ERROR_BOUNDARY_CHORD:
+        r.message += " (--repair mends such meshes)";
+        break;
+      default:
+        break;
+      }
+      return r;
+    }
     for(auto v : vertices(mesh)) {
       const auto& p = get(CGAL::vertex_point, mesh, v);
       in.file_points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
@@ -168,7 +180,8 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
                                                               " is out of range (the file has " + std::to_string(soup.number_of_points()) + " vertices)");
   }
   namespace P = HOT::parameters;
-  const auto np = P::input_landmarks(landmarks, P::keep_largest_component(opt.largest_component));
+  const auto np = P::input_landmarks(landmarks, P::keep_largest_component(opt.largest_component,
+                                     P::target_genus(opt.target_genus, P::maximum_handle_length(opt.max_handle))));
   if(opt.max_hole_given || landmarks.empty()) {
     if(required_type)
       r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep,

@@ -55,7 +55,9 @@ inline void write_repair_json(std::ostream& os, const HOT::Mesh_preparation& p, 
      << ", \"reoriented_faces\": " << p.reoriented_faces << ", \"non_manifold_vertices_split\": " << p.non_manifold_vertices_split
      << ",\n" << indent << " \"polygons_triangulated\": " << p.polygons_triangulated << ", \"triangles_from_polygons\": " << p.triangles_from_polygons
      << ", \"degenerate_faces_removed\": " << p.degenerate_faces_removed << ", \"components_removed\": " << p.components_removed
-     << ", \"component_faces_removed\": " << p.component_faces_removed << ", \"faces_added_by_hole_filling\": " << p.faces_added_by_hole_filling()
+     << ", \"component_faces_removed\": " << p.component_faces_removed << ", \"debris_components_removed\": " << p.debris_components_removed
+     << ", \"faces_added_by_hole_filling\": " << p.faces_added_by_hole_filling()
+     << ", \"landmarks_decided\": " << (p.landmarks_decided ? "true" : "false")
      << ",\n" << indent << " \"filled_holes\": [";
   for(std::size_t i = 0; i < p.filled_holes.size(); ++i) {
     const HOT::Filled_hole& h = p.filled_holes[i];
@@ -66,6 +68,12 @@ inline void write_repair_json(std::ostream& os, const HOT::Mesh_preparation& p, 
   os << "],\n" << indent << " \"split_chords\": [";
   for(std::size_t i = 0; i < p.split_chords.size(); ++i)
     os << (i ? ", " : "") << "[" << p.split_chords[i].first << ", " << p.split_chords[i].second << "]";
+  os << "],\n" << indent << " \"cut_handles\": [";
+  for(std::size_t i = 0; i < p.cut_handles.size(); ++i) {
+    os << (i ? ", " : "") << "{\"length\": " << p.cut_handles[i].length << ", \"vertices\": [";
+    for(std::size_t j = 0; j < p.cut_handles[i].vertices.size(); ++j) os << (j ? ", " : "") << p.cut_handles[i].vertices[j];
+    os << "]}";
+  }
   os << "]}";
 }
 
@@ -213,10 +221,26 @@ struct Map_summary
   std::vector<std::size_t> unreliable;       // file numbers of the source's vertices, increasing
   // per squeezed region of the source: its report, with its collapse vertices as file numbers
   std::vector<HOT::Squeezed_region> regions;
+  // which of map_reliability()'s tests flagged how many of the unreliable vertices (a vertex can
+  // fail several), the map's reference scale and scale noise (Map_reliability); written when
+  // `reliability_tests` is set
+  bool reliability_tests = false;
+  std::size_t unreliable_by_scale = 0, unreliable_by_rounding = 0, unreliable_by_protrusion = 0;
+  double reference_scale = 1, scale_noise = 0;
   std::vector<std::pair<std::size_t, std::size_t> > region_vertices;
   // the distortion of the map over the faces of the source (prepared, with --repair) and its time
   HOT::Map_distortion distortion;
   double seconds_distortion = 0;
+  // the landmark order both meshes were embedded in (positions in the landmark files), whose
+  // it is ("source", "target": its tour; "given") and how many orders were tried (0: not known,
+  // and not reported)
+  std::vector<std::size_t> landmark_order;
+  std::string landmark_order_from;
+  std::size_t orders_tried = 0;
+  // the source's vertices (file numbers, increasing) whose image lies on a face the target's
+  // repair added to close a hole (Mesh_preparation::filled_faces): not a point of the target
+  // file's surface
+  std::vector<std::size_t> images_in_filled_holes;
 };
 
 // Writes the report of `map`.
@@ -226,6 +250,11 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
   os << "{\n  \"source\": \"" << json_escape(m.source_path) << "\",\n  \"target\": \"" << json_escape(m.target_path) << "\",\n"
      << "  \"source_vertices\": " << m.source_vertices << ",\n  \"target_vertices\": " << m.target_vertices << ",\n"
      << "  \"orbifold\": \"" << (m.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"landmarks\": " << m.landmarks << ",\n";
+  if(m.orders_tried > 0) {
+    os << "  \"landmark_order\": [";
+    for(std::size_t i = 0; i < m.landmark_order.size(); ++i) os << (i ? ", " : "") << m.landmark_order[i];
+    os << "],\n  \"landmark_order_from\": \"" << m.landmark_order_from << "\",\n  \"orders_tried\": " << m.orders_tried << ",\n";
+  }
   if(m.source_input && m.source_input->repaired) {
     os << "  \"source_repair\": ";
     write_repair_json(os, m.source_input->prep, "  ");
@@ -254,12 +283,20 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
     if(!r.at_landmark)
       os << ", \"target_vertex\": " << m.region_vertices[i].second << ", \"discrepancy\": " << r.discrepancy
          << ", \"source_size\": " << r.source_size << ", \"target_size\": " << r.target_size
-         << ", \"unresolved\": " << (r.unresolved ? "true" : "false");
+         << ", \"unresolved\": " << (r.unresolved ? "true" : "false") << ", \"scale_disagreement\": " << r.scale_disagreement;
     os << ", \"unreliable_vertices\": " << r.unreliable_vertices << "}";
   }
-  os << (m.regions.empty() ? "" : "\n  ") << "],\n  \"unreliable_vertex_count\": " << m.unreliable.size() << ",\n  \"unreliable_vertices\": [";
+  os << (m.regions.empty() ? "" : "\n  ") << "],\n";
+  if(m.reliability_tests)
+    os << "  \"unreliable_by_test\": {\"scale\": " << m.unreliable_by_scale << ", \"rounding\": " << m.unreliable_by_rounding
+       << ", \"protrusion\": " << m.unreliable_by_protrusion << "}, \"reference_scale\": " << m.reference_scale
+       << ", \"scale_noise\": " << m.scale_noise << ",\n";
+  os << "  \"unreliable_vertex_count\": " << m.unreliable.size() << ",\n  \"unreliable_vertices\": [";
   for(std::size_t i = 0; i < m.unreliable.size(); ++i)
     os << (i ? ", " : "") << m.unreliable[i];
+  os << "],\n  \"images_in_filled_holes_count\": " << m.images_in_filled_holes.size() << ",\n  \"images_in_filled_holes\": [";
+  for(std::size_t i = 0; i < m.images_in_filled_holes.size(); ++i)
+    os << (i ? ", " : "") << m.images_in_filled_holes[i];
   os << "]\n}\n";
 }
 
@@ -300,6 +337,10 @@ struct Collection_report
   HOT::Orbifold_type type = HOT::Sphere_type;
   std::vector<std::size_t> order;
   std::vector<std::pair<std::pair<std::size_t, std::size_t>, double> > pairs; // ((a, b), seconds), a then b increasing
+  // whose the order is ("mesh <i>": its tour; "given") and how many orders were tried (0: not
+  // known, and not reported)
+  std::string order_from;
+  std::size_t orders_tried = 0;
   std::size_t triples = 0;
   double cycle = 0;
 };
@@ -314,7 +355,10 @@ inline void write_collection_report(std::ostream& os, const Collection_report& r
   os << "  ],\n  \"orbifold\": \"" << (r.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"cones\": " << r.order.size()
      << ",\n  \"landmark_order_used\": [";
   for(std::size_t i = 0; i < r.order.size(); ++i) os << (i ? ", " : "") << r.order[i];
-  os << "],\n  \"pairs\": [\n";
+  os << "],\n";
+  if(r.orders_tried > 0)
+    os << "  \"landmark_order_from\": \"" << r.order_from << "\",\n  \"orders_tried\": " << r.orders_tried << ",\n";
+  os << "  \"pairs\": [\n";
   for(std::size_t p = 0; p < r.pairs.size(); ++p)
     os << (p ? ",\n" : "") << "    {\"source\": " << r.pairs[p].first.first << ", \"target\": " << r.pairs[p].first.second
        << ", \"map_seconds\": " << r.pairs[p].second << "}";
@@ -335,6 +379,11 @@ void write_collection_report(std::ostream& os, const std::vector<std::string>& m
                                                    inputs ? &(*inputs)[i] : nullptr));
   r.type = type;
   r.order = coll.order();
+  if(!coll.order_attempts().empty()) {
+    const std::size_t from = coll.order_attempts().back().mesh;
+    r.order_from = from < N ? "mesh " + std::to_string(from) : std::string("given");
+    r.orders_tried = coll.order_attempts().size();
+  }
   for(std::size_t a = 0; a < N; ++a)
     for(std::size_t b = 0; b < N; ++b)
       if(maps.used[a][b])

@@ -38,6 +38,19 @@ struct Filled_hole
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteMainClasses
+a handle cut by `prepare_polygon_soup_for_embedding()` (`target_genus`): the mesh was cut along
+a short non-separating loop and both sides of the cut were closed (two `Filled_hole`s).
+*/
+struct Cut_handle
+{
+  double length = 0;                 ///< the length of the loop, in the mesh's units
+  /// the loop's vertices, in order (output indices, see `Mesh_preparation`: the vertex on the
+  /// right side of the cut; its copy on the left side is an added vertex)
+  std::vector<std::size_t> vertices;
+};
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
 the record of `prepare_polygon_soup_for_embedding()`: every change it made, counted, and the
 addressing of the prepared mesh by the input.
 
@@ -85,6 +98,9 @@ struct Mesh_preparation
   /// the faces of the prepared mesh that fill holes (their positions in `faces()` order),
   /// increasing: a point on them is not a point of the input's surface
   std::vector<std::size_t> filled_faces;
+  /// the handles cut to reach `target_genus` (topological noise: fused fingers, an arm
+  /// touching the body), in the order they were cut
+  std::vector<Cut_handle> cut_handles;
   /// `true` if the landmarks (`input_landmarks`) decided which component is kept and which
   /// boundary loops are holes (see `prepare_polygon_soup_for_embedding()`)
   bool landmarks_decided = false;
@@ -115,7 +131,7 @@ struct Mesh_preparation
   {
     return merged_duplicate_vertices + isolated_vertices + invalid_faces_removed + duplicate_faces_removed +
            reoriented_faces + non_manifold_vertices_split + polygons_triangulated + degenerate_faces_removed +
-           components_removed + filled_holes.size() + split_chords.size() != 0;
+           components_removed + filled_holes.size() + split_chords.size() + cut_handles.size() != 0;
   }
 
   /// one line listing every change, e.g. "filled 2 holes (118 faces added), split 3 boundary
@@ -155,6 +171,13 @@ struct Mesh_preparation
       sep = ", ";
     }
     item(split_chords.size(), "split boundary chords:");
+    if(!cut_handles.empty()) {
+      os << sep << "cut handles: " << cut_handles.size() << " (loops of";
+      for(std::size_t i = 0; i < cut_handles.size() && i < 6; ++i)
+        os << (i ? ", " : " ") << cut_handles[i].vertices.size();
+      os << (cut_handles.size() > 6 ? ", ..." : "") << " vertices, both sides closed)";
+      sep = ", ";
+    }
     return changed() ? os.str() : std::string("no change");
   }
 };

@@ -51,8 +51,17 @@ same feature), embedded into one hyperbolic orbifold with one cone order, so tha
 between any two of them are bijective, seamless, interpolate the landmarks and are
 cycle consistent (the paper's section 7).
 
-Landmarks may be given in a class-wide order: the collection orders them once (the
-paper's tour on the first mesh, for sphere-type meshes) and uses that order for all.
+Landmarks may be given in a class-wide order: the collection orders them once and uses that
+order for all meshes. Sphere-type meshes are cut through the landmarks in the order of one of
+the meshes' tours (the paper's section 7, `compute_landmark_tour()`): the tour whose cut is the
+least longer than each mesh's own best, on the mesh where it is the most so
+(`rank_landmark_tours()`; mesh 0's on ties). A tour that is short on one mesh can run back and
+forth on another and squeeze its embedding below what double resolves; so when a mesh's
+embedding is refused for a reason the order may cause (`is_landmark_order_failure()`), every
+mesh is embedded again in the next candidate's order, and `embed()` fails only when no
+candidate works (`order_attempts()` says which orders were tried and why each failed).
+`set_landmark_order_choice()` restores the tour of mesh 0 alone, or the given order. Disk-type
+meshes keep the given order (their landmarks follow the boundary).
 Embeddings are computed by `embed()`, in parallel with `ConcurrencyTag = CGAL::Parallel_tag`
 when CGAL is linked with TBB (the results do not depend on the number of threads); maps
 are computed on demand and cached, or in parallel by `compute_maps()` and `compute_all_maps()`.
@@ -107,6 +116,25 @@ public:
   /// the progress callback: called from one thread at a time (the collection serialises the calls)
   typedef std::function<void(const Progress&)> Progress_callback;
 
+  /// how `embed()` orders the landmarks of sphere-type meshes (disk type: always as given)
+  enum Landmark_order_choice
+  {
+    Tour_of_any_mesh,   ///< (default) the meshes' tours, best first by `rank_landmark_tours()`, the next one tried when an embedding is refused
+    Tour_of_first_mesh, ///< the tour of mesh 0 only (the paper's section 7), not another one when it is refused
+    Given_landmark_order ///< the class-wide order as given
+  };
+
+  /// an order `embed()` tried, and how it went
+  struct Order_attempt
+  {
+    std::vector<std::size_t> order;  ///< landmark `order[c]` of every mesh at cone `c`
+    /// the mesh whose tour it is (the first one if several), or `number_of_meshes()` for the given order
+    std::size_t mesh;
+    double longest_ratio;            ///< see `Landmark_order_candidate` (1 for the given order)
+    Error_code code;                 ///< `OK`, or the first failure
+    std::string message;             ///< the first failure's reason, naming the mesh
+  };
+
   /// adds a mesh (copied) with its landmarks in the class-wide order; returns its index
   std::size_t add_mesh(const TriangleMesh& mesh, const std::vector<vertex_descriptor>& landmarks)
   {
@@ -139,6 +167,13 @@ public:
   const Embedding_statistics& statistics(std::size_t i) const { return items_[i].stats; }
   /// the cone order used: landmark `order()[c]` of every mesh is at cone `c`
   const std::vector<std::size_t>& order() const { return order_; }
+  /// the orders `embed()` tried, in turn (the last one is `order()`); after a success the last
+  /// one has code `OK`
+  const std::vector<Order_attempt>& order_attempts() const { return attempts_; }
+  /// sets how `embed()` orders the landmarks (default `Tour_of_any_mesh`); set before `embed()`
+  void set_landmark_order_choice(Landmark_order_choice choice) { order_choice_ = choice; }
+  /// how `embed()` orders the landmarks
+  Landmark_order_choice landmark_order_choice() const { return order_choice_; }
   /// the one-line reason of the last failure
   const std::string& message() const { return message_; }
   /// the order \f$p\f$ of the cone of every landmark (cone angle \f$2\pi/p\f$), in the class-wide
@@ -151,7 +186,10 @@ public:
   /// sets the progress callback (an empty function: none)
   void set_progress_callback(const Progress_callback& callback) { progress_ = callback; }
 
-  /// embeds every mesh; returns `OK` or the first failure (see `message()`)
+  /// embeds every mesh in one landmark order (see the class's description and
+  /// `set_landmark_order_choice()`), trying the next candidate order when an embedding is
+  /// refused for a reason the order may cause; returns `OK` or the failure (see `message()`:
+  /// when several orders were tried, each of them and its first failure)
   Error_code embed()
   {
     Orbifold_type type = Sphere_type;
@@ -159,10 +197,23 @@ public:
     if(ec != OK)
       return ec;
     type_ = type;
-    ec = compute_order();
+    std::vector<Order_attempt> candidates;
+    ec = compute_orders(candidates);
     if(ec != OK)
       return ec;
-    ec = embed_all();
+    attempts_.clear();
+    for(const Order_attempt& c : candidates) {
+      order_ = c.order;
+      bool order_failure = false;
+      ec = embed_all(order_failure);
+      attempts_.push_back(c);
+      attempts_.back().code = ec;
+      attempts_.back().message = ec == OK ? std::string() : message_;
+      if(ec == OK || !order_failure)
+        break;
+    }
+    if(ec != OK && attempts_.size() > 1)
+      message_ = attempts_message();
     if(ec != OK)
       return ec;
     locators_.clear();
@@ -372,30 +423,67 @@ private:
     return o;
   }
 
-  // the cone order: the paper's tour on mesh 0 (sphere type), the given order (disk type)
-  Error_code compute_order()
+  // the orders to try, best first: the meshes' tours ranked by rank_landmark_tours() (sphere
+  // type; only mesh 0's with Tour_of_first_mesh), the given order (disk type, Given_landmark_order)
+  Error_code compute_orders(std::vector<Order_attempt>& candidates)
   {
-    // (the pipeline's landmark stage on mesh 0: the tour for sphere type, else as given)
-    const TriangleMesh& m0 = *items_[0].mesh;
-    if(!orders_.empty() && orders_.size() != items_[0].landmarks.size()) {
-      message_ = std::to_string(orders_.size()) + " cone orders are given for " + std::to_string(items_[0].landmarks.size()) +
+    const std::size_t N = items_.size(), k = items_[0].landmarks.size();
+    if(!orders_.empty() && orders_.size() != k) {
+      message_ = std::to_string(orders_.size()) + " cone orders are given for " + std::to_string(k) +
                  " landmarks (one per landmark is needed)";
       return ERROR_WRONG_PARAMETER;
     }
-    Status r = type_ == Sphere_type ? check_landmark_vertices(m0, items_[0].landmarks, type_,
-                                                              orders_.empty() ? minimum_number_of_landmarks : 3)
-                                    : Status();
-    std::vector<vertex_descriptor> ordered;
-    if(r)
-      r = internal::order_landmarks(m0, get(CGAL::vertex_point, m0), items_[0].landmarks, type_, Tsp_order, ordered,
-                                    order_);
-    if(!r) { message_ = "mesh 0: " + r.message; return r.code; }
+    Order_attempt given{std::vector<std::size_t>(k), N, 1., OK, std::string()};
+    for(std::size_t i = 0; i < k; ++i) given.order[i] = i;
+    if(type_ != Sphere_type || order_choice_ == Given_landmark_order) {
+      candidates.assign(1, given);
+      return OK;
+    }
+    // (the pipeline's landmark checks: on mesh 0 they fail here; another mesh whose landmarks
+    // fail them, or are not all connected, leaves mesh 0's tour alone, and its embedding then
+    // says why it is refused)
+    std::vector<std::vector<std::vector<double> > > D;
+    for(std::size_t i = 0; i < (order_choice_ == Tour_of_first_mesh ? 1 : N); ++i) {
+      const TriangleMesh& m = *items_[i].mesh;
+      const Status r = check_landmark_vertices(m, items_[i].landmarks, type_, orders_.empty() ? minimum_number_of_landmarks : 3);
+      if(!r && i == 0) { message_ = "mesh 0: " + r.message; return r.code; }
+      if(r)
+        D.push_back(compute_landmark_distances(m, items_[i].landmarks, get(CGAL::vertex_point, m)));
+      if(!r || (i > 0 && !internal::is_finite_distance_matrix(D.back()))) {
+        D.resize(1);
+        break;
+      }
+    }
+    const std::vector<Landmark_order_candidate> ranked = rank_landmark_tours(D);
+    if(ranked.empty()) {
+      order_.clear();
+      message_ = "mesh 0: the landmark tour could not be computed";
+      return ERROR_CUT_FAILED;
+    }
+    candidates.clear();
+    for(const Landmark_order_candidate& c : ranked)
+      candidates.push_back(Order_attempt{c.order, c.mesh, c.longest_ratio, OK, std::string()});
     return OK;
   }
 
-  // the embeddings, in parallel with Parallel_tag; the first failure in mesh order
-  Error_code embed_all()
+  // the message when no order works: each order tried and why it failed
+  std::string attempts_message() const
   {
+    std::string m = "no landmark order works for every mesh (" + std::to_string(attempts_.size()) + " tried):";
+    for(std::size_t a = 0; a < attempts_.size(); ++a) {
+      const Order_attempt& t = attempts_[a];
+      m += (a ? "; " : " ") + (t.mesh < items_.size() ? "mesh " + std::to_string(t.mesh) + "'s tour (" : std::string("the given order ("));
+      for(std::size_t i = 0; i < t.order.size(); ++i) m += (i ? " " : "") + std::to_string(t.order[i]);
+      m += "): " + t.message;
+    }
+    return m;
+  }
+
+  // the embeddings in the order order_, in parallel with Parallel_tag; the first failure in
+  // mesh order, and whether every failure is one another order may avoid
+  Error_code embed_all(bool& order_failure)
+  {
+    order_failure = false;
     const std::size_t N = items_.size();
     std::vector<Error_code> codes(N, OK);
     const std::vector<int> cut_orders = ordered_orders(); // (empty: all 2)
@@ -426,8 +514,12 @@ private:
       report(Progress::Mesh_embedded, i, i, seconds_since(t0), codes[i]);
     };
     for_each_index(N, run);
+    order_failure = true;
+    for(std::size_t i = 0; i < N; ++i)
+      order_failure = order_failure && (codes[i] == OK || is_landmark_order_failure(codes[i]));
     for(std::size_t i = 0; i < N; ++i)
       if(codes[i] != OK) { message_ = "mesh " + std::to_string(i) + ": " + items_[i].stats.message; return codes[i]; }
+    order_failure = false;
     for(std::size_t i = 1; i < N; ++i)
       if(items_[i].stats.landmark_order_reversed != items_[0].stats.landmark_order_reversed) {
         message_ = "mesh " + std::to_string(i) + ": its landmarks run around the boundary the other way than mesh 0's";
@@ -438,6 +530,8 @@ private:
 
   std::vector<Item> items_;
   std::vector<std::size_t> order_;
+  std::vector<Order_attempt> attempts_;
+  Landmark_order_choice order_choice_ = Tour_of_any_mesh;
   std::vector<int> orders_; // per landmark, in the class-wide order (empty: all 2)
   Orbifold_type type_ = Sphere_type;
   bool embedded_ = false;

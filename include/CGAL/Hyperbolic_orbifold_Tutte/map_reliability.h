@@ -28,8 +28,9 @@
 #include <vector>
 
 /// \file map_reliability.h
-/// Which vertices of a surface map cannot be trusted: the squeezed regions (protrusions
-/// without a landmark) that the two embeddings collapse below their own disagreement.
+/// Which vertices of a surface map cannot be trusted: where the map shrinks or stretches
+/// lengths far from what an isometry would (a protrusion without a landmark, collapsed by the
+/// two embeddings below their own disagreement), or where `double` cannot resolve it.
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
@@ -41,6 +42,30 @@ the thresholds of `map_reliability()`.
 */
 struct Map_reliability_options
 {
+  /// \name The scale test (a map that shrinks or stretches a neighbourhood)
+  //@{
+  /// a vertex is unreliable when the map's 3D scale at it (the ratio of the two embeddings'
+  /// conformal factors at the vertex and at its image) differs from the reference scale (the
+  /// square root of the ratio of the areas of `B` and `A`) by more than this factor, either way
+  /// (the absolute natural logarithm of the ratio above `std::log(scale_factor)`)
+  double scale_factor = 6;
+  /// rounds of smoothing of the logarithm of each embedding's conformal factor over the
+  /// one-rings (area-weighted mean of a vertex and its neighbours) before the scale test: the
+  /// per-vertex factor of a sliver or of a noisy vertex is itself noisy
+  int smoothing_rounds = 2;
+  //@}
+
+  /// \name The rounding test (a neighbourhood below what `double` resolves)
+  //@{
+  /// a vertex is unresolved when its hyperbolic one-ring size in `A`'s embedding, or the size of
+  /// the face of `B` its image lies in, is below this many units in the last place of `double`
+  /// at its position (converted to a hyperbolic length); it is unreliable unless it lies in a
+  /// squeezed region holding a landmark, which both embeddings collapse onto the same cone
+  double rounding_ulps = 16;
+  //@}
+
+  /// \name The protrusion test (squeezed regions without a landmark)
+  //@{
   /// a vertex is squeezed when the hyperbolic length of its edges per unit of 3D length is
   /// below this fraction of the mesh's average (the square root of the sum of the squared
   /// hyperbolic edge lengths over the sum of the squared 3D edge lengths)
@@ -48,12 +73,19 @@ struct Map_reliability_options
   /// a squeezed region is unresolved when the distance between the point it collapses to
   /// in the source's embedding, carried to the target, and the point the target's region
   /// collapses to exceeds this many times the larger hyperbolic one-ring size of the two
-  /// collapse vertices (below it the two differ by about a triangle: an ordinary offset)
+  /// collapse vertices (below it the two differ by about a triangle: an ordinary offset), and
+  /// the map fails the scale or the rounding test at its collapse vertex (the map does collapse there)
   double noise_factor = 4;
   /// in an unresolved region, a vertex is unreliable when its uncertainty (how far its
   /// image on the target moves when the two collapse points are made to correspond)
-  /// exceeds this fraction of the target's bounding-box diagonal
+  /// exceeds this fraction of the target's bounding-box diagonal, its scale disagreement
+  /// exceeds `noise_multiple` times the scale noise of the map (see `Map_reliability::scale_noise`),
+  /// and it lies on the protrusion in both embeddings (the basins of the two collapse
+  /// vertices, see `map_reliability()`; no threshold)
   double error_fraction = 0.01;
+  /// see `error_fraction`
+  double noise_multiple = 3;
+  //@}
 };
 
 /*!
@@ -71,7 +103,8 @@ struct Squeezed_region
   double discrepancy = 0;             ///< hyperbolic distance between the image of `source_vertex` and `target_vertex` in `B`'s embedding
   double source_size = 0;             ///< hyperbolic one-ring size of `source_vertex` in `A`'s embedding
   double target_size = 0;             ///< hyperbolic one-ring size of `target_vertex` in `B`'s embedding
-  bool unresolved = false;            ///< `discrepancy` exceeds `noise_factor` times the larger size
+  bool unresolved = false;            ///< `discrepancy` exceeds `noise_factor` times the larger size, and the map fails the scale or rounding test at `source_vertex`
+  double scale_disagreement = 0;      ///< `Map_reliability::scale_disagreement` at `source_vertex` (not for a region at a landmark)
   std::size_t unreliable_vertices = 0; ///< the vertices flagged in this region
 };
 
@@ -87,9 +120,27 @@ struct Map_reliability
   /// the squeezed regions of `A` (connected sets of squeezed vertices)
   std::vector<Squeezed_region> regions;
   /// per vertex of `A`, in `vertices(A)` order, its uncertainty (a length on `B`, see
-  /// `map_reliability()`) if it was checked: the flagged vertices and their neighbours; zero
-  /// for the others
+  /// `map_reliability()`) if it was checked by the protrusion test: the vertices it flagged
+  /// and those of their neighbours on the protrusion whose scale disagrees beyond the noise;
+  /// zero for the others
   std::vector<double> uncertainty;
+  /// per vertex of `A`, in `vertices(A)` order, the natural logarithm of the map's 3D scale
+  /// at it over `reference_scale` (negative: the map shrinks its neighbourhood); 0 for a
+  /// vertex not located or whose conformal factors are not resolved (see `map_reliability()`)
+  std::vector<double> scale_disagreement;
+  /// the reference 3D scale of the map: the square root of the ratio of the areas of `B` and
+  /// `A` (what a map between isometric surfaces scales every length by)
+  double reference_scale = 1;
+  /// the scale noise of the map: 1.4826 times the median over the vertices of the absolute
+  /// difference between a vertex's scale disagreement and the mean of its neighbours' (the
+  /// standard deviation of Gaussian noise on it; the variation along the surface does not count)
+  double scale_noise = 0;
+  /// the vertices flagged by the scale test (a vertex can fail several tests)
+  std::size_t scale_flagged = 0;
+  /// the vertices flagged by the rounding test
+  std::size_t rounding_flagged = 0;
+  /// the vertices flagged by the protrusion test
+  std::size_t protrusion_flagged = 0;
 };
 
 namespace internal {
@@ -98,7 +149,9 @@ namespace internal {
 // hyperbolic length of its edges per unit of 3D length, root mean square over the edges of
 // its faces) and the hyperbolic one-ring size (its longest edge); the squeezed regions
 // (components of rho < squeeze_ratio x mean), and which of their vertices are cones (a
-// corner at a corner of the tile)
+// corner at a corner of the tile); the logarithm of rho smoothed over the one-rings (NaN where
+// rho is not resolved), and whether the one-ring is below `rounding_ulps` units in the last
+// place of double at the vertex (as a hyperbolic length)
 template <class TriangleMesh>
 struct Embedding_scale
 {
@@ -109,15 +162,17 @@ struct Embedding_scale
 
   std::vector<vertex_descriptor> verts;
   Dense_index<vertex_descriptor> index;
-  std::vector<double> rho, size;
-  std::vector<char> cone;
+  std::vector<double> rho, size, log_rho;
+  double total_area = 0; // the 3D area of the mesh
+  std::vector<char> cone, unresolved;
   std::vector<std::size_t> region;    // region of each squeezed vertex (npos: not squeezed)
   std::vector<std::size_t> collapse;  // per region: the cone in it, else its vertex of least rho
   std::vector<std::size_t> region_size;
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
   template <class HalfedgeUVMap, class VertexPointMap, class Locator>
-  Embedding_scale(const TriangleMesh& tm, HalfedgeUVMap uv, VertexPointMap vpm, const Locator& loc, double squeeze_ratio)
+  Embedding_scale(const TriangleMesh& tm, HalfedgeUVMap uv, VertexPointMap vpm, const Locator& loc, double squeeze_ratio,
+                  int smoothing_rounds = 0, double rounding_ulps = 0)
     : index(vertices(tm))
   {
     typedef typename Locator::Point_2 Point_2;
@@ -133,11 +188,14 @@ struct Embedding_scale
     size.assign(n, 0.0);
     cone.assign(n, 0);
     // per vertex and face, the edge from the previous corner (each edge of a vertex once)
-    std::vector<double> sh(n, 0.0), s3(n, 0.0);
+    std::vector<double> sh(n, 0.0), s3(n, 0.0), area(n, 0.0), ulp(n, 0.0);
     for(face_descriptor f : faces(tm)) {
       halfedge_descriptor h = halfedge(f, tm);
       Point_2 p = point(h);
       const halfedge_descriptor first = h;
+      const double a3 = std::sqrt(CGAL::to_double(CGAL::squared_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)),
+                                                                       get(vpm, target(next(h, tm), tm)))));
+      total_area += a3;
       do {
         const halfedge_descriptor g = next(h, tm);
         const Point_2 q = point(g);
@@ -146,9 +204,40 @@ struct Embedding_scale
         sh[i] += dh * dh;
         s3[i] += CGAL::to_double(CGAL::squared_distance(get(vpm, target(g, tm)), get(vpm, target(h, tm))));
         size[i] = (std::max)(size[i], dh);
+        area[i] += a3;
+        // the spacing of double at q, as a hyperbolic length (the metric 2 |dz| / (1 - |z|^2))
+        const double x = CGAL::to_double(q.x()), y = CGAL::to_double(q.y()), r2 = x * x + y * y;
+        const double spacing = std::numeric_limits<double>::epsilon() * (std::max)((std::max)(std::abs(x), std::abs(y)), 1e-300);
+        ulp[i] = (std::max)(ulp[i], r2 < 1 ? 2 * spacing / (1 - r2) : std::numeric_limits<double>::infinity());
         h = g;
         p = q;
       } while(h != first);
+    }
+    unresolved.assign(n, 0);
+    log_rho.assign(n, std::numeric_limits<double>::quiet_NaN());
+    for(std::size_t i = 0; i < n; ++i) {
+      unresolved[i] = rounding_ulps > 0 && !(size[i] >= rounding_ulps * ulp[i]);
+      if(!unresolved[i] && s3[i] > 0 && sh[i] > 0 && std::isfinite(sh[i]))
+        log_rho[i] = 0.5 * std::log(sh[i] / s3[i]);
+    }
+    for(int round = 0; round < smoothing_rounds; ++round) {
+      std::vector<double> smoothed(n, std::numeric_limits<double>::quiet_NaN());
+      for(std::size_t i = 0; i < n; ++i) {
+        if(std::isnan(log_rho[i]))
+          continue;
+        double sum = area[i] * log_rho[i], weight = area[i];
+        const halfedge_descriptor h0 = halfedge(verts[i], tm);
+        if(h0 != GT::null_halfedge())
+          for(vertex_descriptor w : vertices_around_target(h0, tm)) {
+            const std::size_t k = index(w);
+            if(!std::isnan(log_rho[k])) {
+              sum += area[k] * log_rho[k];
+              weight += area[k];
+            }
+          }
+        smoothed[i] = weight > 0 ? sum / weight : log_rho[i];
+      }
+      log_rho.swap(smoothed);
     }
     double total_h = 0, total_3 = 0;
     for(std::size_t i = 0; i < n; ++i)
@@ -214,6 +303,34 @@ struct Embedding_scale
     }
     return collapse[region[i]];
   }
+
+  // descend(), memoized in `memo` (npos: not known yet) for every vertex of the walk
+  std::size_t basin(const TriangleMesh& tm, std::size_t i, std::vector<std::size_t>& memo) const
+  {
+    if(memo[i] != npos)
+      return memo[i];
+    std::vector<std::size_t> path;
+    std::size_t end = i;
+    while(memo[end] == npos && !squeezed(end)) {
+      path.push_back(end);
+      const halfedge_descriptor h0 = halfedge(verts[end], tm);
+      std::size_t best = end;
+      if(h0 != GT::null_halfedge())
+        for(vertex_descriptor w : vertices_around_target(h0, tm)) {
+          const std::size_t k = index(w);
+          if(rho[k] < rho[best])
+            best = k;
+        }
+      if(best == end)
+        break;
+      end = best;
+    }
+    const std::size_t result = memo[end] != npos ? memo[end] : (squeezed(end) ? collapse[region[end]] : end);
+    for(std::size_t j : path)
+      memo[j] = result;
+    memo[i] = result;
+    return result;
+  }
 };
 
 } // namespace internal
@@ -222,51 +339,85 @@ struct Embedding_scale
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
 finds the vertices of `A` whose image under the vertex map `locations` (computed by
-`map_vertices(A, uvA, locB)`) cannot be trusted, from the two embeddings alone.
+`map_vertices(A, uvA, locB)`) cannot be trusted, from the two embeddings alone: where the map
+is not what a map between (nearly) isometric surfaces would be, or where the embeddings do not
+resolve it. Every quantity is measured on the two embeddings and the two meshes; none is
+relative to a mesh average, so varied resolution, tiny triangles and noise (scans) do not move
+the thresholds. A vertex is unreliable when it fails one of three tests:
 
-A protrusion without a landmark is squeezed by the embedding exponentially with its length
-(a tube of radius 1 by a factor e per unit of length) onto a point of the disk. The two
-embeddings squeeze corresponding protrusions onto slightly different points; where the
-images of `A`'s vertices are closer to their collapse point than the two collapse points
-are to each other, the map cannot resolve them: it sends them all to about one place of
-`B` (for a tube, one ring near its base). The criterion:
+1. **Scale.** The conformal factor of a vertex in an embedding is the hyperbolic length of its
+   edges per unit of their 3D length (root mean square over the edges of its faces); its
+   logarithm is smoothed over the one-rings (`options.smoothing_rounds` rounds of area-weighted
+   means: slivers and noisy vertices have noisy factors). The map's 3D scale at a vertex is
+   its factor in `A`'s embedding over `B`'s factor at its image (interpolated in the face of
+   `B` it lies in, in logarithm): how much the map stretches lengths there. A map between
+   isometric surfaces is an isometry exactly where it scales every length by the ratio of their
+   sizes, the reference scale \f$\sqrt{\mathrm{area}(B)/\mathrm{area}(A)}\f$. The vertex fails when
+   the map's scale differs from the reference by more than `options.scale_factor` either way:
+   the map squeezes a neighbourhood of `A` into a part of `B` that many times smaller (the
+   collapse of a protrusion without a landmark: most of the tube of `A` lands on a ring of `B`),
+   or stretches it. `Map_reliability::scale_disagreement` holds the logarithm of the ratio.
+2. **Rounding.** The vertex's one-ring in `A`'s embedding, or a corner's one-ring of the face
+   of `B` its image lies in, is smaller than `options.rounding_ulps` units in the last place of
+   `double` at its position (as a hyperbolic length): the embedding cannot resolve where it
+   is. Not counted where both embeddings collapse the neighbourhood onto a landmark's cone (a
+   squeezed region, as in 3., holding a landmark): the cone is the same exact point in both,
+   and the charts around cone images resolve the map there.
+3. **Protrusion.** A vertex is squeezed when its conformal factor is below
+   `options.squeeze_ratio` times the mesh's average; the squeezed regions are the connected
+   sets of squeezed vertices. A region collapses onto a landmark's cone if it holds a landmark
+   (a vertex with a corner at a corner of the tile); such regions are not checked. For
+   another, its collapse vertex is its vertex of least conformal factor; the image in `B`'s
+   embedding of that vertex lies in a squeezed region of `B` (or the walk down `B`'s conformal
+   factor from it reaches one, or a local minimum), whose collapse vertex is found likewise.
+   The discrepancy \f$\delta\f$ is the hyperbolic distance between the two points. The region
+   is unresolved when \f$\delta\f$ exceeds `options.noise_factor` times the larger hyperbolic
+   one-ring size of the two collapse vertices *and* the map fails the scale or the rounding
+   test at the collapse vertex (it does collapse there: a squeezed region that a sliver or a
+   noisy vertex makes, and that the map carries at the right scale, is not one). In an
+   unresolved region, the uncertainty of a vertex is how far (in 3D, on `B`) its image moves
+   when the isometry of the disk that takes the image of `A`'s collapse point onto `B`'s (a
+   translation by \f$\delta\f$) is applied to it before it is located: for a vertex far from
+   the collapse point that is \f$\delta\f$ over its conformal factor; the vertices closer to it
+   than \f$\delta\f$ are sent near `B`'s collapse point instead of a ring near the base. The
+   vertices whose uncertainty exceeds `options.error_fraction` times `B`'s bounding-box diagonal
+   are flagged, found from the collapse vertex outwards along the edges, through the vertices
+   whose scale disagreement exceeds `options.noise_multiple` times the map's scale noise
+   (`Map_reliability::scale_noise`, the fluctuation of the scale disagreement between
+   neighbours) and that lie on the protrusion in both embeddings: the vertex is in the basin
+   of `A`'s collapse vertex (the walk from it to its neighbour of least conformal factor,
+   repeated, reaches the region of that collapse vertex) and its image is in the basin of
+   `B`'s collapse vertex (the same walk on `B` from the corner nearest to the image reaches
+   `B`'s). The translation is a model of the map on the collapsed protrusion only: the part of
+   each surface that its embedding squeezes towards the collapse point (its conformal factor
+   decreases all the way there). The search does not go on where the map's scale is as
+   expected, nor past the rim of either basin, where the conformal factor rises again towards
+   another squeezed region or a local minimum: there the surface is not collapsed onto this
+   point, and moving its image by the translation says nothing about its error. The basins
+   need no threshold (a vertex of a smooth protrusion's tube descends to its tip); on a noisy
+   mesh they are cut by the local minima of the noisy conformal factor, which keeps the search
+   near the collapse point, where the model holds.
+   Measured (`bench_reliability`, TOSCA wolf 2 -> 1 with a region of slivers and noise of
+   0.05% of the diagonal): the search restricted to `A`'s basin flags 5.7% of the vertices,
+   restricted to both basins 4.99% (before: 9.75%), all of the worst 1% flagged either way;
+   every flagged vertex there is more than 1% of the diagonal off.
 
-1. In each embedding, the conformal factor of a vertex is the hyperbolic length of its
-   edges per unit of their 3D length (root mean square over the edges of its faces); a
-   vertex is squeezed when that is below `options.squeeze_ratio` times the mesh's average.
-   The squeezed regions are the connected sets of squeezed vertices. A region collapses
-   onto a landmark's cone if it holds a landmark (a vertex with a corner at a corner of
-   the tile), otherwise onto its vertex of least conformal factor.
-2. For each squeezed region of `A` that holds no landmark (both embeddings collapse a region
-   with a landmark onto the same cone, exactly, and it is not checked further): the image in
-   `B`'s embedding of its collapse vertex, the squeezed region of `B` that image lies in (if
-   it is in none, the first squeezed region, or local minimum, reached by walking down `B`'s
-   conformal factor from it), and that region's collapse vertex. The discrepancy
-   \f$\delta\f$ is the hyperbolic distance between the two points. The region is unresolved
-   when \f$\delta\f$ exceeds `options.noise_factor` times the larger hyperbolic one-ring
-   size of the two collapse vertices (otherwise the embeddings agree there up to about a
-   triangle).
-3. In an unresolved region, the uncertainty of a vertex is how far (in 3D, on `B`) its
-   image moves when the isometry of the disk that takes the image of `A`'s collapse point
-   onto `B`'s (a translation by \f$\delta\f$, no rotation there) is applied to it before
-   it is located: the map that makes the two collapse points correspond against the one
-   computed. For a vertex far from the collapse point that is \f$\delta\f$ over its
-   conformal factor; the vertices closer to it than \f$\delta\f$ are sent near `B`'s collapse
-   point instead of a ring near the base. The vertices whose uncertainty exceeds
-   `options.error_fraction` times `B`'s bounding-box diagonal are flagged, found from the
-   collapse vertex outwards along the edges (the neighbours of a flagged vertex are checked).
-
-On a capsule mapped onto a bent copy of itself without a landmark at its tip, the
-uncertainty of the flagged vertices is within a few percent of their actual error (vertex
-`i` corresponds to vertex `i`); see the manual for the measurements. Limits: a protrusion
-with a landmark part way along it and none at its tip counts as collapsing onto that
-landmark's cone and is not flagged; protrusions joined through a squeezed part form one
-region, and only its deepest point is checked; where the collapse vertex of `B` lies on the
-cut, the discrepancy is measured to the nearest of its corners; the uncertainty assumes that
-the two collapse points correspond (the tips of two protrusions of different lengths do, but
-a protrusion that has no counterpart on `B` is judged against whatever region its tip is
-sent to); errors of the map that have other causes (a large deformation between `A` and
-`B`) are not estimated.
+What it guarantees, measured against ground truth (vertex `i` of `A` corresponds to vertex `i`
+of `B`; `benchmark/bench_reliability.cpp`, tests `test_maps.unreliable_vertices_of_*` and
+`test_maps.reliability_of_good_maps_between_scan_like_copies`): on capsules mapped onto bent
+copies without a landmark at the tip, every vertex off by more than 5% of the diagonal is
+flagged, no vertex of the landmark cap is, and the unflagged vertices are within 2% of the
+diagonal; on good maps (mean error under 1% of the diagonal) of TOSCA's wolves (7 landmarks)
+and of noisy, twisted or sliver-refined copies of hand and bull, at most 5% of the vertices are
+flagged and the flagged vertices hold more than half (mostly all) of the worst 1% (the closest
+case: a wolf with a region of slivers and noise, 4.99% flagged; its map has 9.7% of the vertices
+more than 2% of the diagonal off, and the flag keeps the worst of them). Limits: errors that
+keep the map's scale (a rotation about a landmark, a slide along a tube of constant width, a
+left-right swap) are not seen; between surfaces that are not nearly isometric the scale test
+flags where their shapes differ by more than `options.scale_factor` (that is what a
+correspondence there cannot be sure of); protrusions joined through a squeezed part form one
+region, and only its deepest point is checked by the protrusion test; where the collapse vertex
+of `B` lies on the cut, the discrepancy is measured to the nearest of its corners.
 
 \tparam TriangleMeshA a model of `FaceGraph` and `VertexListGraph`
 \tparam HalfedgeUVMapA a model of `ReadablePropertyMap` from the halfedges of `A` to a point type with `x()` and `y()`
@@ -313,21 +464,99 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
   Map_reliability result;
   const auto vpmA = choose_parameter(get_parameter(npA, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, A));
   const auto vpmB = choose_parameter(get_parameter(npB, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, B));
-  const internal::Embedding_scale<TriangleMeshA> a(A, uvA, vpmA, locB, options.squeeze_ratio);
-  const internal::Embedding_scale<TriangleMeshB> b(B, uvB, vpmB, locB, options.squeeze_ratio);
-  result.uncertainty.assign(a.verts.size(), 0.0);
-  if(locations.size() != a.verts.size() || !locB.is_valid())
+  const internal::Embedding_scale<TriangleMeshA> a(A, uvA, vpmA, locB, options.squeeze_ratio, options.smoothing_rounds, options.rounding_ulps);
+  const internal::Embedding_scale<TriangleMeshB> b(B, uvB, vpmB, locB, options.squeeze_ratio, options.smoothing_rounds, options.rounding_ulps);
+  const std::size_t n = a.verts.size();
+  result.uncertainty.assign(n, 0.0);
+  result.scale_disagreement.assign(n, 0.0);
+  if(locations.size() != n || !locB.is_valid())
     return result;
 
+  // 1. the scale test: the map's 3D scale at each located vertex, rho_A / rho_B(image) (the
+  // image's log rho interpolated in its face), against the reference; and the rounding test
+  std::vector<char> scale_fails(n, 0), rounding_fails(n, 0);
+  {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> lambda(n, nan);
+    for(std::size_t i = 0; i < n; ++i) {
+      const typename Locator::Location& l = locations[i];
+      if(!l.success)
+        continue;
+      bool image_unresolved = false, image_at_landmark = false;
+      double log_rho_b = 0;
+      for(int j = 0; j < 3; ++j) {
+        const std::size_t v = locB.corner_vertex_index(l.face_index, j);
+        image_unresolved = image_unresolved || b.unresolved[v];
+        image_at_landmark = image_at_landmark || (b.squeezed(v) && b.cone[b.collapse[b.region[v]]]);
+        log_rho_b += l.barycentric[j] * b.log_rho[v];
+      }
+      const bool at_landmark = a.squeezed(i) && a.cone[a.collapse[a.region[i]]];
+      // below double in either embedding: its image is not resolved, unless both embeddings
+      // collapse its neighbourhood onto a landmark's cone (where the charts resolve it)
+      if(a.unresolved[i] || image_unresolved) {
+        rounding_fails[i] = !(at_landmark || image_at_landmark);
+        continue;
+      }
+      lambda[i] = a.log_rho[i] - log_rho_b;
+    }
+    // the reference: the ratio of the sizes of the two surfaces (sqrt of the ratio of their
+    // areas), what a map between isometric surfaces scales every length by (a median over the
+    // vertices would follow a protrusion that most vertices are on)
+    const double reference = (a.total_area > 0 && b.total_area > 0) ? 0.5 * std::log(b.total_area / a.total_area) : 0.0;
+    // the noise: the fluctuation of lambda between neighbours (robust standard deviation of
+    // lambda minus the mean over its neighbours), not its variation along the surface
+    {
+      std::vector<double> fluctuation;
+      for(std::size_t i = 0; i < n; ++i) {
+        if(!std::isfinite(lambda[i]))
+          continue;
+        double sum = 0;
+        std::size_t count = 0;
+        for(vertex_descriptor_A w : vertices_around_target(halfedge(a.verts[i], A), A))
+          if(std::isfinite(lambda[a.index(w)])) {
+            sum += lambda[a.index(w)];
+            ++count;
+          }
+        if(count > 0)
+          fluctuation.push_back(std::abs(lambda[i] - sum / double(count)));
+      }
+      if(!fluctuation.empty()) {
+        std::nth_element(fluctuation.begin(), fluctuation.begin() + fluctuation.size() / 2, fluctuation.end());
+        result.scale_noise = 1.4826 * fluctuation[fluctuation.size() / 2];
+      }
+    }
+    result.reference_scale = std::exp(reference);
+    const double limit = std::log(options.scale_factor);
+    for(std::size_t i = 0; i < n; ++i)
+      if(std::isfinite(lambda[i])) {
+        result.scale_disagreement[i] = lambda[i] - reference;
+        scale_fails[i] = std::abs(result.scale_disagreement[i]) > limit;
+      }
+  }
+
+  // 2. the protrusion test
   CGAL::Bbox_3 box;
   for(typename boost::graph_traits<TriangleMeshB>::vertex_descriptor v : vertices(B))
     box += get(vpmB, v).bbox();
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));
   const double max_uncertainty = options.error_fraction * diagonal;
+  const double min_disagreement = options.noise_multiple * result.scale_noise;
   const auto distance = typename Locator::Traits().compute_hyperbolic_distance_2_object();
 
-  std::vector<char> flagged(a.verts.size(), 0), visited(a.verts.size(), 0);
+  std::vector<char> flagged(n, 0), visited(n, 0);
+  // per vertex of A (of B), where the walk down A's (B's) conformal factor from it ends: the
+  // collapse vertex of the squeezed region it reaches, or a local minimum (computed on demand)
+  std::vector<std::size_t> basin_a(n, internal::Embedding_scale<TriangleMeshA>::npos),
+                           basin_b(b.verts.size(), internal::Embedding_scale<TriangleMeshB>::npos);
+  // the corner of B's face holding a location nearest to it (largest barycentric coordinate)
+  auto landing = [&](const typename Locator::Location& loc) {
+    int j = 0;
+    for(int k = 1; k < 3; ++k)
+      if(loc.barycentric[k] > loc.barycentric[j])
+        j = k;
+    return locB.corner_vertex_index(loc.face_index, j);
+  };
   std::vector<std::size_t> stack, seen;
   for(std::size_t r = 0; r < a.collapse.size(); ++r) {
     Squeezed_region region;
@@ -340,12 +569,9 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
       result.regions.push_back(region);
       continue;
     }
+    region.scale_disagreement = result.scale_disagreement[region.source_vertex];
     // the region of B the collapse vertex's image lies in, and where that region collapses
-    std::size_t landing = 0;
-    for(int j = 1; j < 3; ++j)
-      if(l.barycentric[j] > l.barycentric[landing])
-        landing = static_cast<std::size_t>(j);
-    region.target_vertex = b.descend(B, locB.corner_vertex_index(l.face_index, static_cast<int>(landing)));
+    region.target_vertex = b.basin(B, landing(l), basin_b);
     region.target_size = b.size[region.target_vertex];
     const Point_2 image = locB.disk_point(l);
     region.discrepancy = std::numeric_limits<double>::infinity();
@@ -360,11 +586,17 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
           target = q;
         }
       }
-    region.unresolved = region.discrepancy > options.noise_factor * (std::max)(region.source_size, region.target_size);
+    // unresolved: the collapse points differ by more than a few triangles, and the map does
+    // collapse (or cannot resolve) the region there
+    region.unresolved = region.discrepancy > options.noise_factor * (std::max)(region.source_size, region.target_size) &&
+                        (scale_fails[region.source_vertex] || rounding_fails[region.source_vertex]);
     if(region.unresolved) {
       // the isometry that moves the image of A's collapse point onto B's, applied to the
       // image of each vertex: how far on B its image moves (from the collapse vertex
-      // outwards, through the vertices that move too far)
+      // outwards, through the vertices that move too far, whose scale disagrees beyond the
+      // map's noise, and that lie on the protrusion in both embeddings: A's conformal factor
+      // descends from the vertex to A's collapse vertex, B's from its image to B's; the
+      // isometry is a model of the map on the collapsed protrusion only)
       const C from(CGAL::to_double(image.x()), CGAL::to_double(image.y()));
       const Isometry to_origin = Isometry::translation_to_origin(from), to_target = Isometry::translation_from_origin(target);
       auto uncertainty = [&](std::size_t i) {
@@ -382,6 +614,11 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
       auto visit = [&](std::size_t i) {
         visited[i] = 1;
         seen.push_back(i);
+        if(!(rounding_fails[i] || scale_fails[i] || std::abs(result.scale_disagreement[i]) > min_disagreement))
+          return;
+        if(i != region.source_vertex && (a.basin(A, i, basin_a) != region.source_vertex || !locations[i].success ||
+                                         b.basin(B, landing(locations[i]), basin_b) != region.target_vertex))
+          return;
         result.uncertainty[i] = (std::max)(result.uncertainty[i], uncertainty(i));
         if(result.uncertainty[i] > max_uncertainty) {
           if(!flagged[i])
@@ -403,9 +640,13 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
     }
     result.regions.push_back(region);
   }
-  for(std::size_t i = 0; i < flagged.size(); ++i)
-    if(flagged[i])
+  for(std::size_t i = 0; i < n; ++i) {
+    result.protrusion_flagged += flagged[i];
+    result.scale_flagged += scale_fails[i];
+    result.rounding_flagged += rounding_fails[i];
+    if(flagged[i] || scale_fails[i] || rounding_fails[i])
       result.unreliable_vertices.push_back(i);
+  }
   return result;
 }
 

@@ -46,6 +46,8 @@ enum keep_largest_component_t { keep_largest_component };
 enum split_boundary_chords_t { split_boundary_chords };
 enum input_landmarks_t { input_landmarks };
 enum maximum_debris_fraction_t { maximum_debris_fraction };
+enum target_genus_t { target_genus };
+enum maximum_handle_length_t { maximum_handle_length };
 enum multigrid_threshold_t { multigrid_threshold };
 } // namespace internal_np
 
@@ -134,6 +136,14 @@ CGAL_HOT_NAMED_PARAMETER(input_landmarks)
 /// landmark and with fewer faces than this fraction of the mesh's is debris, dropped
 /// (default 0.01)
 CGAL_HOT_NAMED_PARAMETER(maximum_debris_fraction)
+/// `int`: for `prepare_polygon_soup_for_embedding()`, the genus the prepared closed mesh must
+/// have at most: handles are cut along short non-separating loops, both sides closed, until it
+/// has it (default: the genus is kept)
+CGAL_HOT_NAMED_PARAMETER(target_genus)
+/// `double`: for `prepare_polygon_soup_for_embedding()` with `target_genus`, the longest loop
+/// cut, as a fraction of the diagonal of the bounding box; a handle whose shortest loop found
+/// is longer is an error (default 0.2)
+CGAL_HOT_NAMED_PARAMETER(maximum_handle_length)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 

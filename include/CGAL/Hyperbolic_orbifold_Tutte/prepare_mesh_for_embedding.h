@@ -46,6 +46,10 @@ Status run_preparation(const PointRange& points, const PolygonRange& polygons, T
     o.required = choose_parameter(get_parameter(np, internal_np::orbifold_type), Sphere_type);
   o.max_hole_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::maximum_hole_length_t>::value;
   o.debris_fraction = choose_parameter(get_parameter(np, internal_np::maximum_debris_fraction), 0.01);
+  o.target_genus = choose_parameter(get_parameter(np, internal_np::target_genus), -1);
+  o.max_handle = choose_parameter(get_parameter(np, internal_np::maximum_handle_length), 0.2);
+  if(!(o.max_handle >= 0) || !std::isfinite(o.max_handle))
+    return Status::failure(ERROR_WRONG_PARAMETER, "maximum_handle_length must be a finite number >= 0");
   if(!(o.max_hole >= 0) || !std::isfinite(o.max_hole))
     return Status::failure(ERROR_WRONG_PARAMETER, "maximum_hole_length must be a finite number >= 0");
   if(!(o.debris_fraction >= 0) || !(o.debris_fraction <= 1))
@@ -114,6 +118,13 @@ In this order, each step doing nothing on a mesh that does not need it:
     decide the type: none, sphere type; one, disk type; more, an error
     (`ERROR_WRONG_TOPOLOGY`) that gives their sizes and lengths. The faces that fill holes are
     listed (`Mesh_preparation::filled_faces`): a point on them is not on the input's surface;
+ -# with `target_genus`, a closed mesh of a higher genus has its handles cut (topological
+    noise of scans: two fused fingers, an arm touching the body): the shortest non-separating
+    loop found (a tree-cotree system of shortest loops from several roots) is cut and both
+    sides are closed as holes, until the genus is the target; each cut is recorded
+    (`Mesh_preparation::cut_handles`); a loop longer than `maximum_handle_length` diagonals is
+    an error (`ERROR_WRONG_TOPOLOGY`) that says which handle. A mesh with a boundary loop and
+    handles is refused;
  -# disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
     a boundary ear) is split at its midpoint and the midpoint joined to the two opposite
     corners (Euler operations), so no triangle gets flat on a side of the disk orbifold's tile;
@@ -141,6 +152,8 @@ triangulation of polygons, the filling of holes and the splitting of chords.
     boundary loop filled, in bounding box diagonals;
   - `maximum_debris_fraction` (`double` in [0, 1], default 0.01): components without landmark
     and with fewer faces than this fraction of the mesh's are dropped;
+  - `target_genus` (`int`, default: keep the genus) and `maximum_handle_length` (`double`,
+    default 0.2 bounding box diagonals): see above;
   - `keep_largest_component` (`bool`, default `false`): drops every component but the kept one
     (the landmarks', else the largest), whatever its size;
   - `split_boundary_chords` (`bool`, default `true`).

@@ -5,6 +5,7 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_MESH_PREPARATION_STEPS_H
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/handle_loops.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/preparation_door.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/soup_preparation.h>
 
@@ -62,6 +63,7 @@ struct Work
   // the landmarks (Preparation_options::landmarks), each as the input vertex that represents
   // it in the soup (the first of merged ones), npos if on no face
   std::vector<std::size_t> landmark_input;
+  std::vector<std::vector<Work_vertex> > handle_loops; // the loops cut (right side's vertices)
 };
 
 // the work mesh's vertex of each landmark (a null vertex where there is none: on no face, on
@@ -428,6 +430,129 @@ inline Status fill_holes(Work& w, const Preparation_options& o, Mesh_preparation
   return Status();
 }
 
+// the genus of the work mesh (its boundary loops counted)
+inline long long work_genus(const Work_mesh& m)
+{
+  std::vector<Work_halfedge> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(m, std::back_inserter(cycles));
+  const long long chi = static_cast<long long>(num_vertices(m)) - static_cast<long long>(num_edges(m)) + static_cast<long long>(num_faces(m));
+  return (2 - chi - static_cast<long long>(cycles.size())) / 2;
+}
+
+// Cuts the (closed, garbage-free) work mesh along `cycle`: the corners on its left side move
+// to copies of the loop's vertices (added vertices), the mesh is rebuilt with its properties,
+// and the two sides of the cut are closed (fill_hole()).
+inline Status cut_along_loop(Work& w, const std::vector<Work_vertex>& cycle, Mesh_preparation& prep)
+{
+  bool ok = false;
+  const std::vector<char> moved = handles::left_corners(w.mesh, cycle, ok);
+  if(!ok || w.mesh.has_garbage())
+    return Status::failure(ERROR_WRONG_TOPOLOGY, "a handle's loop could not be cut");
+  const std::size_t n = num_vertices(w.mesh);
+  std::vector<Point> points;
+  std::vector<std::size_t> input, copy_of;
+  for(Work_vertex v : vertices(w.mesh)) { // (idx order: no garbage)
+    points.push_back(w.mesh.point(v));
+    input.push_back(w.input[v]);
+    copy_of.push_back(w.copy_of[v]);
+  }
+  std::vector<std::size_t> copy(n, Mesh_preparation::npos);
+  for(Work_vertex v : cycle) {
+    copy[v.idx()] = points.size();
+    points.push_back(w.mesh.point(v));
+    input.push_back(Mesh_preparation::npos);
+    copy_of.push_back(Mesh_preparation::npos);
+  }
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<char> filled;
+  std::size_t j = 0;
+  for(Work_face f : faces(w.mesh)) {
+    std::array<std::size_t, 3> t;
+    std::size_t c = 0;
+    for(Work_halfedge h : halfedges_around_face(halfedge(f, w.mesh), w.mesh)) {
+      const std::size_t v = target(h, w.mesh).idx();
+      t[c] = moved[3 * j + c] ? copy[v] : v;
+      ++c;
+    }
+    triangles.push_back(t);
+    filled.push_back(w.filled[f] ? 1 : 0);
+    ++j;
+  }
+  Work_mesh cut;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, cut);
+  if(num_vertices(cut) != points.size() || num_faces(cut) != triangles.size() || !CGAL::is_valid_polygon_mesh(cut))
+    return Status::failure(ERROR_WRONG_TOPOLOGY, "the cut along a handle's loop is not a valid surface");
+  w.mesh = std::move(cut);
+  w.input = w.mesh.add_property_map<Work_vertex, std::size_t>("v:hot_input", Mesh_preparation::npos).first;
+  w.copy_of = w.mesh.add_property_map<Work_vertex, std::size_t>("v:hot_copy_of", Mesh_preparation::npos).first;
+  w.filled = w.mesh.add_property_map<Work_face, bool>("f:hot_filled", false).first;
+  std::size_t i = 0;
+  for(Work_vertex v : vertices(w.mesh)) { // (in the points' order; the loops' vertices keep their indices)
+    w.input[v] = input[i];
+    w.copy_of[v] = copy_of[i++];
+  }
+  j = 0;
+  for(Work_face f : faces(w.mesh)) w.filled[f] = filled[j++] != 0;
+  const std::vector<Boundary_loop> sides = boundary_loops(w.mesh);
+  if(sides.size() != 2)
+    return Status::failure(ERROR_WRONG_TOPOLOGY, "the cut along a handle's loop did not give two sides");
+  for(const Boundary_loop& l : sides) {
+    const Status r = fill_hole(w, l, prep);
+    if(!r) return r;
+  }
+  return Status();
+}
+
+// With a target genus (target_genus) below the closed mesh's: cuts the shortest
+// non-separating loop found (handle_loops.h) and closes both sides, until the genus is the
+// target's; a loop longer than `max_handle` diagonals is a refusal that says which handle.
+inline Status cut_handles(Work& w, const Preparation_options& o, Mesh_preparation& prep)
+{
+  if(o.target_genus < 0)
+    return Status();
+  long long g = work_genus(w.mesh);
+  if(g <= o.target_genus)
+    return Status();
+  const long long g0 = g;
+  if(prep.type != Sphere_type) {
+    std::ostringstream os;
+    os << "the mesh has genus " << g << " and a boundary loop, and genus " << o.target_genus
+       << " is asked for (target_genus, --target-genus): the handles of a mesh with a boundary are not cut";
+    return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
+  }
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(w.mesh);
+  const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                                    CGAL::square(b.zmax() - b.zmin()));
+  for(long long k = 1; g > o.target_genus; ++k) {
+    const handles::Loop_finder<Work_mesh> finder(w.mesh);
+    const handles::Loop<Work_mesh> loop = finder.shortest();
+    if(loop.cycle.empty())
+      return Status::failure(ERROR_WRONG_TOPOLOGY, "no non-separating loop was found on a mesh of genus " + std::to_string(g));
+    if(!(loop.length <= o.max_handle * diagonal)) {
+      std::ostringstream os;
+      os.precision(3);
+      os << "the mesh has genus " << g0 << " and genus " << o.target_genus << " is asked for (target_genus, --target-genus), but handle " << k
+         << " of " << g0 << " is long: its shortest loop found is " << loop.length / diagonal << " times the bounding box diagonal ("
+         << loop.cycle.size() << " vertices";
+      for(Work_vertex v : loop.cycle)
+        if(w.input[v] != Mesh_preparation::npos) { os << ", through vertex " << w.input[v]; break; }
+      os << "), over the bound " << o.max_handle << " (maximum_handle_length, --max-handle): a real handle rather than topological noise?";
+      return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
+    }
+    const Status r = cut_along_loop(w, loop.cycle, prep);
+    if(!r) return r;
+    const long long after = work_genus(w.mesh);
+    if(after != g - 1)
+      return Status::failure(ERROR_WRONG_TOPOLOGY, "cutting a handle's loop did not lower the genus");
+    g = after;
+    Cut_handle c;
+    c.length = loop.length;
+    prep.cut_handles.push_back(c);
+    w.handle_loops.push_back(loop.cycle);
+  }
+  return Status();
+}
+
 // Splits every inner edge joining two boundary vertices at its midpoint, connecting the
 // midpoint to the two opposite corners (Euler operations), so that no triangle of a disk
 // has its three corners on the boundary through such an edge.
@@ -540,6 +665,9 @@ inline void prepared_soup(const Work& w, const Soup& soup, Mesh_preparation& pre
   }
   for(std::size_t i = 0; i < prep.filled_holes.size(); ++i)
     prep.filled_holes[i].vertex = prep.output_index[prepared[w.hole_vertex[i].idx()]];
+  for(std::size_t i = 0; i < prep.cut_handles.size(); ++i)
+    for(Work_vertex v : w.handle_loops[i])
+      prep.cut_handles[i].vertices.push_back(prep.output_index[prepared[v.idx()]]);
   for(const auto& c : w.chords)
     prep.split_chords.emplace_back(prep.output_index[prepared[c.first.idx()]], prep.output_index[prepared[c.second.idx()]]);
 }
@@ -565,6 +693,7 @@ Status prepare_loaded_soup(Soup& soup, const Preparation_options& o, Mesh_prepar
   if(r) r = keep_one_component(w, o, prep);
   if(r) r = remove_degenerate_faces(w, prep);
   if(r) r = fill_holes(w, o, prep);
+  if(r) r = cut_handles(w, o, prep);
   if(!r) return r;
   if(prep.type == Disk_type && o.split_chords)
     split_boundary_chords(w, prep);

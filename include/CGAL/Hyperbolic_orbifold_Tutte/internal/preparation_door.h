@@ -41,6 +41,8 @@ struct Preparation_options
   bool max_hole_given = false; // (with landmarks, the loops are closed whatever their length unless a maximum is given)
   std::vector<std::size_t> landmarks; // input vertex indices (input_landmarks); empty: none
   double debris_fraction = 0.01;
+  long long target_genus = -1; // (-1: keep the genus)
+  double max_handle = 0.2;     // the longest loop cut, in bounding box diagonals
 };
 
 // The steps after the soup is loaded, up to the prepared soup: points, and triangles as
