@@ -747,6 +747,39 @@ TEST_CASE(handles_tube)
   const std::set<std::size_t> tube{a, b, c, d, e, f};
   for(std::size_t v : h.vertices) CHECK_MSG(tube.count(v) == 1, "loop vertex " << v << " is not on the tube");
   CHECK(x.prep.summary().find("cut handles: 1") != std::string::npos);
+  // the same with an opening away from the tube, whose rim holds the landmarks: a disk of
+  // genus 1, cut to a disk of genus 0 (one boundary loop, Euler characteristic 1), the loop
+  // around the tube again, the opening kept
+  const K::Vector_3 axis = CGAL::cross_product(top - CGAL::ORIGIN, K::Vector_3(0.3, 0.5, 0.8));
+  const K::Vector_3 u = axis / std::sqrt(axis.squared_length());
+  Soup opened = s;
+  opened.faces.clear();
+  for(const Polygon& q : s.faces) {
+    const Point c = CGAL::centroid(s.points[q[0]], s.points[q[1]], s.points[q[2]]);
+    if((c - CGAL::ORIGIN) * u < 0.8) opened.faces.push_back(q);
+  }
+  CHECK(opened.faces.size() + 4 < s.faces.size() && tube.count(a) == 1);
+  std::vector<std::size_t> rim;
+  {
+    std::map<std::pair<std::size_t, std::size_t>, int> uses;
+    for(const Polygon& q : opened.faces)
+      for(int i = 0; i < 3; ++i) ++uses[std::make_pair(std::min(q[i], q[(i + 1) % 3]), std::max(q[i], q[(i + 1) % 3]))];
+    std::set<std::size_t> border;
+    for(const auto& e : uses)
+      if(e.second == 1) border.insert({e.first.first, e.first.second});
+    for(std::size_t v : border) if(rim.size() < 5) rim.push_back(v);
+  }
+  std::set<std::size_t> used;
+  for(const Polygon& q : opened.faces) used.insert(q.begin(), q.end());
+  CHECK(euler_characteristic(mesh_of(opened)) - static_cast<long long>(opened.points.size() - used.size()) == -1); // (isolated vertices apart)
+  const Run y0 = prepare(opened, HOT::parameters::input_landmarks(rim, HOT::parameters::target_genus(0)));
+  CHECK_OK(y0);
+  CHECK(y0.prep.type == HOT::Disk_type && y0.prep.cut_handles.size() == 1 && euler_characteristic(y0.out) == 1);
+  CHECK(CGAL::Polygon_mesh_processing::number_of_borders(y0.out) == 1);
+  if(y0.prep.cut_handles.size() == 1) {
+    CHECK_MSG(y0.prep.cut_handles[0].length <= bound * (1 + 1e-12), "loop " << y0.prep.cut_handles[0].length << ", bound " << bound);
+    for(std::size_t v : y0.prep.cut_handles[0].vertices) CHECK_MSG(tube.count(v) == 1, "disk: loop vertex " << v << " is not on the tube");
+  }
   // genus 0 asked of a sphere: nothing to do
   const Run y = prepare(icosphere(2), HOT::parameters::target_genus(0));
   CHECK_OK(y);

@@ -123,8 +123,8 @@ In this order, each step doing nothing on a mesh that does not need it:
     loop found (a tree-cotree system of shortest loops from several roots) is cut and both
     sides are closed as holes, until the genus is the target; each cut is recorded
     (`Mesh_preparation::cut_handles`); a loop longer than `maximum_handle_length` diagonals is
-    an error (`ERROR_WRONG_TOPOLOGY`) that says which handle. A mesh with a boundary loop and
-    handles is refused;
+    an error (`ERROR_WRONG_TOPOLOGY`) that says which handle. A disk's boundary is capped
+    while its loops are sought (the loops avoid its vertices; one that cannot is refused);
  -# disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
     a boundary ear) is split at its midpoint and the midpoint joined to the two opposite
     corners (Euler operations), so no triangle gets flat on a side of the disk orbifold's tile;

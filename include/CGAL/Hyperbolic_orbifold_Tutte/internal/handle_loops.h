@@ -56,13 +56,17 @@ class Loop_finder
   static constexpr std::size_t npos = std::size_t(-1);
 
 public:
-  explicit Loop_finder(const Mesh& m)
+  // `avoided` (per vertex in vertices() order, optional): the edges at these vertices count a
+  // million times their length, so that a loop goes through them only if no other does
+  explicit Loop_finder(const Mesh& m, const std::vector<char>& avoided = std::vector<char>())
     : m_(m), verts_(vertices(m).begin(), vertices(m).end()), nv_(verts_.size())
   {
     for(auto e : edges(m)) {
       const halfedge_descriptor h = halfedge(e, m);
       edge_h_.push_back(h);
-      edge_length_.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(source(h, m)), m.point(target(h, m))))));
+      double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(source(h, m)), m.point(target(h, m)))));
+      if(!avoided.empty() && (avoided[source(h, m).idx()] || avoided[target(h, m).idx()])) l *= 1e6;
+      edge_length_.push_back(l);
     }
   }
 

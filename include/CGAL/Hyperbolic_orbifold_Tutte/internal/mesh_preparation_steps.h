@@ -442,16 +442,24 @@ inline long long work_genus(const Work_mesh& m)
 // Cuts the (closed, garbage-free) work mesh along `cycle`: the corners on its left side move
 // to copies of the loop's vertices (added vertices), the mesh is rebuilt with its properties,
 // and the two sides of the cut are closed (fill_hole()).
-inline Status cut_along_loop(Work& w, const std::vector<Work_vertex>& cycle, Mesh_preparation& prep)
+// A disk's boundary capped (`cap`: the cap's vertex, the last one, joined to every boundary
+// vertex by a fan of faces) is left out of the rebuilt mesh: the boundary is open again, and
+// the two sides of the cut are the loops that do not hold an old boundary vertex.
+inline Status cut_along_loop(Work& w, const std::vector<Work_vertex>& cycle, Mesh_preparation& prep,
+                             Work_vertex cap = Work_vertex())
 {
   bool ok = false;
   const std::vector<char> moved = handles::left_corners(w.mesh, cycle, ok);
-  if(!ok || w.mesh.has_garbage())
+  if(!ok || w.mesh.has_garbage() || (cap != Work_vertex() && std::size_t(cap.idx()) + 1 != num_vertices(w.mesh)))
     return Status::failure(ERROR_WRONG_TOPOLOGY, "a handle's loop could not be cut");
+  std::vector<char> rim(num_vertices(w.mesh), 0); // the capped boundary's vertices
+  if(cap != Work_vertex())
+    for(Work_vertex v : vertices_around_target(halfedge(cap, w.mesh), w.mesh)) rim[v.idx()] = 1;
   const std::size_t n = num_vertices(w.mesh);
   std::vector<Point> points;
   std::vector<std::size_t> input, copy_of;
   for(Work_vertex v : vertices(w.mesh)) { // (idx order: no garbage)
+    if(v == cap) continue;
     points.push_back(w.mesh.point(v));
     input.push_back(w.input[v]);
     copy_of.push_back(w.copy_of[v]);
@@ -469,14 +477,17 @@ inline Status cut_along_loop(Work& w, const std::vector<Work_vertex>& cycle, Mes
   for(Work_face f : faces(w.mesh)) {
     std::array<std::size_t, 3> t;
     std::size_t c = 0;
+    bool capping = false;
     for(Work_halfedge h : halfedges_around_face(halfedge(f, w.mesh), w.mesh)) {
       const std::size_t v = target(h, w.mesh).idx();
+      capping = capping || target(h, w.mesh) == cap;
       t[c] = moved[3 * j + c] ? copy[v] : v;
       ++c;
     }
+    ++j;
+    if(capping) continue;
     triangles.push_back(t);
     filled.push_back(w.filled[f] ? 1 : 0);
-    ++j;
   }
   Work_mesh cut;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, cut);
@@ -493,7 +504,13 @@ inline Status cut_along_loop(Work& w, const std::vector<Work_vertex>& cycle, Mes
   }
   j = 0;
   for(Work_face f : faces(w.mesh)) w.filled[f] = filled[j++] != 0;
-  const std::vector<Boundary_loop> sides = boundary_loops(w.mesh);
+  std::vector<Boundary_loop> sides;
+  for(const Boundary_loop& l : boundary_loops(w.mesh)) {
+    bool old_rim = false;
+    for(Work_halfedge h : halfedges_around_face(l.h, w.mesh))
+      old_rim = old_rim || (std::size_t(target(h, w.mesh).idx()) < rim.size() && rim[target(h, w.mesh).idx()]);
+    if(!old_rim) sides.push_back(l);
+  }
   if(sides.size() != 2)
     return Status::failure(ERROR_WRONG_TOPOLOGY, "the cut along a handle's loop did not give two sides");
   for(const Boundary_loop& l : sides) {
@@ -514,18 +531,42 @@ inline Status cut_handles(Work& w, const Preparation_options& o, Mesh_preparatio
   if(g <= o.target_genus)
     return Status();
   const long long g0 = g;
-  if(prep.type != Sphere_type) {
-    std::ostringstream os;
-    os << "the mesh has genus " << g << " and a boundary loop, and genus " << o.target_genus
-       << " is asked for (target_genus, --target-genus): the handles of a mesh with a boundary are not cut";
-    return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
-  }
   const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(w.mesh);
   const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
                                     CGAL::square(b.zmax() - b.zmin()));
   for(long long k = 1; g > o.target_genus; ++k) {
-    const handles::Loop_finder<Work_mesh> finder(w.mesh);
-    const handles::Loop<Work_mesh> loop = finder.shortest();
+    // a disk's boundary is capped by a fan around a new last vertex while the loop is sought
+    // and cut (same genus, closed), its vertices avoided: the loop stays inside the disk
+    Work_vertex cap;
+    std::vector<char> avoided;
+    if(prep.type == Disk_type) {
+      std::vector<Boundary_loop> loops = boundary_loops(w.mesh);
+      if(loops.size() != 1 || w.mesh.has_garbage())
+        return Status::failure(ERROR_WRONG_TOPOLOGY, "a handle of a mesh with a boundary could not be cut");
+      std::vector<Work_halfedge> border;
+      for(Work_halfedge h : halfedges_around_face(loops[0].h, w.mesh)) border.push_back(h);
+      // a copy: add_vertex may reallocate the point array a reference would point into
+      const Point at = w.mesh.point(target(border[0], w.mesh));
+      cap = w.mesh.add_vertex(at);
+      w.input[cap] = w.copy_of[cap] = Mesh_preparation::npos;
+      for(Work_halfedge h : border)
+        if(w.mesh.add_face(source(h, w.mesh), target(h, w.mesh), cap) == Work_face())
+          return Status::failure(ERROR_WRONG_TOPOLOGY, "a handle of a mesh with a boundary could not be cut (capping its boundary failed)");
+      avoided.assign(num_vertices(w.mesh), 0);
+      for(Work_halfedge h : border) avoided[target(h, w.mesh).idx()] = 1;
+      avoided[cap.idx()] = 1;
+    }
+    const handles::Loop_finder<Work_mesh> finder(w.mesh, avoided);
+    handles::Loop<Work_mesh> loop = finder.shortest();
+    bool touches = false;
+    for(Work_vertex v : loop.cycle) touches = touches || (!avoided.empty() && avoided[v.idx()]);
+    if(touches) {
+      std::ostringstream os;
+      os << "the mesh has genus " << g0 << " and a boundary loop, and genus " << o.target_genus
+         << " is asked for (target_genus, --target-genus), but the shortest loop found around handle " << k << " of " << g0
+         << " touches the boundary: it is not cut";
+      return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
+    }
     if(loop.cycle.empty())
       return Status::failure(ERROR_WRONG_TOPOLOGY, "no non-separating loop was found on a mesh of genus " + std::to_string(g));
     if(!(loop.length <= o.max_handle * diagonal)) {
@@ -539,7 +580,7 @@ inline Status cut_handles(Work& w, const Preparation_options& o, Mesh_preparatio
       os << "), over the bound " << o.max_handle << " (maximum_handle_length, --max-handle): a real handle rather than topological noise?";
       return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
     }
-    const Status r = cut_along_loop(w, loop.cycle, prep);
+    const Status r = cut_along_loop(w, loop.cycle, prep, cap);
     if(!r) return r;
     const long long after = work_genus(w.mesh);
     if(after != g - 1)
