@@ -10,32 +10,15 @@
 # through 7 of its vertices in most orders that zigzag, which a finely subdivided sphere has.
 set -u
 prog="$1"; case_name="$2"; data="${3:-}"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-command -v python3 > /dev/null || { echo "python3 not found: skipped"; exit 0; }
+. "$here/cli_expect.sh" # fail, expect_error
+command -v python3 > /dev/null || fail "python3 not found (scripts/install-deps.sh installs it)"
 
-expect_error() { # expect_error OUTFILE PATTERN ARGS...: non-zero exit, one line on stderr matching PATTERN, no output
-  local outfile="$1" pattern="$2"; shift 2
-  "$prog" "$@" >"$tmp/stdout" 2>"$tmp/stderr"; local rc=$?
-  [ $rc -ne 0 ] || fail "exit 0 for: $*"
-  [ $rc -lt 128 ] || fail "crash ($rc) for: $*"
-  # (the collection's progress lines apart, which start with blanks)
-  [ "$(grep -vc '^  ' "$tmp/stderr")" -eq 1 ] || fail "stderr is not one line for: $* -- $(cat "$tmp/stderr")"
-  grep -v '^  ' "$tmp/stderr" | grep -q -- "$pattern" || fail "no '$pattern' in: $(cat "$tmp/stderr")"
-  [ ! -e "$outfile" ] || fail "output file left behind for: $*"
-  echo "ok (exit $rc): $(grep -v '^  ' "$tmp/stderr")"
-}
-
-# spheres.py: ico.off (an icosahedron) and fine.off (the same, its faces split in 4 twice, 162
-# vertices, on the unit sphere; the icosahedron's vertices keep their numbers 0..11), both with
-# their vertices moved by up to 4% of the radius (a fixed generator), so that no two paths
-# between landmarks have the same length
-cat > "$tmp/spheres.py" <<'PY'
-import math, sys
-seed = [12345]
-def rnd():
-    seed[0] = (seed[0] * 1103515245 + 12345) % 2147483648
-    return seed[0] / 2147483648.0
+# icosphere.py: the icosahedron on the unit sphere (V, F) and split(V, F), which splits every
+# face in 4 (the midpoints pushed onto the sphere; the old vertices keep their numbers)
+cat > "$tmp/icosphere.py" <<'PY'
+import math
 t = (1 + 5 ** 0.5) / 2
 V = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
 V = [tuple(c / math.sqrt(sum(x * x for x in v)) for c in v) for v in V]
@@ -54,6 +37,20 @@ def split(V, F):
         ab, bc, ca = m(a, b), m(b, c), m(c, a)
         G += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
     return V, G
+PY
+
+# spheres.py: ico.off (an icosahedron) and fine.off (the same, its faces split in 4 twice, 162
+# vertices, on the unit sphere; the icosahedron's vertices keep their numbers 0..11), both with
+# their vertices moved by up to 4% of the radius (a fixed generator), so that no two paths
+# between landmarks have the same length
+cat > "$tmp/spheres.py" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from icosphere import V, F, split
+seed = [12345]
+def rnd():
+    seed[0] = (seed[0] * 1103515245 + 12345) % 2147483648
+    return seed[0] / 2147483648.0
 def write(path, V, F):
     with open(path, 'w') as f:
         f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
@@ -180,6 +177,57 @@ case "$case_name" in
     [ "$(json_field "$tmp/r3.json" orders_tried)" = 1 ] || fail "--order given: orders_tried"
     expect_error "$tmp/m4.txt" "order must be given, tsp or auto" map --order best --source "$tmp/fine.off" --source-cones "$tmp/a.cones" \
       --target "$tmp/ico.off" --target-cones "$tmp/b.cones" --out "$tmp/m4.txt"
+    ;;
+  map_certificate_fallback)
+    # An order the target's embedding cannot certify (not a cut failure): an octopus (test/
+    # octopus.awk, tentacles of length 6 to 12) with landmarks at its poles and, on every
+    # tentacle, at the tip and 5 rings below it, against an icosphere whose landmarks lie on the
+    # equator in a chosen circular order, so that its tour is that order (points on a circle,
+    # the shortest closed tour goes round it; opened at the one wider gap, after the last). That
+    # order is the octopus's own tour except that tentacle 0's tip (landmark 3) comes after the
+    # north pole (0) instead of next to its partner (2): the cut then leaves the thin tentacle
+    # between two far parts of the border, where double precision flips triangles. The
+    # sphere's tour ranks first (its cut is short on both meshes), the octopus refuses it, and
+    # the octopus's own tour is taken.
+    awk -v L=12 -f "$here/octopus.awk" > "$tmp/oct.off" 2> "$tmp/oct.std" || fail "octopus.awk"
+    # (ring width: 16 vertices at FINE=1; the tip's cap has 4 rings of them, then the tip)
+    awk '{ printf "%d\n%d\n", $1, $2; for(i = 3; i < NF; i += 2) printf "%d\n%d\n", $(i + 1) - 96, $(i + 1) }' "$tmp/oct.std" > "$tmp/oct.cones"
+    [ "$(wc -l < "$tmp/oct.cones")" -eq 18 ] || fail "octopus landmarks: $(cat "$tmp/oct.std")"
+    order="5 4 2 10 11 17 16 9 8 0 3 6 7 14 15 1 13 12"
+    python3 - "$tmp" "$order" <<'PY' || fail "sphere"
+import math, sys
+d, order = sys.argv[1], [int(x) for x in sys.argv[2].split()]
+sys.path.insert(0, d)
+from icosphere import V, F, split
+for _ in range(3):
+    V, F = split(V, F)
+n = len(order); lm = [None] * n
+for k, i in enumerate(order):  # landmark order[k] at longitude 2 pi k / (n + 1), slightly off the equator
+    a = 2 * math.pi * k / (n + 1); p = (math.cos(a), math.sin(a), 0.05 * (-1) ** k)
+    lm[i] = min(range(len(V)), key=lambda v: math.dist(V[v], p))
+assert len(set(lm)) == n
+with open(d + "/sphere.off", "w") as f:
+    f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
+    for v in V: f.write("%.17g %.17g %.17g\n" % v)
+    for a, b, c in F: f.write("3 %d %d %d\n" % (a, b, c))
+with open(d + "/sphere.cones", "w") as f:
+    for v in lm: f.write("%d\n" % v)
+PY
+    args=(--source "$tmp/sphere.off" --source-cones "$tmp/sphere.cones" --target "$tmp/oct.off" --target-cones "$tmp/oct.cones")
+    # the sphere's tour alone (--order tsp) is refused by the octopus's certificate, in one line, no file
+    expect_error "$tmp/m.txt" "target: .*failed the certificate: NOT bijective" map --order tsp "${args[@]}" --out "$tmp/m.txt" --report "$tmp/r.json"
+    [ ! -e "$tmp/r.json" ] || fail "report left behind"
+    # by default the octopus's tour is tried next, and certified
+    "$prog" map "${args[@]}" --out "$tmp/m.txt" --report "$tmp/r.json" > "$tmp/stdout" 2> "$tmp/stderr" || fail "map: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    grep -q "^landmark order: .*(the target's tour; the source's tour ($order) was refused by the target: .*failed the certificate" "$tmp/stdout" ||
+      fail "stdout: $(cat "$tmp/stdout")"
+    [ "$(json_field "$tmp/r.json" landmark_order_from)" = target ] || fail "landmark_order_from: $(json_field "$tmp/r.json" landmark_order_from)"
+    [ "$(json_field "$tmp/r.json" orders_tried)" = 2 ] || fail "orders_tried: $(json_field "$tmp/r.json" orders_tried)"
+    used="$(report_order "$tmp/r.json")"
+    ! same_order "$used" "$order" || fail "the refused order was used: $used"
+    [ "$(wc -l < "$tmp/m.txt")" -eq 642 ] || fail "map lines"
+    landmarks_onto_landmarks "$tmp/m.txt" "$tmp/oct.off" "$tmp/sphere.cones" "$tmp/oct.cones"
     ;;
   map_none_works)
     # two icosahedra whose landmarks correspond so that each one's tour zigzags on the other:

@@ -8,19 +8,9 @@ set -u
 prog="$1"; case_name="$2"; data="${3:-}"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "${BASH_SOURCE[0]}")/cli_expect.sh" # fail, expect_error
 M="$(cd "$data/meshes" && pwd)"
 
-expect_error() { # expect_error OUTFILE PATTERN ARGS...: non-zero exit, one line on stderr matching PATTERN, no output
-  local outfile="$1" pattern="$2"; shift 2
-  "$prog" "$@" >"$tmp/stdout" 2>"$tmp/stderr"; local rc=$?
-  [ $rc -ne 0 ] || fail "exit 0 for: $*"
-  [ $rc -lt 128 ] || fail "crash ($rc) for: $*"
-  [ "$(wc -l <"$tmp/stderr")" -eq 1 ] || fail "stderr is not one line for: $* -- $(cat "$tmp/stderr")"
-  grep -q -- "$pattern" "$tmp/stderr" || fail "no '$pattern' in: $(cat "$tmp/stderr")"
-  [ ! -e "$outfile" ] || fail "output file left behind for: $*"
-  echo "ok (exit $rc): $(cat "$tmp/stderr")"
-}
 off_counts() { awk '!/^[ \t]*#/ && NF { n++; if(n == 1 && $1 == "OFF" && NF == 1) next; if($1 == "OFF") { print $2, $3; exit } print $1, $2; exit }' "$1"; }
 json_number() { grep -o "\"$2\": [0-9.e+-]*" "$1" | head -1 | awk '{print $2}'; }
 # the undirected edges of an OFF triangle mesh with the number of faces on them: "a b uses" (a < b)
