@@ -135,6 +135,15 @@ struct Collection_job
   std::vector<int> orders; // --cone-orders, per landmark in the class-wide order (empty: 2 for all)
   std::string order = "auto"; // --order given|tsp|auto
 
+  // the --repair options of every mesh: a collection's closed meshes are of genus 0, so with
+  // --repair the handles of the others are cut (target genus 0) unless --target-genus is given
+  void set_repair(const hot_tools::Repair_options& r)
+  {
+    repair = r;
+    if(repair.repair && repair.target_genus < 0)
+      repair.target_genus = 0;
+  }
+
   std::size_t size() const { return entries.size(); }
   // <i>_<name>: the name of mesh i's files
   std::string stem(std::size_t i) const

@@ -1063,9 +1063,7 @@ int run_collection(int argc, char** argv)
   job.manifest_path = opt.get("manifest");
   job.dir = opt.get("out");
   job.all_pairs = opt.has("all-pairs");
-  job.repair = parse_repair_options(opt);
-  if(job.repair.repair && job.repair.target_genus < 0)
-    job.repair.target_genus = 0; // (a collection's closed meshes are of genus 0: --repair cuts the handles of the others)
+  job.set_repair(parse_repair_options(opt));
   job.orders = parse_cone_orders(opt);
   job.order = parse_common_order(opt);
   const std::pair<std::size_t, std::size_t> shard = parse_shard(opt);

@@ -19,7 +19,7 @@ from . import _core
 def _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks):
     return dict(manifest=_os.fspath(manifest), out_dir=_os.fspath(out_dir), all_pairs=bool(all_pairs),
                 cone_orders=None if cone_orders is None else [int(p) for p in cone_orders],
-                repair=bool(repair), max_hole=float(max_hole), largest_component=bool(largest_component),
+                repair=bool(repair), max_hole=None if max_hole is None else float(max_hole), largest_component=bool(largest_component),
                 snap_landmarks=bool(snap_landmarks))
 
 
@@ -107,7 +107,7 @@ def _run_on_dask(plan, options, client, progress):
         raise
 
 
-def collection(manifest, out_dir, all_pairs=False, client=None, cone_orders=None, repair=False, max_hole=0.5,
+def collection(manifest, out_dir, all_pairs=False, client=None, cone_orders=None, repair=False, max_hole=None,
                largest_component=False, snap_landmarks=False, threads=None, progress=True):
     """collection(manifest, out_dir, all_pairs=False, client=None, ...) -> dict (report.json)
 
@@ -129,7 +129,8 @@ def collection(manifest, out_dir, all_pairs=False, client=None, cone_orders=None
 
     cone_orders: the order p of every landmark's cone (angle 2 pi/p), in the manifest's
     landmark order (default: 2 for all); repair, max_hole, largest_component, snap_landmarks:
-    the command line's --repair options. progress: a line on stderr per mesh embedded and
+    the command line's --repair options (max_hole=None: as without --max-hole, a limit of 0.5
+    bounding box diagonals, none when the landmarks are inside the surface). progress: a line on stderr per mesh embedded and
     every 5% of the maps. A failure raises hot.Error (the first one, naming the mesh), and the
     files this call wrote are removed.
     """

@@ -11,6 +11,7 @@
 
 #include "collection_jobs.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,23 +22,25 @@ namespace {
 
 // what every job is given, from the Python arguments
 hot_cli::Collection_job make_job(const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders,
-                                 bool repair, double max_hole, bool largest_component, bool snap_landmarks)
+                                 bool repair, std::optional<double> max_hole, bool largest_component, bool snap_landmarks)
 {
   hot_cli::Collection_job job;
   job.manifest_path = manifest;
   job.dir = out_dir;
   job.all_pairs = all_pairs;
-  job.repair.repair = repair;
-  job.repair.max_hole = max_hole;
-  job.repair.largest_component = largest_component;
-  job.repair.snap_landmarks = snap_landmarks;
-  job.repair.max_hole_given = max_hole != 0.5;
-  if(repair)
-    job.repair.target_genus = 0; // (as the command line's collection --repair: the handles of closed meshes are cut)
-  if(!(max_hole >= 0) || !(max_hole <= 1e6))
-    fail(HOT::ERROR_WRONG_PARAMETER, "max_hole must be a number >= 0 (a length in bounding box diagonals), got " + std::to_string(max_hole));
-  if((largest_component || max_hole != 0.5) && !repair)
+  if(max_hole && (!(*max_hole >= 0) || !(*max_hole <= 1e6)))
+    fail(HOT::ERROR_WRONG_PARAMETER, "max_hole must be a number >= 0 (a length in bounding box diagonals), got " + std::to_string(*max_hole));
+  if((largest_component || max_hole) && !repair)
     fail(HOT::ERROR_WRONG_PARAMETER, std::string(largest_component ? "largest_component" : "max_hole") + " needs repair=True");
+  hot_tools::Repair_options r; // (as the command line's collection --repair)
+  r.repair = repair;
+  r.largest_component = largest_component;
+  r.snap_landmarks = snap_landmarks;
+  if(max_hole) {
+    r.max_hole = *max_hole;
+    r.max_hole_given = true;
+  }
+  job.set_repair(r);
   if(!cone_orders.is_none())
     for(std::int64_t p : int_list(cone_orders, "cone_orders")) {
       if(p < 2 || p > 1000000)
@@ -65,7 +68,7 @@ auto run_job(F&& f) -> decltype(f())
 
 #define HOT_JOB_ARGS                                                                                                                   \
   py::arg("manifest"), py::arg("out_dir"), py::arg("all_pairs") = false, py::arg("cone_orders") = py::none(),                        \
-    py::arg("repair") = false, py::arg("max_hole") = 0.5, py::arg("largest_component") = false, py::arg("snap_landmarks") = false
+    py::arg("repair") = false, py::arg("max_hole") = py::none(), py::arg("largest_component") = false, py::arg("snap_landmarks") = false
 
 } // namespace
 
@@ -73,7 +76,7 @@ void register_collection(py::module_& m)
 {
   m.def(
     "collection_plan",
-    [](const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, double max_hole,
+    [](const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, std::optional<double> max_hole,
        bool largest_component, bool snap_landmarks) {
       hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
       std::pair<hot_cli::Collection_order, hot_cli::Collection_pairs> r = run_job([&] {
@@ -102,7 +105,7 @@ void register_collection(py::module_& m)
   m.def(
     "collection_embed",
     [](std::size_t i, const std::string& orbifold, std::size_t landmarks, const std::vector<std::size_t>& order, const std::string& manifest,
-       const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, double max_hole, bool largest_component,
+       const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, std::optional<double> max_hole, bool largest_component,
        bool snap_landmarks) {
       hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
       hot_cli::Collection_order co;
@@ -124,7 +127,7 @@ void register_collection(py::module_& m)
   m.def(
     "collection_map",
     [](std::size_t a, std::size_t b, const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders,
-       bool repair, double max_hole, bool largest_component, bool snap_landmarks) {
+       bool repair, std::optional<double> max_hole, bool largest_component, bool snap_landmarks) {
       hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
       return run_job([&] {
         job.entries = hot_cli::read_manifest(job.manifest_path);
@@ -141,7 +144,7 @@ void register_collection(py::module_& m)
 
   m.def(
     "collection_merge",
-    [](const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, double max_hole,
+    [](const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, std::optional<double> max_hole,
        bool largest_component, bool snap_landmarks) {
       hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
       const hot_tools::Collection_report r = run_job([&] {

@@ -287,7 +287,7 @@ std::string path_string(py::handle path)
 }
 
 py::object read_mesh(py::handle path, bool repair, const std::string& orbifold, std::optional<double> max_hole, bool largest_component,
-                     bool return_file_index, py::handle landmarks)
+                     bool return_file_index, py::handle landmarks, std::optional<long long> target_genus, double max_handle)
 {
   const std::string p = path_string(path);
   const std::optional<HOT::Orbifold_type> type = parse_orbifold(orbifold);
@@ -297,11 +297,19 @@ py::object read_mesh(py::handle path, bool repair, const std::string& orbifold, 
     fail(HOT::ERROR_WRONG_PARAMETER, "largest_component needs repair=True");
   if(!landmarks.is_none() && !repair)
     fail(HOT::ERROR_WRONG_PARAMETER, "landmarks needs repair=True (they guide the repair)");
+  if(target_genus && (*target_genus < 0 || *target_genus > 1000000))
+    fail(HOT::ERROR_WRONG_PARAMETER, "target_genus must be an integer >= 0, got " + std::to_string(*target_genus));
+  if(target_genus && !repair)
+    fail(HOT::ERROR_WRONG_PARAMETER, "target_genus needs repair=True (the handles are cut by the repair)");
+  if(!(max_handle >= 0) || !(max_handle <= 1e6))
+    fail(HOT::ERROR_WRONG_PARAMETER, "max_handle must be a number >= 0 (a length in bounding box diagonals), got " + std::to_string(max_handle));
   hot_tools::Repair_options opt;
   opt.repair = repair;
   opt.largest_component = largest_component;
   opt.max_hole = max_hole ? *max_hole : 0.5;
   opt.max_hole_given = max_hole.has_value();
+  opt.target_genus = target_genus ? *target_genus : -1;
+  opt.max_handle = max_handle;
   std::vector<std::size_t> ids;
   if(!landmarks.is_none())
     ids = index_list(landmarks, "landmarks", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
@@ -355,8 +363,8 @@ void register_io(py::module_& m)
 {
   m.def("read_mesh", &read_mesh, py::arg("path"), py::kw_only(), py::arg("repair") = false, py::arg("orbifold") = "auto",
         py::arg("max_hole") = py::none(), py::arg("largest_component") = false, py::arg("return_file_index") = false,
-        py::arg("landmarks") = py::none(),
-        R"doc(read_mesh(path, *, repair=False, orbifold="auto", max_hole=None, largest_component=False, return_file_index=False, landmarks=None)
+        py::arg("landmarks") = py::none(), py::arg("target_genus") = py::none(), py::arg("max_handle") = 0.2,
+        R"doc(read_mesh(path, *, repair=False, orbifold="auto", max_hole=None, largest_component=False, return_file_index=False, landmarks=None, target_genus=None, max_handle=0.2)
 
 Reads a triangle mesh file with the command-line program's reader and checks
 (OFF, OBJ, PLY, STL, GOCAD .ts; the format by the extension) and returns (V, F):
@@ -379,7 +387,11 @@ repair: prepares the mesh first as the command line's --repair does (merges
   With landmarks (the file's vertex numbers, as a landmark file holds them) it aims at
   the orbifold they ask for: the component that holds them is kept, and unless they
   all lie on one boundary loop every loop is closed whatever its length (unless
-  max_hole is given), so a scan with a large opening becomes a sphere. V and F are then the prepared
+  max_hole is given), so a scan with a large opening becomes a sphere. target_genus=g
+  (with repair) cuts handles until the mesh has genus g, as --target-genus does: each
+  time along the shortest non-separating loop found, both sides closed, refused when
+  that loop is longer than max_handle bounding box diagonals (topological noise such
+  as fused fingers is cut, a real handle is not). V and F are then the prepared
   mesh's, in its own vertex order; with return_file_index=True a third array gives,
   for every vertex of V, its number in the command line's files (the file's vertex,
   or a number after them for a vertex the repair added). A clean mesh is returned as

@@ -115,3 +115,8 @@ def test_collection_errors(hands):
         hot.collection(manifest, d / "o4", cone_orders=[2, 1], progress=False)
     with pytest.raises(hot.Error, match="needs repair"):
         hot.collection(manifest, d / "o5", largest_component=True, progress=False)
+    with pytest.raises(hot.Error, match="max_hole needs repair"):  # (given, even at the default limit 0.5)
+        hot.collection(manifest, d / "o5", max_hole=0.5, progress=False)
+    with pytest.raises(hot.Error, match="max_hole must be a number >= 0"):
+        hot.collection(manifest, d / "o5", repair=True, max_hole=-1, progress=False)
+    assert not os.path.exists(d / "o5")

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import hyperbolic_orbifold_tutte as hot
-from hot_testing import write_off
+from hot_testing import run_awk, write_off
 
 
 @pytest.fixture(scope="module")
@@ -211,3 +211,28 @@ def test_repair_with_landmarks(bear, tmp_path):
     raises("ERROR_LANDMARK_OUT_OF_RANGE", hot.read_mesh, path, repair=True, landmarks=list(lm) + [n + 10])
     # a maximum hole length given is a limit again
     raises("ERROR_WRONG_TOPOLOGY", hot.read_mesh, path, repair=True, landmarks=lm, max_hole=0.5, orbifold="sphere")
+
+
+def test_repair_cuts_handles(bear, meshes, source_dir, tmp_path):
+    # topological noise: bear.off with two faces 30 rings apart but close in space joined by a
+    # tube (test/add_handle.awk, the vertex numbers kept): genus 1. target_genus=0 cuts the
+    # handle: a closed mesh of genus 0 again (Euler), every input vertex kept at its place
+    V, F, lm = bear
+    path = run_awk(os.path.join(source_dir, "test", "add_handle.awk"), os.path.join(meshes, "bear.off"), tmp_path / "h.off",
+                   face=5000, min_rings=30)
+    VH, FH = hot.read_mesh(path)
+    assert len(VH) == len(V) and len(VH) - 3 * len(FH) // 2 + len(FH) == 0  # genus 1
+    VS, FS, index = hot.read_mesh(path, repair=True, landmarks=lm, target_genus=0, return_file_index=True)
+    assert (edge_uses(FS) == 2).all()
+    assert len(VS) - 3 * len(FS) // 2 + len(FS) == 2  # Euler: genus 0
+    n = len(VH)
+    assert set(index[index < n]) == set(range(n))
+    assert np.array_equal(VS[index < n], VH[index[index < n]])
+    # without target_genus the genus is kept
+    VK, FK = hot.read_mesh(path, repair=True, landmarks=lm)
+    assert len(VK) - 3 * len(FK) // 2 + len(FK) == 0
+    # a bound below the loop: refused, saying which handle
+    raises("ERROR_WRONG_TOPOLOGY", hot.read_mesh, path, repair=True, landmarks=lm, target_genus=0, max_handle=0.001,
+           match="handle 1 of 1")
+    raises("ERROR_WRONG_PARAMETER", hot.read_mesh, path, target_genus=0, match="needs repair")
+    raises("ERROR_WRONG_PARAMETER", hot.read_mesh, path, repair=True, target_genus=-1, match="target_genus")

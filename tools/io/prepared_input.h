@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -180,15 +181,11 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
                                                               " is out of range (the file has " + std::to_string(soup.number_of_points()) + " vertices)");
   }
   namespace P = HOT::parameters;
-  const auto np = P::input_landmarks(landmarks, P::keep_largest_component(opt.largest_component,
-                                     P::target_genus(opt.target_genus, P::maximum_handle_length(opt.max_handle))));
-  if(opt.max_hole_given || landmarks.empty()) {
-    if(required_type)
-      r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep,
-                                                  P::orbifold_type(*required_type, P::maximum_hole_length(opt.max_hole, np)));
-    else
-      r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, P::maximum_hole_length(opt.max_hole, np));
-  } else if(required_type)
+  // with landmarks and no --max-hole, every loop but a disk's boundary is closed, whatever its length
+  const double max_hole = opt.max_hole_given || landmarks.empty() ? opt.max_hole : std::numeric_limits<double>::infinity();
+  const auto np = P::input_landmarks(landmarks, P::keep_largest_component(opt.largest_component, P::maximum_hole_length(max_hole,
+                                     P::target_genus(opt.target_genus, P::maximum_handle_length(opt.max_handle)))));
+  if(required_type)
     r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, P::orbifold_type(*required_type, np));
   else
     r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, np);

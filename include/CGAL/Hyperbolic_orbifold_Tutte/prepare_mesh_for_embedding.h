@@ -50,8 +50,8 @@ Status run_preparation(const PointRange& points, const PolygonRange& polygons, T
   o.max_handle = choose_parameter(get_parameter(np, internal_np::maximum_handle_length), 0.2);
   if(!(o.max_handle >= 0) || !std::isfinite(o.max_handle))
     return Status::failure(ERROR_WRONG_PARAMETER, "maximum_handle_length must be a finite number >= 0");
-  if(!(o.max_hole >= 0) || !std::isfinite(o.max_hole))
-    return Status::failure(ERROR_WRONG_PARAMETER, "maximum_hole_length must be a finite number >= 0");
+  if(!(o.max_hole >= 0)) // (+infinity: no limit)
+    return Status::failure(ERROR_WRONG_PARAMETER, "maximum_hole_length must be a number >= 0 or infinity");
   if(!(o.debris_fraction >= 0) || !(o.debris_fraction <= 1))
     return Status::failure(ERROR_WRONG_PARAMETER, "maximum_debris_fraction must be a number in [0, 1]");
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::input_landmarks_t>::value) {
@@ -149,7 +149,8 @@ triangulation of polygons, the filling of holes and the splitting of chords.
     vertex indices (the ones a landmark file holds); a landmark out of range is an error
     (`ERROR_LANDMARK_OUT_OF_RANGE`); one on no face is left for the landmark check to report;
   - `maximum_hole_length` (`double`, default 0.5, or no limit with landmarks): the longest
-    boundary loop filled, in bounding box diagonals;
+    boundary loop filled, in bounding box diagonals (`std::numeric_limits<double>::infinity()`:
+    no limit, every loop but a disk's boundary is filled);
   - `maximum_debris_fraction` (`double` in [0, 1], default 0.01): components without landmark
     and with fewer faces than this fraction of the mesh's are dropped;
   - `target_genus` (`int`, default: keep the genus) and `maximum_handle_length` (`double`,

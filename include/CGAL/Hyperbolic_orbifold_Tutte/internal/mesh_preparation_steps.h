@@ -407,15 +407,15 @@ inline Status fill_holes(Work& w, const Preparation_options& o, Mesh_preparation
     if(!keep_as_disk_border && loops[i].length <= limit) holes.push_back(loops[i]);
     else kept.push_back(loops[i]);
   }
-  if(kept.size() > 1 || (required && *required == Sphere_type && !kept.empty()) ||
-     (by_landmarks && landmark_loop == Mesh_preparation::npos && !(required && *required == Disk_type) && !kept.empty())) {
+  // a sphere is asked for: required, or (nothing required) by landmarks not all on one loop
+  const bool sphere = required ? *required == Sphere_type : by_landmarks && landmark_loop == Mesh_preparation::npos;
+  if(kept.size() > 1 || (sphere && !kept.empty())) {
     std::ostringstream os;
     os.precision(3);
-    const bool sphere = (required && *required == Sphere_type) || (by_landmarks && landmark_loop == Mesh_preparation::npos);
     os << "after filling the holes no longer than " << max_hole_length << " times the bounding box diagonal, the mesh would keep "
        << describe_loops(kept, diagonal) << "; "
-       << (sphere ? (by_landmarks && !required ? "landmarks inside the surface ask for a sphere-type orbifold, which needs none"
-                                               : "a sphere-type orbifold needs none")
+       << (sphere ? (required ? "a sphere-type orbifold needs none"
+                              : "landmarks inside the surface ask for a sphere-type orbifold, which needs none")
                   : "an orbifold needs at most one")
        << " (raise maximum_hole_length, --max-hole, to fill longer ones)";
     return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
