@@ -780,6 +780,15 @@ TEST_CASE(handles_tube)
     CHECK_MSG(y0.prep.cut_handles[0].length <= bound * (1 + 1e-12), "loop " << y0.prep.cut_handles[0].length << ", bound " << bound);
     for(std::size_t v : y0.prep.cut_handles[0].vertices) CHECK_MSG(tube.count(v) == 1, "disk: loop vertex " << v << " is not on the tube");
   }
+  // a disk's handles are cut without target_genus (a disk-type orbifold has genus 0): the
+  // same mesh as with target_genus 0; genus 1 asked explicitly keeps the handle, which the
+  // check then refuses (no disk-type orbifold of genus 1)
+  const Run y1 = prepare(opened, HOT::parameters::input_landmarks(rim));
+  CHECK_OK(y1);
+  CHECK(y1.prep.type == HOT::Disk_type && y1.prep.cut_handles.size() == 1 && euler_characteristic(y1.out) == 1);
+  CHECK(num_vertices(y1.out) == num_vertices(y0.out) && num_faces(y1.out) == num_faces(y0.out));
+  const Run y2 = prepare(opened, HOT::parameters::input_landmarks(rim, HOT::parameters::target_genus(1)));
+  CHECK_MSG(y2.r.code == HOT::ERROR_WRONG_TOPOLOGY && y2.prep.cut_handles.empty(), y2.r.message);
   // genus 0 asked of a sphere: nothing to do
   const Run y = prepare(icosphere(2), HOT::parameters::target_genus(0));
   CHECK_OK(y);

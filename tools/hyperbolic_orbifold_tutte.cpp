@@ -148,8 +148,9 @@ const char* const usage_text =
   "      no limit when landmarks inside the surface ask for a sphere)\n"
   "      --largest-component: keeps only the landmarks' (or the largest) component of several\n"
   "      --target-genus G: cuts handles (shortest non-separating loops, both sides closed)\n"
-  "      down to genus G; automatic (0) in map when the other mesh is of genus 0, and in\n"
-  "      collection; --max-handle F: the longest loop cut (default 0.2 diagonals)\n"
+  "      down to genus G; automatic (0) in map when the other mesh is of genus 0, in\n"
+  "      collection, and for a disk (its orbifold has genus 0); --max-handle F: the longest\n"
+  "      loop cut (default 0.2 diagonals)\n"
   "      --snap-landmarks: moves disk-type corners that are not on the boundary to the\n"
   "      nearest boundary vertex (also without --repair)\n";
 

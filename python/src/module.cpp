@@ -391,7 +391,8 @@ repair: prepares the mesh first as the command line's --repair does (merges
   (with repair) cuts handles until the mesh has genus g, as --target-genus does: each
   time along the shortest non-separating loop found, both sides closed, refused when
   that loop is longer than max_handle bounding box diagonals (topological noise such
-  as fused fingers is cut, a real handle is not). V and F are then the prepared
+  as fused fingers is cut, a real handle is not); a disk's handles are cut without
+  target_genus (a disk-type orbifold has genus 0). V and F are then the prepared
   mesh's, in its own vertex order; with return_file_index=True a third array gives,
   for every vertex of V, its number in the command line's files (the file's vertex,
   or a number after them for a vertex the repair added). A clean mesh is returned as

@@ -144,6 +144,10 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
       case HOT::ERROR_DEGENERATE_FACE: case HOT::ERROR_BOUNDARY_CHORD:
         r.message += " (--repair mends such meshes)";
         break;
+      case HOT::ERROR_WRONG_TOPOLOGY: // a disk with handles (topological noise)
+        if(r.message.find("needs a topological disk, but the mesh has genus") != std::string::npos)
+          r.message += " (--repair cuts the handles of a disk, up to --max-handle)";
+        break;
       default:
         break;
       }
@@ -185,10 +189,8 @@ HOT::Status read_input_mesh(const std::string& path, std::optional<HOT::Orbifold
   const double max_hole = opt.max_hole_given || landmarks.empty() ? opt.max_hole : std::numeric_limits<double>::infinity();
   const auto np = P::input_landmarks(landmarks, P::keep_largest_component(opt.largest_component, P::maximum_hole_length(max_hole,
                                      P::target_genus(opt.target_genus, P::maximum_handle_length(opt.max_handle)))));
-  if(required_type)
-    r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, P::orbifold_type(*required_type, np));
-  else
-    r = HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, np);
+  r = required_type ? HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, P::orbifold_type(*required_type, np))
+                    : HOT::prepare_polygon_soup_for_embedding(soup.points, polygons, mesh, in.prep, np);
   if(r) r = HOT::check_mesh(mesh, in.prep.type, &mi);
   if(!r) {
     CGAL::clear(mesh);

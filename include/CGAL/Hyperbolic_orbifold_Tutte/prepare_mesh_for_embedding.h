@@ -118,17 +118,18 @@ In this order, each step doing nothing on a mesh that does not need it:
     decide the type: none, sphere type; one, disk type; more, an error
     (`ERROR_WRONG_TOPOLOGY`) that gives their sizes and lengths. The faces that fill holes are
     listed (`Mesh_preparation::filled_faces`): a point on them is not on the input's surface;
- -# with `target_genus`, a closed mesh of a higher genus has its handles cut (topological
+ -# with `target_genus`, a mesh of a higher genus has its handles cut (topological
     noise of scans: two fused fingers, an arm touching the body): the shortest non-separating
     loop found (a tree-cotree system of shortest loops from several roots) is cut and both
     sides are closed as holes, until the genus is the target; each cut is recorded
     (`Mesh_preparation::cut_handles`); a loop longer than `maximum_handle_length` diagonals is
-    an error (`ERROR_WRONG_TOPOLOGY`) that says which handle. A disk's boundary is capped
+    an error (`ERROR_WRONG_TOPOLOGY`) that says which handle. A disk's handles are cut
+    without `target_genus` too (target 0: a disk-type orbifold has genus 0). A disk's boundary is capped
     while its loops are sought (the loops avoid its vertices; one that cannot is refused);
  -# disk type: every inner edge joining two boundary vertices (a chord, e.g. the inner edge of
     a boundary ear) is split at its midpoint and the midpoint joined to the two opposite
     corners (Euler operations), so no triangle gets flat on a side of the disk orbifold's tile;
- -# `check_mesh()` on the result, whose failure (e.g. a disk of genus 1, for which there is no
+ -# `check_mesh()` on the result, whose failure (e.g. a disk of genus 1 kept by `target_genus` 1, for which there is no
     orbifold) is returned with its own code; a closed mesh keeps its genus (\ref HOT_Genus).
 
 The input's geometry is kept: no input vertex is moved. Faces are added only by the
@@ -153,7 +154,7 @@ triangulation of polygons, the filling of holes and the splitting of chords.
     no limit, every loop but a disk's boundary is filled);
   - `maximum_debris_fraction` (`double` in [0, 1], default 0.01): components without landmark
     and with fewer faces than this fraction of the mesh's are dropped;
-  - `target_genus` (`int`, default: keep the genus) and `maximum_handle_length` (`double`,
+  - `target_genus` (`int`, default: keep the genus of a closed mesh, 0 for a disk) and `maximum_handle_length` (`double`,
     default 0.2 bounding box diagonals): see above;
   - `keep_largest_component` (`bool`, default `false`): drops every component but the kept one
     (the landmarks', else the largest), whatever its size;

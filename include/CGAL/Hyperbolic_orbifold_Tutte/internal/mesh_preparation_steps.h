@@ -520,21 +520,26 @@ inline Status cut_along_loop(Work& w, const std::vector<Work_vertex>& cycle, Mes
   return Status();
 }
 
-// With a target genus (target_genus) below the closed mesh's: cuts the shortest
-// non-separating loop found (handle_loops.h) and closes both sides, until the genus is the
-// target's; a loop longer than `max_handle` diagonals is a refusal that says which handle.
+// With a target genus (target_genus) below the mesh's: cuts the shortest non-separating loop
+// found (handle_loops.h) and closes both sides, until the genus is the target's; a loop
+// longer than `max_handle` diagonals is a refusal that says which handle. A disk's target is
+// 0 unless one is given (a disk-type orbifold has genus 0: its handles are noise to cut).
 inline Status cut_handles(Work& w, const Preparation_options& o, Mesh_preparation& prep)
 {
-  if(o.target_genus < 0)
+  const long long target_g = o.target_genus >= 0 ? o.target_genus : prep.type == Disk_type ? 0 : -1;
+  if(target_g < 0)
     return Status();
   long long g = work_genus(w.mesh);
-  if(g <= o.target_genus)
+  if(g <= target_g)
     return Status();
+  // what asked for the target, as the messages say it
+  const std::string asked = std::string(" and genus ") + std::to_string(target_g) +
+                            (o.target_genus >= 0 ? " is asked for (target_genus, --target-genus)" : " is a disk-type orbifold's");
   const long long g0 = g;
   const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(w.mesh);
   const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
                                     CGAL::square(b.zmax() - b.zmin()));
-  for(long long k = 1; g > o.target_genus; ++k) {
+  for(long long k = 1; g > target_g; ++k) {
     // a disk's boundary is capped by a fan around a new last vertex while the loop is sought
     // and cut (same genus, closed), its vertices avoided: the loop stays inside the disk
     Work_vertex cap;
@@ -562,8 +567,7 @@ inline Status cut_handles(Work& w, const Preparation_options& o, Mesh_preparatio
     for(Work_vertex v : loop.cycle) touches = touches || (!avoided.empty() && avoided[v.idx()]);
     if(touches) {
       std::ostringstream os;
-      os << "the mesh has genus " << g0 << " and a boundary loop, and genus " << o.target_genus
-         << " is asked for (target_genus, --target-genus), but the shortest loop found around handle " << k << " of " << g0
+      os << "the mesh has genus " << g0 << " and a boundary loop" << asked << ", but the shortest loop found around handle " << k << " of " << g0
          << " touches the boundary: it is not cut";
       return Status::failure(ERROR_WRONG_TOPOLOGY, os.str());
     }
@@ -572,7 +576,7 @@ inline Status cut_handles(Work& w, const Preparation_options& o, Mesh_preparatio
     if(!(loop.length <= o.max_handle * diagonal)) {
       std::ostringstream os;
       os.precision(3);
-      os << "the mesh has genus " << g0 << " and genus " << o.target_genus << " is asked for (target_genus, --target-genus), but handle " << k
+      os << "the mesh has genus " << g0 << asked << ", but handle " << k
          << " of " << g0 << " is long: its shortest loop found is " << loop.length / diagonal << " times the bounding box diagonal ("
          << loop.cycle.size() << " vertices";
       for(Work_vertex v : loop.cycle)
