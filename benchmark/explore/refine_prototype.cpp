@@ -32,6 +32,9 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <complex>
+#include <map>
+#include <sstream>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -65,6 +68,7 @@ int main(int argc, char** argv)
   bool arap = false;
   int passes = 0, surface_arap = 0;
   std::string anchors_file;
+  int certify_every = 0, walk_depth = 12;
   double anchor_weight = 1;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -75,6 +79,8 @@ int main(int argc, char** argv)
     else if(a == "--arap") arap = true;
     else if(a == "--surface-arap") surface_arap = std::atoi(argv[++i]);
     else if(a == "--anchors") anchors_file = argv[++i];
+    else if(a == "--certify-every") certify_every = std::atoi(argv[++i]);
+    else if(a == "--walk-depth") walk_depth = std::atoi(argv[++i]);
     else if(a == "--anchor-weight") anchor_weight = std::atof(argv[++i]);
     else if(a == "--passes") passes = std::atoi(argv[++i]);
     else if(a == "--damping") damping = std::atof(argv[++i]);
@@ -166,6 +172,132 @@ int main(int argc, char** argv)
       std::vector<char> fixed(n, 0);
       for(SM_vertex v : lma) fixed[v.idx()] = 1;
       const double scale = std::sqrt(d.image_area / d.source_area);
+      // Certification of images on B (vertex i of A at q[i] on face qf[i] of B): A's corners in
+      // the disk, each from its old corner's location (the element g with g(z) in that face)
+      // and a walk over B's faces to the new face, composing the seam pairings met (the
+      // isometry taking an edge's two corners in one face's frame to the other's), then the
+      // exact certificate; on failure, every corner is moved a fraction alpha of the way along
+      // its geodesic, alpha halved until certified.
+      typedef HOT::Hyperbolic_isometry_2<double> Iso;
+      typedef std::complex<double> Cx;
+      const auto cx = [](const Point_2& p) { return Cx(p.x(), p.y()); };
+      const auto seam = [&](std::size_t f, std::size_t g, std::size_t u, std::size_t v) { // frame of f -> frame of g
+        Cx pf[2], pg[2];
+        for(int k = 0; k < 3; ++k) {
+          const std::size_t a = L.corner_vertex_index(f, k), b = L.corner_vertex_index(g, k);
+          if(a == u) pf[0] = cx(L.corner_point(f, k));
+          if(a == v) pf[1] = cx(L.corner_point(f, k));
+          if(b == u) pg[0] = cx(L.corner_point(g, k));
+          if(b == v) pg[1] = cx(L.corner_point(g, k));
+        }
+        if(pf[0] == pg[0] && pf[1] == pg[1]) return Iso();
+        const Iso tf = Iso::translation_to_origin(pf[0]), tg = Iso::translation_to_origin(pg[0]);
+        const double theta = std::arg(tg.apply(pg[1])) - std::arg(tf.apply(pf[1]));
+        return Iso::translation_from_origin(pg[0]) * Iso::rotation(theta) * tf;
+      };
+      const auto certify_images = [&](const std::vector<Eigen::Vector3d>& qq, const std::vector<SM_face>& qqf, int label) {
+        auto uvN = A.add_property_map<SM_halfedge, Point_2>("h:uv_refined", Point_2(0, 0)).first;
+        std::size_t lost = 0;
+        for(SM_halfedge h : halfedges(A)) {
+          if(is_border(h, A)) continue;
+          const std::size_t i = target(h, A).idx();
+          const auto l = L.locate(uvA[h]);
+          if(!l.success) { ++lost; continue; }
+          const std::size_t goal = qqf[i].idx();
+          // BFS from l.face_index to goal
+          std::map<std::size_t, Iso> S{{l.face_index, Iso()}};
+          std::vector<std::size_t> frontier{l.face_index};
+          for(int depth = 0; depth < walk_depth && !S.count(goal); ++depth) {
+            std::vector<std::size_t> next_frontier;
+            for(std::size_t f : frontier)
+              for(SM_halfedge e : halfedges_around_face(halfedge(SM_face(static_cast<SM::size_type>(f)), B), B)) {
+                const SM_face g = face(opposite(e, B), B);
+                if(g == SM_face() || S.count(g.idx())) continue;
+                S[g.idx()] = seam(f, g.idx(), source(e, B).idx(), target(e, B).idx()) * S[f];
+                next_frontier.push_back(g.idx());
+              }
+            frontier.swap(next_frontier);
+          }
+          if(!S.count(goal)) { ++lost; continue; }
+          // barycentric coordinates of qq[i] in the goal face, corners in the locator's order
+          Eigen::Vector3d P[3];
+          for(int k = 0; k < 3; ++k) { const K::Point_3 pp = B.point(L.vertex(L.corner_vertex_index(goal, k))); P[k] = Eigen::Vector3d(pp.x(), pp.y(), pp.z()); }
+          Eigen::Matrix<double, 3, 2> E; E.col(0) = P[1] - P[0]; E.col(1) = P[2] - P[0];
+          const Eigen::Vector2d st = (E.transpose() * E).ldlt().solve(E.transpose() * (qq[i] - P[0]));
+          std::array<double, 3> bc{{1 - st[0] - st[1], st[0], st[1]}};
+          double sum = 0;
+          for(double& x : bc) { x = std::max(x, 0.0); sum += x; }
+          for(double& x : bc) x /= sum;
+          const Point_2 z = L.disk_point(goal, bc);
+          const Iso g = S[goal] * l.element;
+          const Cx w = g.inverse().apply(cx(z));
+          uvN[h] = Point_2(w.real(), w.imag());
+        }
+        // local backtracking first: the corners of the vertices of faces oriented clockwise in
+        // the disk (double) go back to their old place, and their neighbours' too, repeatedly
+        {
+          const auto orient = [&](SM_face f) {
+            Cx z[3]; int k = 0;
+            for(SM_halfedge h : halfedges_around_face(halfedge(f, A), A)) z[k++] = cx(uvN[h]);
+            // det rows (2x, 2y, 1 + |z|^2)
+            const auto row = [](const Cx& w) { return std::array<double, 3>{{2 * w.real(), 2 * w.imag(), 1 + std::norm(w)}}; };
+            const auto a = row(z[0]), b = row(z[1]), c = row(z[2]);
+            return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+          };
+          std::vector<char> reverted(n, 0);
+          for(int round = 0; round < 50; ++round) {
+            std::vector<SM_vertex> bad;
+            for(SM_face f : faces(A)) if(!(orient(f) > 0)) for(SM_vertex v : vertices_around_face(halfedge(f, A), A)) bad.push_back(v);
+            if(bad.empty()) { std::printf("   local backtracking: %d rounds, %zu vertices reverted\n", round, (std::size_t)std::count(reverted.begin(), reverted.end(), 1)); break; }
+            for(SM_vertex v : bad) {
+              for(SM_vertex w : vertices_around_target(halfedge(v, A), A)) reverted[w.idx()] = 1;
+              reverted[v.idx()] = 1;
+            }
+            for(SM_halfedge h : halfedges(A)) if(!is_border(h, A) && reverted[target(h, A).idx()]) uvN[h] = uvA[h];
+          }
+        }
+        for(double alpha = 1; alpha > 1e-3; alpha *= 0.5) {
+          auto uvT = A.add_property_map<SM_halfedge, Point_2>("h:uv_try", Point_2(0, 0)).first;
+          for(SM_halfedge h : halfedges(A)) {
+            if(is_border(h, A)) continue;
+            const Iso m = Iso::translation_to_origin(cx(uvA[h]));
+            const Cx w = m.apply(cx(uvN[h]));
+            const double r = std::abs(w);
+            const Cx wa = r > 0 ? w / r * std::tanh(alpha * std::atanh(std::min(r, 1 - 1e-16))) : Cx(0, 0);
+            const Cx z = m.inverse().apply(wa);
+            uvT[h] = Point_2(z.real(), z.imag());
+          }
+          HOT::Embedding_certificate cert;
+          std::string msg;
+          const HOT::Error_code ec = HOT::certify_hyperbolic_orbifold_embedding(A, lma_o, uvT, cert, &msg);
+          std::printf("   certify (iteration %d, alpha %.4g): %s%s; %zu corners lost\n", label, alpha, ec == HOT::OK ? "" : msg.c_str(),
+                      ec == HOT::OK ? (cert.is_bijective() ? "bijective" : "NOT bijective") : "", lost);
+          if(ec == HOT::OK && !cert.is_bijective()) {
+            std::ostringstream os; os << cert; std::printf("     %s\n", os.str().c_str());
+          }
+          if(ec == HOT::OK && cert.is_bijective()) {
+            // the certified map's error
+            const auto locs2 = HOT::map_vertices(A, uvT, L);
+            double es = 0, ew = 0;
+            for(std::size_t i = 0; i < n; ++i) {
+              const double e = locs2[i].success ? std::sqrt(CGAL::squared_distance(HOT::surface_point(locs2[i], L, get(CGAL::vertex_point, B)), B.point(SM_vertex(static_cast<SM::size_type>(i))))) / diag : 1.0;
+              es += e; ew = std::max(ew, e);
+            }
+            std::printf("   certified map: mean %.3f%% worst %.2f%%\n", 100 * es / n, 100 * ew);
+            A.remove_property_map(uvT);
+            break;
+          }
+          A.remove_property_map(uvT);
+        }
+        A.remove_property_map(uvN);
+      };
+      {
+        // sanity: the harmonic map's own images give back a certified embedding
+        std::vector<Eigen::Vector3d> q0(n);
+        std::vector<SM_face> f0(n);
+        for(std::size_t i = 0; i < n; ++i) { q0[i] = Eigen::Vector3d(img[i].x(), img[i].y(), img[i].z()); f0[i] = locs[i].face; }
+        certify_images(q0, f0, 0);
+      }
       std::vector<std::pair<std::size_t, Eigen::Vector3d> > anchors;
       if(!anchors_file.empty()) {
         std::ifstream in(anchors_file);
@@ -237,6 +369,8 @@ int main(int argc, char** argv)
           std::ofstream o(std::getenv("DUMP"));
           for(std::size_t i = 0; i < n; ++i) o << i << " " << std::sqrt(CGAL::squared_distance(im[i], B.point(SM_vertex(static_cast<SM::size_type>(i))))) / diag << "\n";
         }
+        if(sa == surface_arap || (certify_every > 0 && sa % certify_every == 0))
+          certify_images(q, qf, sa);
         HOT::Map_distortion dd2 = HOT::map_distortion(A, im);
         std::printf("surface arap %d: mean %.3f%% worst %.2f%%  conformal p50 %.3f p90 %.3f p99 %.3f  area p99 %.3f  flipped? degenerate %zu (%.2f s)\n", sa,
                     100 * esum / n, 100 * eworst, dd2.conformal_summary.p50, dd2.conformal_summary.p90, dd2.conformal_summary.p99,
