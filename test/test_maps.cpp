@@ -1909,6 +1909,11 @@ TEST_CASE(distortion_of_identity)
   CHECK_NEAR(d.conformal_summary.max, 1, 1e-12);
   CHECK_NEAR(d.area_summary.max, 1, 1e-12);
   CHECK_NEAR(d.area_summary.mean, 1, 1e-12);
+  // the symmetric Dirichlet density of an isometry: 1 + 1 + 1 + 1 on every face
+  CHECK(d.symmetric_dirichlet.size() == num_faces(bear));
+  CHECK_NEAR(d.symmetric_dirichlet_summary.max, 4, 1e-11);
+  CHECK_NEAR(d.symmetric_dirichlet_summary.p50, 4, 1e-11);
+  CHECK_NEAR(d.symmetric_dirichlet_energy, 4, 1e-11);
   CHECK_NEAR(d.image_area, d.source_area, 1e-12 * d.source_area);
   CHECK(d.source_area > 0);
   { // any FaceGraph: the same on a Polyhedron_3 (handles as descriptors), scaled by 2 (exact in binary)
@@ -1979,6 +1984,13 @@ TEST_CASE(distortion_of_linear_maps)
     CHECK_NEAR(d.conformal_summary.max, s.first / s.second, tol * s.first / s.second);
     CHECK_NEAR(d.area_summary.max, 1, tol);
     CHECK_NEAR(d.image_area / d.source_area, s.first * s.second, tol * s.first * s.second);
+    // symmetric Dirichlet of the singular values scaled to keep the areas, s_i^2 = sigma_i^2 /
+    // (sigma1 sigma2): kappa + 1/kappa + 1/kappa + kappa, kappa = sigma1/sigma2, on every face
+    const double kappa = s.first / s.second, sd = 2 * (kappa + 1 / kappa);
+    double esd = 0;
+    for(double x : d.symmetric_dirichlet) esd = std::max(esd, std::abs(x - sd) / sd);
+    CHECK_MSG(esd < 4 * tol * kappa, c.name << ": symmetric Dirichlet off " << sd << " by " << esd << " (relative)");
+    CHECK_NEAR(d.symmetric_dirichlet_energy, sd, 4 * tol * kappa * sd);
   }
   // a linear map of 3D space restricted to the grid's plane: the singular values of L U (U = [u v])
   const double L[3][3] = {{1.5, 0.3, -0.2}, {0.1, 0.8, 0.4}, {0.0, -0.5, 1.2}};

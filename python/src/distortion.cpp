@@ -63,8 +63,11 @@ void register_distortion(py::module_& m)
       r["sigma2"] = owning_array(std::move(d.sigma2), shape);
       r["conformal"] = owning_array(std::move(d.conformal), shape);
       r["area"] = owning_array(std::move(d.area), shape);
+      r["symmetric_dirichlet"] = owning_array(std::move(d.symmetric_dirichlet), shape);
       r["conformal_summary"] = summary_dict(d.conformal_summary);
       r["area_summary"] = summary_dict(d.area_summary);
+      r["symmetric_dirichlet_summary"] = summary_dict(d.symmetric_dirichlet_summary);
+      r["symmetric_dirichlet_energy"] = d.symmetric_dirichlet_energy;
       r["degenerate_image_faces"] = d.degenerate_image_faces;
       r["degenerate_source_faces"] = d.degenerate_source_faces;
       r["unmapped_faces"] = d.unmapped_faces;
@@ -79,7 +82,10 @@ void register_distortion(py::module_& m)
     "sigma1 >= sigma2 of its differential, the conformal distortion sigma1/sigma2 and the area\n"
     "distortion sigma1 sigma2 / (image area / source area), each an (m,) float array; their\n"
     "percentiles 50, 90, 99, max and mean (conformal_summary, area_summary: the map report's\n"
-    "\"distortion\"); the counts of degenerate faces (inf where an image face is flat).");
+    "\"distortion\"); the symmetric Dirichlet density s1^2 + s2^2 + 1/s1^2 + 1/s2^2 of the\n"
+    "singular values scaled to the total areas (symmetric_dirichlet, its summary, and\n"
+    "symmetric_dirichlet_energy, its area-weighted mean: 4 for an isometry up to scale); the counts\n"
+    "of degenerate faces (inf where an image face is flat).");
 }
 
 } // namespace hot_python

@@ -18,6 +18,7 @@ def test_identity_and_similarity(meshes):
     d = hot.map_distortion(V, F, V)
     assert np.all(d["sigma1"] == 1) and np.all(d["sigma2"] == 1)  # (the identity, exactly: see map_distortion.h)
     assert d["conformal_summary"]["max"] == 1 and d["area_summary"]["max"] == 1
+    assert np.all(d["symmetric_dirichlet"] == 4) and d["symmetric_dirichlet_energy"] == pytest.approx(4, rel=1e-14)
     # a rotation and a scaling by 2.5: singular values 2.5, conformal 1, normalised area 1
     c, s = np.cos(0.7), np.sin(0.7)
     R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
@@ -46,6 +47,10 @@ def test_linear_map_of_a_flat_grid():
     assert np.allclose(d["sigma1"], sv[0], rtol=1e-12) and np.allclose(d["sigma2"], sv[1], rtol=1e-12)
     assert np.allclose(d["conformal"], sv[0] / sv[1], rtol=1e-12)
     assert np.allclose(d["area"], 1, rtol=1e-12)  # a uniform area change, normalised away
+    # symmetric Dirichlet of the singular values scaled to keep the areas: 2 (kappa + 1/kappa)
+    kappa = sv[0] / sv[1]
+    assert np.allclose(d["symmetric_dirichlet"], 2 * (kappa + 1 / kappa), rtol=1e-11)
+    assert d["symmetric_dirichlet_energy"] == pytest.approx(2 * (kappa + 1 / kappa), rel=1e-11)
     # a face collapsed by two vertices sent to one point: conformal infinity, counted, no NaN
     W2 = W.copy()
     W2[1] = W2[0]
@@ -69,7 +74,9 @@ def test_the_numbers_of_the_cli_map_report(cli, meshes, source_dir, tmp_path):
     eb = hot.embed(VB, FB, lm, order=ea.landmark_order)
     faces, bary = hot.map(ea, eb)
     d = hot.map_distortion(VA, FA, hot.surface_points(faces, bary, VB, FB))
-    for kind in ("conformal", "area"):
+    for kind in ("conformal", "area", "symmetric_dirichlet"):
         for key in ("p50", "p90", "p99", "max", "mean"):
             assert d[kind + "_summary"][key] == pytest.approx(report[kind][key], rel=1e-12)
+    assert d["symmetric_dirichlet_energy"] == pytest.approx(report["symmetric_dirichlet_energy"], rel=1e-12)
+    assert report["symmetric_dirichlet_energy"] >= 4  # (s^2 + 1/s^2 >= 2 for each singular value)
     assert d["conformal_summary"]["p50"] >= 1  # sigma1 >= sigma2

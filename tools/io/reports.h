@@ -273,6 +273,10 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
   write_distortion_summary_json(os, m.distortion.conformal_summary);
   os << ",\n                 \"area\": ";
   write_distortion_summary_json(os, m.distortion.area_summary);
+  os << ",\n                 \"symmetric_dirichlet\": ";
+  write_distortion_summary_json(os, m.distortion.symmetric_dirichlet_summary);
+  os << ", \"symmetric_dirichlet_energy\": ";
+  write_json_number(os, m.distortion.symmetric_dirichlet_energy);
   os << ",\n                 \"faces\": " << m.distortion.conformal_summary.number_of_faces
      << ", \"degenerate_faces\": " << m.distortion.number_of_degenerate_faces() << "},\n"
      << "  \"squeezed_regions\": [";

@@ -82,12 +82,21 @@ struct Map_distortion
   std::vector<double> sigma2;    ///< the smaller singular value \f$\sigma_2\f$ (the smallest stretch)
   std::vector<double> conformal; ///< \f$\sigma_1/\sigma_2 \geq 1\f$ (\f$+\infty\f$ when \f$\sigma_2 = 0\f$)
   std::vector<double> area;      ///< \f$\sigma_1\sigma_2\f$ divided by `image_area / source_area` (1 for a map that scales every area alike)
+  /// the symmetric Dirichlet density \f$s_1^2 + s_2^2 + s_1^{-2} + s_2^{-2}\f$ of the singular values
+  /// scaled to the total areas, \f$s_i = \sigma_i / \sqrt{\mathrm{image\_area} / \mathrm{source\_area}}\f$:
+  /// 4 for an isometry up to that one scale, larger otherwise (\f$2(\kappa + 1/\kappa)\f$ for a
+  /// linear map of conformal distortion \f$\kappa\f$ that keeps the areas; \f$+\infty\f$ when \f$\sigma_2 = 0\f$)
+  std::vector<double> symmetric_dirichlet;
   /// @}
 
   /// \name Summaries (over the faces measured: all but the degenerate source faces and the unmapped ones)
   /// @{
   Distortion_summary conformal_summary; ///< of `conformal`
   Distortion_summary area_summary;      ///< of `area`
+  Distortion_summary symmetric_dirichlet_summary; ///< of `symmetric_dirichlet`
+  /// the symmetric Dirichlet energy: the mean of `symmetric_dirichlet` weighted by the faces'
+  /// areas in `A` (4 for an isometry up to scale; \f$+\infty\f$ when a measured image face is degenerate)
+  double symmetric_dirichlet_energy = 0;
   /// @}
 
   /// \name Counts and areas
@@ -188,7 +197,9 @@ Map_distortion map_distortion(const TriangleMesh& A, VertexPointMap vpm, const s
   r.sigma2.assign(nf, 0.0);
   r.conformal.assign(nf, inf);
   r.area.assign(nf, inf);
+  r.symmetric_dirichlet.assign(nf, inf);
   std::vector<char> measured(nf, 0);
+  std::vector<double> face_area(nf, 0.0);
   std::size_t i = 0;
   for(face_descriptor f : faces(A)) {
     const std::size_t fi = i++;
@@ -228,22 +239,33 @@ Map_distortion map_distortion(const TriangleMesh& A, VertexPointMap vpm, const s
       ++r.degenerate_image_faces;
     r.source_area += 0.5 * sa2;
     r.image_area += 0.5 * ia2;
+    face_area[fi] = 0.5 * sa2;
   }
   // normalisation: a map that scales every area alike has area distortion 1 (ratio 1 when
   // either area is 0 or not finite)
   const double ratio = r.source_area > 0 && r.image_area > 0 && std::isfinite(r.image_area) && std::isfinite(r.source_area)
                          ? r.image_area / r.source_area : 1.0;
-  std::vector<double> conformal, area;
+  std::vector<double> conformal, area, symmetric;
   conformal.reserve(nf);
   area.reserve(nf);
+  symmetric.reserve(nf);
+  double weighted = 0;
   for(std::size_t k = 0; k < nf; ++k)
     if(measured[k]) {
       r.area[k] = r.area[k] / ratio;
+      if(r.sigma2[k] > 0) { // (s1^2 + s2^2 + 1/s1^2 + 1/s2^2, s_i = sigma_i / sqrt(ratio))
+        const double a = r.sigma1[k] * r.sigma1[k] / ratio, b = r.sigma2[k] * r.sigma2[k] / ratio;
+        r.symmetric_dirichlet[k] = a + b + 1 / a + 1 / b;
+      }
+      weighted += face_area[k] * r.symmetric_dirichlet[k];
       conformal.push_back(r.conformal[k]);
       area.push_back(r.area[k]);
+      symmetric.push_back(r.symmetric_dirichlet[k]);
     }
+  r.symmetric_dirichlet_energy = r.source_area > 0 ? weighted / r.source_area : 0;
   r.conformal_summary = summarize_distortion(conformal);
   r.area_summary = summarize_distortion(area);
+  r.symmetric_dirichlet_summary = summarize_distortion(symmetric);
   return r;
 }
 
@@ -256,8 +278,10 @@ computes the per-face distortion of a map of the mesh `A` given by the image of 
 vertices (\ref HOT_Distortion): on every face, the singular values \f$\sigma_1 \geq \sigma_2\f$
 of the linear map from the face's plane to the plane of the image triangle (each in an
 orthonormal frame) that sends the face's corners to their images, the conformal distortion
-\f$\sigma_1/\sigma_2\f$ and the area distortion \f$\sigma_1\sigma_2\f$ normalised by the
-ratio of the total areas, and their percentiles. This variant takes the images as points
+\f$\sigma_1/\sigma_2\f$, the area distortion \f$\sigma_1\sigma_2\f$ normalised by the
+ratio of the total areas, the symmetric Dirichlet density of the singular values scaled to
+that ratio, their percentiles, and the symmetric Dirichlet energy (the density's mean
+weighted by area). This variant takes the images as points
 (e.g. from another program, or `surface_point()` of each location);
 `map_distortion(A, B, locB, locations)` computes them from a vertex map.
 
