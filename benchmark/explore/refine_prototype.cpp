@@ -144,6 +144,60 @@ int main(int argc, char** argv)
   SM_edge dummy;
   (void)dummy;
   std::vector<double> w(num_edges(A), 1.0);
+  // the tangent basis of B's face `b` (in the locator's face order)
+  const auto tangent_basis = [&](std::size_t b) {
+    Eigen::Vector3d P[3];
+    for(int k = 0; k < 3; ++k) { const K::Point_3 p = B.point(L.vertex(L.corner_vertex_index(b, k))); P[k] = Eigen::Vector3d(p.x(), p.y(), p.z()); }
+    const Eigen::Vector3d t1 = (P[1] - P[0]).normalized(), nrm = (P[1] - P[0]).cross(P[2] - P[0]).normalized();
+    Eigen::Matrix<double, 3, 2> T;
+    T.col(0) = t1;
+    T.col(1) = nrm.cross(t1);
+    return T;
+  };
+  // one ARAP global step of the images q (moves in the tangent planes T, `fixed` vertices kept,
+  // rotations scaled by `scale`, soft anchors of weight `anchor_w`): the 2n moves
+  const auto arap_step = [&](const std::vector<Eigen::Vector3d>& q, const std::vector<Eigen::Matrix<double, 3, 2> >& T,
+                             const std::vector<char>& fixed, double scale,
+                             const std::vector<std::pair<std::size_t, Eigen::Vector3d> >& anchors, double anchor_w) {
+    typedef Eigen::Triplet<double> Tr;
+    std::vector<Tr> trip;
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
+    for(SM_face f : faces(A)) {
+      const auto& c = fv[f.idx()];
+      const Eigen::Matrix2d XiT = X[f.idx()].inverse().transpose();
+      Eigen::Vector2d g[3];
+      g[1] = XiT.col(0); g[2] = XiT.col(1); g[0] = -(g[1] + g[2]);
+      const double a = 0.5 * X[f.idx()].determinant();
+      Eigen::Matrix<double, 3, 2> J = Eigen::Matrix<double, 3, 2>::Zero();
+      for(int j = 0; j < 3; ++j) J += q[c[j].idx()] * g[j].transpose();
+      Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2> > svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      const Eigen::Matrix<double, 3, 2> R = scale * svd.matrixU().leftCols<2>() * svd.matrixV().transpose();
+      const Eigen::Matrix<double, 3, 2> r = R - J;
+      for(int i = 0; i < 3; ++i) {
+        const std::size_t vi = c[i].idx();
+        if(fixed[vi]) continue;
+        rhs.segment<2>(2 * vi) += a * T[vi].transpose() * r * g[i];
+        for(int j = 0; j < 3; ++j) {
+          const std::size_t vj = c[j].idx();
+          if(fixed[vj]) continue;
+          const Eigen::Matrix2d Hb = a * g[i].dot(g[j]) * T[vi].transpose() * T[vj];
+          for(int r0 = 0; r0 < 2; ++r0) for(int c0 = 0; c0 < 2; ++c0) trip.emplace_back(2 * vi + r0, 2 * vj + c0, Hb(r0, c0));
+        }
+        if(damping > 0) { trip.emplace_back(2 * vi, 2 * vi, damping * a); trip.emplace_back(2 * vi + 1, 2 * vi + 1, damping * a); }
+      }
+    }
+    for(std::size_t i = 0; i < n; ++i) if(fixed[i]) { trip.emplace_back(2 * i, 2 * i, 1.0); trip.emplace_back(2 * i + 1, 2 * i + 1, 1.0); }
+    for(const auto& an : anchors) { // ("vertex face x y z" lines of --anchors)
+      const std::size_t v = an.first;
+      if(fixed[v]) continue;
+      for(int r0 = 0; r0 < 2; ++r0) trip.emplace_back(2 * v + r0, 2 * v + r0, anchor_w);
+      rhs.segment<2>(2 * v) += anchor_w * T[v].transpose() * (an.second - q[v]);
+    }
+    Eigen::SparseMatrix<double> H(2 * n, 2 * n);
+    H.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt(H);
+    return Eigen::VectorXd(ldlt.solve(rhs));
+  };
   for(int it = 0; it <= iterations; ++it) {
     const auto ti = Clock::now();
     const auto locs = HOT::map_vertices(A, uvA, L);
@@ -307,53 +361,9 @@ int main(int argc, char** argv)
       for(int sa = 1; sa <= surface_arap; ++sa) {
         const auto ts = Clock::now();
         std::vector<Eigen::Matrix<double, 3, 2> > T(n);
-        for(std::size_t i = 0; i < n; ++i) {
-          const SM_halfedge h = halfedge(qf[i], B);
-          const K::Point_3 p0 = B.point(source(h, B)), p1 = B.point(target(h, B)), p2 = B.point(target(next(h, B), B));
-          const Eigen::Vector3d P0(p0.x(), p0.y(), p0.z()), P1(p1.x(), p1.y(), p1.z()), P2(p2.x(), p2.y(), p2.z());
-          const Eigen::Vector3d t1 = (P1 - P0).normalized(), nrm = (P1 - P0).cross(P2 - P0).normalized();
-          T[i].col(0) = t1; T[i].col(1) = nrm.cross(t1);
-        }
-        typedef Eigen::Triplet<double> Tr;
-        std::vector<Tr> trip;
-        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
-        for(SM_face f : faces(A)) {
-          const auto& c = fv[f.idx()];
-          const Eigen::Matrix2d XiT = X[f.idx()].inverse().transpose();
-          Eigen::Vector2d g[3];
-          g[1] = XiT.col(0); g[2] = XiT.col(1); g[0] = -(g[1] + g[2]);
-          const double a = 0.5 * X[f.idx()].determinant();
-          Eigen::Matrix<double, 3, 2> J = Eigen::Matrix<double, 3, 2>::Zero();
-          for(int j = 0; j < 3; ++j) J += q[c[j].idx()] * g[j].transpose();
-          Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2> > svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-          const Eigen::Matrix<double, 3, 2> R = scale * svd.matrixU().leftCols<2>() * svd.matrixV().transpose();
-          const Eigen::Matrix<double, 3, 2> r = R - J;
-          for(int i = 0; i < 3; ++i) {
-            const std::size_t vi = c[i].idx();
-            if(fixed[vi]) continue;
-            rhs.segment<2>(2 * vi) += a * T[vi].transpose() * r * g[i];
-            for(int j = 0; j < 3; ++j) {
-              const std::size_t vj = c[j].idx();
-              if(fixed[vj]) continue;
-              const Eigen::Matrix2d Hb = a * g[i].dot(g[j]) * T[vi].transpose() * T[vj];
-              for(int r0 = 0; r0 < 2; ++r0) for(int c0 = 0; c0 < 2; ++c0) trip.emplace_back(2 * vi + r0, 2 * vj + c0, Hb(r0, c0));
-            }
-            if(damping > 0) { trip.emplace_back(2 * vi, 2 * vi, damping * a); trip.emplace_back(2 * vi + 1, 2 * vi + 1, damping * a); }
-          }
-        }
-        for(std::size_t i = 0; i < n; ++i) if(fixed[i]) { trip.emplace_back(2 * i, 2 * i, 1.0); trip.emplace_back(2 * i + 1, 2 * i + 1, 1.0); }
-        // soft anchors (--anchors: "vertex face x y z" lines): weight x the mean face area
-        for(const auto& an : anchors) {
-          const std::size_t v = an.first;
-          if(fixed[v]) continue;
-          const double wgt = anchor_weight * d.source_area / nf;
-          for(int r0 = 0; r0 < 2; ++r0) trip.emplace_back(2 * v + r0, 2 * v + r0, wgt);
-          rhs.segment<2>(2 * v) += wgt * T[v].transpose() * (an.second - q[v]);
-        }
-        Eigen::SparseMatrix<double> H(2 * n, 2 * n);
-        H.setFromTriplets(trip.begin(), trip.end());
-        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt(H);
-        const Eigen::VectorXd dd = ldlt.solve(rhs);
+        for(std::size_t i = 0; i < n; ++i) T[i] = tangent_basis(qf[i].idx());
+        // soft anchors: weight x the mean face area
+        const Eigen::VectorXd dd = arap_step(q, T, fixed, scale, anchors, anchor_weight * d.source_area / nf);
         std::vector<K::Point_3> im(n);
         double esum = 0, eworst = 0;
         for(std::size_t i = 0; i < n; ++i) {
@@ -388,47 +398,9 @@ int main(int argc, char** argv)
       std::vector<Eigen::Vector3d> q(n);
       for(std::size_t i = 0; i < n; ++i) {
         q[i] = Eigen::Vector3d(img[i].x(), img[i].y(), img[i].z());
-        const std::size_t b = locs[i].face_index;
-        Eigen::Vector3d P[3];
-        for(int k = 0; k < 3; ++k) { const K::Point_3 p = B.point(L.vertex(L.corner_vertex_index(b, k))); P[k] = Eigen::Vector3d(p.x(), p.y(), p.z()); }
-        const Eigen::Vector3d t1 = (P[1] - P[0]).normalized();
-        const Eigen::Vector3d nrm = (P[1] - P[0]).cross(P[2] - P[0]).normalized();
-        T[i].col(0) = t1;
-        T[i].col(1) = nrm.cross(t1);
+        T[i] = tangent_basis(locs[i].face_index);
       }
-      typedef Eigen::Triplet<double> Tr;
-      std::vector<Tr> trip;
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
-      for(SM_face f : faces(A)) {
-        const auto& c = fv[f.idx()];
-        const Eigen::Matrix2d XiT = X[f.idx()].inverse().transpose();
-        Eigen::Vector2d g[3];
-        g[1] = XiT.col(0); g[2] = XiT.col(1); g[0] = -(g[1] + g[2]);
-        const double a = 0.5 * X[f.idx()].determinant();
-        Eigen::Matrix<double, 3, 2> J = Eigen::Matrix<double, 3, 2>::Zero();
-        for(int j = 0; j < 3; ++j) J += q[c[j].idx()] * g[j].transpose();
-        Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2> > svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-        const Eigen::Matrix<double, 3, 2> R = scale * svd.matrixU().leftCols<2>() * svd.matrixV().transpose();
-        const Eigen::Matrix<double, 3, 2> r = R - J;
-        for(int i = 0; i < 3; ++i) {
-          const std::size_t vi = c[i].idx();
-          if(fixed[vi]) continue;
-          const Eigen::Vector2d ri = a * T[vi].transpose() * r * g[i];
-          rhs.segment<2>(2 * vi) += ri;
-          for(int j = 0; j < 3; ++j) {
-            const std::size_t vj = c[j].idx();
-            if(fixed[vj]) continue;
-            const Eigen::Matrix2d Hb = a * g[i].dot(g[j]) * T[vi].transpose() * T[vj];
-            for(int r0 = 0; r0 < 2; ++r0) for(int c0 = 0; c0 < 2; ++c0) trip.emplace_back(2 * vi + r0, 2 * vj + c0, Hb(r0, c0));
-          }
-          if(damping > 0) { trip.emplace_back(2 * vi, 2 * vi, damping * a); trip.emplace_back(2 * vi + 1, 2 * vi + 1, damping * a); }
-        }
-      }
-      for(std::size_t i = 0; i < n; ++i) if(fixed[i]) { trip.emplace_back(2 * i, 2 * i, 1.0); trip.emplace_back(2 * i + 1, 2 * i + 1, 1.0); }
-      Eigen::SparseMatrix<double> H(2 * n, 2 * n);
-      H.setFromTriplets(trip.begin(), trip.end());
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt(H);
-      const Eigen::VectorXd dd = ldlt.solve(rhs);
+      const Eigen::VectorXd dd = arap_step(q, T, fixed, scale, {}, 0);
       std::vector<Eigen::Vector3d> qs(n);
       double moved = 0;
       for(std::size_t i = 0; i < n; ++i) { qs[i] = q[i] + step * T[i] * dd.segment<2>(2 * i); moved = std::max(moved, (qs[i] - q[i]).norm()); }
