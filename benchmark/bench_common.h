@@ -11,10 +11,12 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/hyperbolic_orbifold_Tutte.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -27,6 +29,13 @@ typedef std::chrono::steady_clock Clock;
 
 /// wall time since `t`, in seconds
 inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// the diagonal of the bounding box of `m`
+inline double diagonal(const SM& m)
+{
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(m);
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
+}
 
 /// the process's peak resident memory so far, in MiB
 inline double peak_rss_mb()

@@ -38,12 +38,6 @@ typedef K::Point_2 Point_2;
 typedef SM::Property_map<SM_halfedge, Point_2> UV;
 typedef HOT::Embedding_locator<SM, UV> Locator;
 
-static double diagonal(const SM& m)
-{
-  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(m);
-  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
-}
-
 static bool read_indices(const std::string& file, std::vector<std::size_t>& out)
 {
   std::ifstream in(file);

@@ -54,18 +54,21 @@ inline void require(const HOT::Status& r)
 class Options
 {
 public:
+  // `flags` take no value; `optional` take one when the next argument is not an option
+  // (get() then answers "" without it)
   Options(int argc, char** argv, int first, const std::set<std::string>& known,
-          const std::set<std::string>& flags = std::set<std::string>())
+          const std::set<std::string>& flags = std::set<std::string>(), const std::set<std::string>& optional = std::set<std::string>())
   {
     for(int i = first; i < argc; ++i) {
       const std::string a = argv[i];
       if(a.size() < 3 || a.compare(0, 2, "--") != 0)
         throw Usage_error{"unexpected argument '" + a + "'"};
       const std::string name = a.substr(2);
-      if(flags.count(name)) {
+      if(flags.count(name) || optional.count(name)) {
         if(values_.count(name))
           throw Usage_error{"option '" + a + "' given twice"};
-        values_[name] = "1";
+        const bool value = optional.count(name) && i + 1 < argc && std::string(argv[i + 1]).compare(0, 2, "--") != 0;
+        values_[name] = value ? std::string(argv[++i]) : flags.count(name) ? "1" : "";
         continue;
       }
       if(!known.count(name))

@@ -19,6 +19,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
@@ -789,9 +790,13 @@ int run_map(int argc, char** argv)
   const Options opt(argc, argv, 2,
                     {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole", "target-genus", "max-handle",
                      "cone-orders", "source-cut-graph", "target-cut-graph", "source-embedding", "target-embedding", "order"},
-                    repair_flags());
-  if(opt.has("source-embedding") || opt.has("target-embedding"))
+                    repair_flags(), {"refine"});
+  if(opt.has("source-embedding") || opt.has("target-embedding")) {
+    if(opt.has("refine"))
+      throw Usage_error{"--refine refines a map computed from the meshes, not from stored embeddings"};
     return run_map_stored(opt);
+  }
+  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
   const std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
@@ -818,11 +823,27 @@ int run_map(int argc, char** argv)
   const int k = static_cast<int>(order.size());
   const auto t0 = std::chrono::steady_clock::now();
   const Locator locB = target_locator(B);
-  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
+  std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
   const auto t1 = std::chrono::steady_clock::now();
+  HOT::Map_distortion distortion_before;
+  HOT::Map_refinement_statistics refinement;
+  if(refine > 0) { // (A's embedding moves: everything below reads the refined map)
+    if(genus_of(A) > 0 || !A.stats.charts.empty())
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, std::string("--refine handles maps of genus 0 whose source is embedded without charts; the source ") +
+                                                (genus_of(A) > 0 ? "has genus " + std::to_string(genus_of(A)) : std::string("is embedded partly in charts around cone images"))};
+    distortion_before = HOT::map_distortion(A.mesh, B.mesh, locB, f);
+    const HOT::Error_code ec = HOT::refine_orbifold_map(A.mesh, A.ordered, A.uv, B.mesh, locB, refinement,
+      HOT::parameters::refine(refine, HOT::parameters::frame(A.stats.frame, HOT::parameters::cone_orders(A.stats.cone_orders, HOT::parameters::orbifold_type(A.type)))));
+    if(ec != HOT::OK)
+      throw Failure{ec, "--refine: " + refinement.message};
+    f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
+    for(std::size_t i = 0; i < f.size(); ++i)
+      if(!f[i].success)
+        throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target after the refinement"};
+  }
   const HOT::Map_reliability reliability = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
   hot_tools::Map_summary summary = map_summary(opt, A, B, k, reliability);
   summary.images_in_filled_holes = images_in_filled_holes(A, B, f);
@@ -835,6 +856,9 @@ int run_map(int argc, char** argv)
   const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
   summary.distortion = HOT::map_distortion(A.mesh, B.mesh, locB, f);
   summary.seconds_distortion = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
+  summary.refined = refine > 0;
+  summary.refinement = refinement;
+  summary.distortion_before = distortion_before;
   Output_files files;
   files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, addressing(A.in)); });
   if(opt.has("report"))
@@ -853,6 +877,9 @@ int run_map(int argc, char** argv)
   std::cout << " (" << order_origin(chosen);
   for(const std::string& r : refusals) std::cout << "; " << r;
   std::cout << ")" << std::endl;
+  if(refine > 0)
+    std::cout << "refined: " << refinement.iterations << " certified iterations, symmetric Dirichlet energy " << refinement.energy_before
+              << " -> " << refinement.energy_after << " (4 for an isometry), " << refinement.seconds << " s; " << refinement.message << std::endl;
   std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << opt.get("source") << " onto "
             << opt.get("target") << "; wrote " << out << std::endl;
   if(!summary.unreliable.empty())

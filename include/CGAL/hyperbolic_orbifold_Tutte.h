@@ -38,6 +38,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_distortion.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H

@@ -12,6 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_distortion.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Map_refinement_statistics.h>
 
 #include <cstddef>
 #include "prepared_input.h"
@@ -241,7 +242,34 @@ struct Map_summary
   // repair added to close a hole (Mesh_preparation::filled_faces): not a point of the target
   // file's surface
   std::vector<std::size_t> images_in_filled_holes;
+  // map --refine: what refine_orbifold_map() did and the distortion before it (`distortion`
+  // is then the refined map's); not written when `refined` is false
+  bool refined = false;
+  HOT::Map_refinement_statistics refinement;
+  HOT::Map_distortion distortion_before;
 };
+
+// map --refine's block of the report: the refinement's statistics and the distortion before it
+inline void write_refinement_json(std::ostream& os, const HOT::Map_refinement_statistics& r, const HOT::Map_distortion& before)
+{
+  static const char* const stops[] = {"not_run", "iterations", "converged", "certificate", "solver"};
+  os << "  \"refinement\": {\"iterations\": " << r.iterations << ", \"stop\": \"" << stops[r.stop] << "\", \"message\": \""
+     << json_escape(r.message) << "\",\n                 \"symmetric_dirichlet_energy_before\": ";
+  write_json_number(os, r.energy_before);
+  os << ", \"symmetric_dirichlet_energy_after\": ";
+  write_json_number(os, r.energy_after);
+  os << ", \"free_vertices\": " << r.free_vertices << ", \"undone_moves\": " << r.undone_moves
+     << ",\n                 \"seconds\": " << r.seconds << ", \"seconds_certificate\": " << r.seconds_certificate
+     << ",\n                 \"distortion_before\": {\"conformal\": ";
+  write_distortion_summary_json(os, before.conformal_summary);
+  os << ",\n                                       \"area\": ";
+  write_distortion_summary_json(os, before.area_summary);
+  os << ",\n                                       \"symmetric_dirichlet\": ";
+  write_distortion_summary_json(os, before.symmetric_dirichlet_summary);
+  os << ", \"symmetric_dirichlet_energy\": ";
+  write_json_number(os, before.symmetric_dirichlet_energy);
+  os << "}},\n";
+}
 
 // Writes the report of `map`.
 inline void write_map_report(std::ostream& os, const Map_summary& m)
@@ -278,8 +306,10 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
   os << ", \"symmetric_dirichlet_energy\": ";
   write_json_number(os, m.distortion.symmetric_dirichlet_energy);
   os << ",\n                 \"faces\": " << m.distortion.conformal_summary.number_of_faces
-     << ", \"degenerate_faces\": " << m.distortion.number_of_degenerate_faces() << "},\n"
-     << "  \"squeezed_regions\": [";
+     << ", \"degenerate_faces\": " << m.distortion.number_of_degenerate_faces() << "},\n";
+  if(m.refined)
+    write_refinement_json(os, m.refinement, m.distortion_before);
+  os << "  \"squeezed_regions\": [";
   for(std::size_t i = 0; i < m.regions.size(); ++i) {
     const HOT::Squeezed_region& r = m.regions[i];
     os << (i ? "," : "") << "\n    {\"vertices\": " << r.number_of_vertices << ", \"source_vertex\": " << m.region_vertices[i].first

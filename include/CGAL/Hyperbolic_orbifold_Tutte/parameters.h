@@ -49,6 +49,7 @@ enum maximum_debris_fraction_t { maximum_debris_fraction };
 enum target_genus_t { target_genus };
 enum maximum_handle_length_t { maximum_handle_length };
 enum multigrid_threshold_t { multigrid_threshold };
+enum refine_t { refine };
 } // namespace internal_np
 
 namespace parameters {
@@ -144,6 +145,8 @@ CGAL_HOT_NAMED_PARAMETER(target_genus)
 /// cut, as a fraction of the diagonal of the bounding box; a handle whose shortest loop found
 /// is longer is an error (default 0.2)
 CGAL_HOT_NAMED_PARAMETER(maximum_handle_length)
+/// `int`: for `refine_orbifold_map()`, the largest number of refinement iterations (default 100)
+CGAL_HOT_NAMED_PARAMETER(refine)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 

@@ -1,0 +1,136 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// refine_orbifold_map() on pose pairs with a ground truth (vertex i of A <-> vertex i of B, the
+// same triangulation): error against the truth in % of B's bounding-box diagonal (mean, worst
+// vertex), the map's distortion (conformal and area p99, symmetric Dirichlet energy) before and
+// after, the independent certificate of the refined embedding, and the times (the refinement
+// against the two embeddings and the map, measured in this run).
+//   bench_refine A.off LA B.off LB [ROWS] [--iterations N]
+// LA, LB: landmark files (one vertex index per line, line j of LA corresponds to line j of LB);
+// ROWS: an optional file of 0-based rows of LA/LB to use (e.g. tosca_wolf.suggested_rows7.txt).
+#include "bench_common.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+typedef K::Point_2 Point_2;
+typedef SM::Property_map<SM_halfedge, Point_2> UV;
+typedef HOT::Embedding_locator<SM, UV> Locator;
+
+static std::vector<std::size_t> read_indices(const std::string& file)
+{
+  std::ifstream in(file);
+  std::vector<std::size_t> out;
+  std::size_t i;
+  while(in >> i)
+    out.push_back(i);
+  return out;
+}
+
+struct Figures
+{
+  double mean = 0, worst = 0;
+  HOT::Map_distortion d;
+};
+
+static Figures measure(const SM& A, const UV& uvA, const SM& B, const Locator& L)
+{
+  const auto locs = HOT::map_vertices(A, uvA, L);
+  Figures r;
+  const double diag = diagonal(B);
+  for(SM_vertex v : vertices(A)) {
+    const K::Point_3 p = HOT::surface_point(locs[v.idx()], L, get(CGAL::vertex_point, B));
+    const double e = std::sqrt(CGAL::squared_distance(p, B.point(v))) / diag;
+    r.mean += e / num_vertices(A);
+    r.worst = (std::max)(r.worst, e);
+  }
+  r.d = HOT::map_distortion(A, B, L, locs);
+  return r;
+}
+
+static void print(const char* what, const Figures& f)
+{
+  std::printf("  %-8s error mean %.3f%% worst %.2f%%  conformal p99 %.3f  area p99 %.3f  symmetric Dirichlet %.4f\n", what,
+              100 * f.mean, 100 * f.worst, f.d.conformal_summary.p99, f.d.area_summary.p99, f.d.symmetric_dirichlet_energy);
+}
+
+int main(int argc, char** argv)
+{
+  std::vector<std::string> args;
+  int iterations = 100;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--iterations" && i + 1 < argc)
+      iterations = std::atoi(argv[++i]);
+    else
+      args.push_back(a);
+  }
+  SM A, B;
+  if(args.size() < 4 || !CGAL::IO::read_polygon_mesh(args[0], A) || !CGAL::IO::read_polygon_mesh(args[2], B) ||
+     num_vertices(A) != num_vertices(B)) {
+    std::printf("usage: bench_refine A.off LA B.off LB [ROWS] [--iterations N] (A and B with the same vertices)\n");
+    return 1;
+  }
+  std::vector<std::size_t> la = read_indices(args[1]), lb = read_indices(args[3]);
+  if(args.size() > 4) {
+    std::vector<std::size_t> a2, b2;
+    for(std::size_t r : read_indices(args[4])) {
+      a2.push_back(la.at(r));
+      b2.push_back(lb.at(r));
+    }
+    la = a2;
+    lb = b2;
+  }
+  std::vector<SM_vertex> lma, lmb;
+  for(std::size_t i = 0; i < la.size(); ++i) {
+    lma.push_back(SM_vertex(static_cast<SM::size_type>(la[i])));
+    lmb.push_back(SM_vertex(static_cast<SM::size_type>(lb[i])));
+  }
+  UV uvA = A.add_property_map<SM_halfedge, Point_2>("h:uv", Point_2(0, 0)).first;
+  UV uvB = B.add_property_map<SM_halfedge, Point_2>("h:uv", Point_2(0, 0)).first;
+  HOT::Embedding_statistics sa, sb;
+  const auto t0 = Clock::now();
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(A, lma, uvA, HOT::parameters::embedding_statistics(&sa, HOT::parameters::landmark_order(HOT::Tsp_order))) != HOT::OK) {
+    std::printf("A refused: %s\n", sa.message.c_str());
+    return 1;
+  }
+  std::vector<SM_vertex> lma_o, lmb_o;
+  for(std::size_t i : sa.landmark_order) {
+    lma_o.push_back(lma[i]);
+    lmb_o.push_back(lmb[i]);
+  }
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(B, lmb_o, uvB, HOT::parameters::embedding_statistics(&sb)) != HOT::OK) {
+    std::printf("B refused: %s\n", sb.message.c_str());
+    return 1;
+  }
+  const HOT::Orbifold_type type = CGAL::is_closed(B) ? HOT::Sphere_type : HOT::Disk_type;
+  const Locator L(B, uvB, type, static_cast<int>(la.size()), HOT::Hyperboloid_linear);
+  const Figures before = measure(A, uvA, B, L);
+  const double t_map = seconds_since(t0);
+  HOT::Map_refinement_statistics rs;
+  const HOT::Error_code ec = HOT::refine_orbifold_map(A, lma_o, uvA, B, L, rs,
+                                                      HOT::parameters::refine(iterations, HOT::parameters::frame(sa.frame, HOT::parameters::orbifold_type(type))));
+  if(ec != HOT::OK) {
+    std::printf("refinement refused: %s\n", rs.message.c_str());
+    return 1;
+  }
+  HOT::Embedding_certificate cert;
+  std::string why;
+  const bool certified = HOT::certify_hyperbolic_orbifold_embedding(A, lma_o, uvA, cert, &why,
+                                                                    HOT::parameters::frame(sa.frame, HOT::parameters::orbifold_type(type))) == HOT::OK &&
+                         cert.is_bijective();
+  const Figures after = measure(A, uvA, B, L);
+  std::printf("%s -> %s, %zu vertices, %zu landmarks\n", args[0].c_str(), args[2].c_str(), num_vertices(A), la.size());
+  print("harmonic", before);
+  print("refined", after);
+  std::printf("  refinement: %d iterations (%s), symmetric Dirichlet energy %.5f -> %.5f, %zu of %zu free vertices' moves undone in the last\n",
+              rs.iterations, rs.message.c_str(), rs.energy_before, rs.energy_after, rs.undone_moves, rs.free_vertices);
+  std::printf("  independent certificate of the refined embedding: %s\n", certified ? "bijective" : why.c_str());
+  std::printf("  time: embed both + map %.2f s, refine %.2f s (certificates %.2f s), ratio %.2f\n", t_map, rs.seconds, rs.seconds_certificate,
+              rs.seconds / t_map);
+  return certified ? 0 : 2;
+}

@@ -1,0 +1,237 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_REFINEMENT_ARAP_ON_TARGET_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_REFINEMENT_ARAP_ON_TARGET_H
+
+// The refinement subsystem (refine_orbifold_map.h) owns the two halves of one iteration:
+// this file, the as-rigid-as-possible (ARAP) energy of the map A -> B over A's faces and its
+// local-global step, with the images moving in B's tangent planes; corner_moves.h, the step
+// turned into A's corners in the disk (seam copies moved by their side pairings) and cut back
+// where a face would turn over, so that every iterate is an embedding the exact certificate
+// can accept. Nothing here knows the orbifold: the images are points of B with a tangent basis.
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// A's faces in their own planes: per face its three vertices (dense indices) and the gradients
+// of the three hat functions in the face's 2D frame, and its area.
+struct Arap_source
+{
+  std::vector<std::array<std::size_t, 3> > corners;
+  std::vector<std::array<Eigen::Vector2d, 3> > gradients;
+  std::vector<double> areas;
+  double total_area = 0;
+
+  void add_face(const std::array<std::size_t, 3>& c, const std::array<Eigen::Vector3d, 3>& p)
+  {
+    const Eigen::Vector3d a = p[1] - p[0], b = p[2] - p[0];
+    const double la = a.norm();
+    const double bx = a.dot(b) / la;
+    const double by = std::sqrt((std::max)(0.0, b.squaredNorm() - bx * bx));
+    Eigen::Matrix2d X;
+    X << la, bx, 0, by;
+    std::array<Eigen::Vector2d, 3> g;
+    const double area = 0.5 * la * by;
+    if(area > 0) {
+      const Eigen::Matrix2d XiT = X.inverse().transpose();
+      g[1] = XiT.col(0);
+      g[2] = XiT.col(1);
+      g[0] = -(g[1] + g[2]);
+    } else
+      g.fill(Eigen::Vector2d::Zero()); // a degenerate face of A carries no energy
+    corners.push_back(c);
+    gradients.push_back(g);
+    areas.push_back(area);
+    total_area += area;
+  }
+
+  // the map's Jacobian on face f (3x2, from A's face frame into space)
+  Eigen::Matrix<double, 3, 2> jacobian(std::size_t f, const std::vector<Eigen::Vector3d>& q) const
+  {
+    Eigen::Matrix<double, 3, 2> J = Eigen::Matrix<double, 3, 2>::Zero();
+    for(int j = 0; j < 3; ++j)
+      J += q[corners[f][j]] * gradients[f][j].transpose();
+    return J;
+  }
+
+  // the singular values (decreasing) and right singular vectors of J, from the 2x2 Gram matrix
+  static void svd(const Eigen::Matrix<double, 3, 2>& J, Eigen::Vector2d& sigma, Eigen::Matrix2d& V)
+  {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
+    es.computeDirect(J.transpose() * J);
+    const Eigen::Vector2d ev = es.eigenvalues(); // increasing
+    sigma = Eigen::Vector2d(std::sqrt((std::max)(ev[1], 0.0)), std::sqrt((std::max)(ev[0], 0.0)));
+    V.col(0) = es.eigenvectors().col(1);
+    V.col(1) = es.eigenvectors().col(0);
+  }
+
+  // the closest scaled isometry s R to J (R: 3x2 with orthonormal columns, J V diag(1/sigma) V^T
+  // when J has rank 2)
+  static Eigen::Matrix<double, 3, 2> rotation(const Eigen::Matrix<double, 3, 2>& J, double s)
+  {
+    Eigen::Vector2d sigma;
+    Eigen::Matrix2d V;
+    svd(J, sigma, V);
+    if(sigma[1] > 1e-12 * sigma[0])
+      return s * J * V * sigma.cwiseInverse().asDiagonal() * V.transpose();
+    Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2> > full(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    return s * full.matrixU().leftCols<2>() * full.matrixV().transpose();
+  }
+
+  // the singular values of J / s
+  static Eigen::Vector2d singular_values(const Eigen::Matrix<double, 3, 2>& J, double s)
+  {
+    return Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2> >(J).singularValues() / s;
+  }
+
+  // the symmetric Dirichlet energy: the area-weighted mean over A's faces of
+  // s1^2 + s2^2 + 1/s1^2 + 1/s2^2 (s1, s2 the singular values of J_f / s): 4 for an isometry up
+  // to the scale s, infinite for a face whose image is degenerate
+  double symmetric_dirichlet(const std::vector<Eigen::Vector3d>& q, double s) const
+  {
+    double e = 0;
+    for(std::size_t f = 0; f < corners.size(); ++f) {
+      if(!(areas[f] > 0))
+        continue;
+      const Eigen::Vector2d sv = singular_values(jacobian(f, q), s);
+      if(!(sv[1] > 0))
+        return std::numeric_limits<double>::infinity();
+      e += areas[f] * (sv.squaredNorm() + 1 / (sv[0] * sv[0]) + 1 / (sv[1] * sv[1]));
+    }
+    return e / total_area;
+  }
+};
+
+// The global step: with the rotations of the current images q frozen, the moves d (2 per
+// vertex, in the tangent bases T) minimising sum_f area_f |J_f(q + T d) - s R_f|^2 with the
+// vertices of `fixed` kept. The sparsity pattern is analysed once.
+class Arap_global_step
+{
+public:
+  Arap_global_step(const Arap_source& src, const std::vector<char>& fixed, bool symmetric_dirichlet)
+    : src_(src), fixed_(fixed), symmetric_dirichlet_(symmetric_dirichlet)
+  {
+    unknown_.assign(fixed.size(), npos);
+    for(std::size_t i = 0; i < fixed.size(); ++i)
+      if(!fixed[i])
+        unknown_[i] = n_++;
+  }
+
+  std::size_t number_of_unknown_vertices() const { return n_; }
+
+  // false when the factorisation fails (then d is zero); the vertices of `held` are tied to
+  // d = 0 by a stiff spring (the pattern stays the one analysed)
+  bool solve(const std::vector<Eigen::Vector3d>& q, const std::vector<Eigen::Matrix<double, 3, 2> >& T, double s,
+             const std::vector<char>& held, std::vector<Eigen::Vector2d>& d)
+  {
+    typedef Eigen::Triplet<double> Tr;
+    std::vector<Tr> trip;
+    trip.reserve(src_.corners.size() * 36);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n_);
+    for(std::size_t f = 0; f < src_.corners.size(); ++f) {
+      const auto& c = src_.corners[f];
+      const auto& g = src_.gradients[f];
+      const double a = src_.areas[f];
+      if(!(a > 0))
+        continue;
+      const Eigen::Matrix<double, 3, 2> J = src_.jacobian(f, q);
+      const Eigen::Matrix<double, 3, 2> r = Arap_source::rotation(J, s) - J;
+      const Eigen::Matrix3d M = weights(J, s);
+      for(int i = 0; i < 3; ++i) {
+        const std::size_t ui = unknown_[c[i]];
+        if(ui == npos)
+          continue;
+        rhs.segment<2>(2 * ui) += a * T[c[i]].transpose() * M * r * g[i];
+        for(int j = 0; j < 3; ++j) {
+          const std::size_t uj = unknown_[c[j]];
+          if(uj == npos)
+            continue;
+          const Eigen::Matrix2d H = a * g[i].dot(g[j]) * T[c[i]].transpose() * M * T[c[j]];
+          for(int r0 = 0; r0 < 2; ++r0)
+            for(int c0 = 0; c0 < 2; ++c0)
+              trip.emplace_back(2 * ui + r0, 2 * uj + c0, H(r0, c0));
+        }
+      }
+    }
+    // a tiny Tikhonov term (a vertex whose faces are all degenerate stays put), the springs
+    for(std::size_t i = 0; i < fixed_.size(); ++i)
+      if(unknown_[i] != npos)
+        for(int r0 = 0; r0 < 2; ++r0)
+          trip.emplace_back(2 * unknown_[i] + r0, 2 * unknown_[i] + r0, (held[i] ? 1e8 : 1e-12) * src_.total_area);
+    Eigen::SparseMatrix<double> H(2 * n_, 2 * n_);
+    H.setFromTriplets(trip.begin(), trip.end());
+    if(!analysed_) {
+      ldlt_.analyzePattern(H);
+      analysed_ = true;
+    }
+    ldlt_.factorize(H);
+    d.assign(fixed_.size(), Eigen::Vector2d::Zero());
+    if(ldlt_.info() != Eigen::Success)
+      return false;
+    const Eigen::VectorXd x = ldlt_.solve(rhs);
+    if(ldlt_.info() != Eigen::Success || !x.allFinite())
+      return false;
+    for(std::size_t i = 0; i < fixed_.size(); ++i)
+      if(unknown_[i] != npos)
+        d[i] = x.segment<2>(2 * unknown_[i]);
+    return true;
+  }
+
+private:
+  // The proxy's metric on the residual J - s R: the identity for ARAP; for the symmetric
+  // Dirichlet energy, the reweighting of scalable locally injective maps (Rabinovich et al.
+  // 2017): along each singular direction u_k of J the weight w_k^2 = (t - t^-3) / (t - 1)
+  // (t = s_k / s, 4 at t = 1), whose quadratic proxy has the energy's gradient at J; the
+  // normal direction gets the mean weight.
+  Eigen::Matrix3d weights(const Eigen::Matrix<double, 3, 2>& J, double s) const
+  {
+    if(!symmetric_dirichlet_)
+      return Eigen::Matrix3d::Identity();
+    Eigen::Vector2d sigma;
+    Eigen::Matrix2d V;
+    Arap_source::svd(J, sigma, V);
+    const Eigen::Vector2d t = sigma / s;
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d u[3];
+    for(int k = 0; k < 2; ++k)
+      u[k] = sigma[k] > 0 ? Eigen::Vector3d(J * V.col(k) / sigma[k]) : Eigen::Vector3d::Zero();
+    u[2] = u[0].cross(u[1]);
+    double mean = 0;
+    for(int k = 0; k < 2; ++k) {
+      const double tk = (std::max)(t[k], 1e-8);
+      const double w2 = std::abs(tk - 1) < 1e-6 ? 4.0 : (tk - std::pow(tk, -3)) / (tk - 1);
+      M += w2 * u[k] * u[k].transpose();
+      mean += 0.5 * w2;
+    }
+    M += mean * u[2] * u[2].transpose();
+    return M;
+  }
+
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  const Arap_source& src_;
+  const std::vector<char>& fixed_;
+  bool symmetric_dirichlet_;
+  std::vector<std::size_t> unknown_;
+  std::size_t n_ = 0;
+  bool analysed_ = false;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt_;
+};
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_REFINEMENT_ARAP_ON_TARGET_H

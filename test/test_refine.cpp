@@ -1,0 +1,150 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// refine_orbifold_map() (issue 39): on a pair whose true correspondence is a similarity
+// (bear.off and a rotated, scaled, moved copy: vertex i <-> vertex i), the source embedded
+// with uniform weights so that the harmonic map is not the truth. Facts from outside the code:
+// the truth is an isometry up to scale, so its symmetric Dirichlet energy is 4, the least
+// value (s^2 + 1/s^2 >= 2 for each singular value); the refinement must lower the energy,
+// never below 4, bring the map closer to the truth, keep the landmarks on their landmarks and
+// pass the independent certificate. Refusals leave the embedding unchanged.
+#include "test_harness.h"
+#include "test_common_meshes.h"
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
+using namespace hot_test;
+typedef K::Point_2 Point_2;
+typedef Mesh::Property_map<halfedge_descriptor, Point_2> UV;
+typedef HOT::Embedding_locator<Mesh, UV> Locator;
+
+namespace {
+
+struct Pair
+{
+  Mesh a, b;
+  std::vector<vertex_descriptor> landmarks; // (the same vertices in both, in cone order)
+  UV uva, uvb;
+  HOT::Embedding_statistics sa;
+  double diag = 0;
+};
+
+bool make_pair(Pair& p)
+{
+  if(!read_demo_mesh("bear", p.a))
+    return false;
+  p.b = p.a;
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  for(vertex_descriptor v : vertices(p.b)) { // a rotation about z, scale 2, a translation
+    const K::Point_3& q = p.a.point(v);
+    p.b.point(v) = K::Point_3(2 * (c * q.x() - s * q.y()) + 1, 2 * (s * q.x() + c * q.y()) - 3, 2 * q.z() + 0.5);
+  }
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(p.a, 6);
+  p.uva = p.a.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  p.uvb = p.b.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(p.a, lm, p.uva, HOT::parameters::weight_type(HOT::Uniform,
+       HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&p.sa)))) != HOT::OK)
+    return false;
+  for(std::size_t i : p.sa.landmark_order)
+    p.landmarks.push_back(lm[i]);
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(p.b, p.landmarks, p.uvb) != HOT::OK)
+    return false;
+  const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(p.b);
+  p.diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) + CGAL::square(bb.zmax() - bb.zmin()));
+  return true;
+}
+
+// the mean and largest distance of the images to the truth, in diagonals
+std::pair<double, double> error_against_truth(const Pair& p, const Locator& L)
+{
+  const auto locs = HOT::map_vertices(p.a, p.uva, L);
+  double sum = 0, worst = 0;
+  for(vertex_descriptor v : vertices(p.a)) {
+    if(!locs[v.idx()].success)
+      return {1e300, 1e300};
+    const double e = std::sqrt(CGAL::squared_distance(HOT::surface_point(locs[v.idx()], L, get(CGAL::vertex_point, p.b)), p.b.point(v))) / p.diag;
+    sum += e;
+    worst = (std::max)(worst, e);
+  }
+  return {sum / num_vertices(p.a), worst};
+}
+
+std::vector<Point_2> corners(const Pair& p)
+{
+  std::vector<Point_2> c;
+  for(halfedge_descriptor h : halfedges(p.a))
+    c.push_back(p.uva[h]);
+  return c;
+}
+
+} // namespace
+
+TEST_CASE(refinement_moves_a_map_towards_the_isometry)
+{
+  Pair p;
+  CHECK(make_pair(p));
+  if(p.landmarks.empty())
+    return;
+  const Locator L(p.b, p.uvb, HOT::Sphere_type, static_cast<int>(p.landmarks.size()));
+  const std::pair<double, double> before = error_against_truth(p, L);
+  HOT::Map_refinement_statistics st;
+  const HOT::Error_code ec = HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, L, st,
+                                                      HOT::parameters::refine(40, HOT::parameters::frame(p.sa.frame)));
+  CHECK(ec == HOT::OK);
+  const std::pair<double, double> after = error_against_truth(p, L);
+  std::cout << "  error mean " << 100 * before.first << "% -> " << 100 * after.first << "%, worst " << 100 * before.second << "% -> "
+            << 100 * after.second << "%; energy " << st.energy_before << " -> " << st.energy_after << " in " << st.iterations
+            << " iterations (" << st.message << "), " << st.seconds << " s" << std::endl;
+  CHECK(st.iterations >= 1);
+  CHECK(st.energy_after < st.energy_before);
+  CHECK(st.energy_after >= 4 - 1e-9); // s^2 + 1/s^2 >= 2 per singular value
+  CHECK(before.first > 0.002); // (the uniform weights' map is not the truth: otherwise nothing is tested)
+  CHECK(after.first < 0.7 * before.first);
+  CHECK(after.second < before.second);
+  // the landmarks stay on their landmarks
+  const auto locs = HOT::map_vertices(p.a, p.uva, L);
+  for(vertex_descriptor v : p.landmarks)
+    CHECK(std::sqrt(CGAL::squared_distance(HOT::surface_point(locs[v.idx()], L, get(CGAL::vertex_point, p.b)), p.b.point(v))) < 1e-9 * p.diag);
+  // the independent certificate of the refined embedding
+  HOT::Embedding_certificate cert;
+  std::string why;
+  CHECK(HOT::certify_hyperbolic_orbifold_embedding(p.a, p.landmarks, p.uva, cert, &why, HOT::parameters::frame(p.sa.frame)) == HOT::OK);
+  CHECK_MSG(cert.is_bijective(), why);
+  CHECK(cert.flipped_faces == 0 && cert.twin_failures == 0);
+}
+
+TEST_CASE(refinement_refusals_leave_the_embedding)
+{
+  Pair p;
+  CHECK(make_pair(p));
+  if(p.landmarks.empty())
+    return;
+  const Locator L(p.b, p.uvb, HOT::Sphere_type, static_cast<int>(p.landmarks.size()));
+  const std::vector<Point_2> original = corners(p);
+  HOT::Map_refinement_statistics st;
+  CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, L, st, HOT::parameters::refine(-1)) == HOT::ERROR_WRONG_PARAMETER);
+  CHECK(corners(p) == original);
+  CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, L, st, HOT::parameters::refine(0, HOT::parameters::frame(p.sa.frame))) == HOT::OK);
+  CHECK(st.stop == HOT::Refinement_not_run && st.iterations == 0);
+  CHECK(corners(p) == original);
+  // a folded embedding (one inner vertex's corners moved onto the antipode of its place) is not refined
+  const vertex_descriptor v = *std::find_if(vertices(p.a).begin(), vertices(p.a).end(), [&](vertex_descriptor w) {
+    return std::find(p.landmarks.begin(), p.landmarks.end(), w) == p.landmarks.end();
+  });
+  for(halfedge_descriptor h : halfedges_around_target(halfedge(v, p.a), p.a))
+    if(!is_border(h, p.a))
+      p.uva[h] = Point_2(-p.uva[h].x(), -p.uva[h].y());
+  const std::vector<Point_2> folded = corners(p);
+  CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, L, st, HOT::parameters::frame(p.sa.frame)) == HOT::ERROR_NO_1_TO_1_MAPPING);
+  CHECK(st.message.find("not certified") != std::string::npos);
+  CHECK(corners(p) == folded);
+}
+
+HOT_TEST_MAIN
