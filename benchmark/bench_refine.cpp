@@ -124,6 +124,25 @@ int main(int argc, char** argv)
                                                                     HOT::parameters::frame(sa.frame, HOT::parameters::orbifold_type(type))) == HOT::OK &&
                          cert.is_bijective();
   const Figures after = measure(A, uvA, B, L);
+  if(std::getenv("DUMP_CONFORMAL")) { // (exploring) faces by conformal distortion: graph distance to the nearest landmark
+    std::vector<int> dist(num_vertices(A), 1 << 30);
+    std::vector<SM_vertex> front(lma.begin(), lma.end());
+    for(SM_vertex v : front) dist[v.idx()] = 0;
+    for(int r = 0; !front.empty(); ++r) {
+      std::vector<SM_vertex> next;
+      for(SM_vertex v : front) for(SM_vertex w : vertices_around_target(halfedge(v, A), A)) if(dist[w.idx()] > r + 1) { dist[w.idx()] = r + 1; next.push_back(w); }
+      front.swap(next);
+    }
+    std::vector<int> hist(12, 0), all(12, 0);
+    for(SM_face f : faces(A)) {
+      int dm = 1 << 30;
+      for(SM_vertex v : vertices_around_face(halfedge(f, A), A)) dm = (std::min)(dm, dist[v.idx()]);
+      const int b = (std::min)(dm, 11);
+      ++all[b];
+      if(after.d.conformal[f.idx()] > 2.5) ++hist[b];
+    }
+    for(int b = 0; b < 12; ++b) std::printf("  rings %d: %d of %d faces with conformal > 2.5\n", b, hist[b], all[b]);
+  }
   std::printf("%s -> %s, %zu vertices, %zu landmarks\n", args[0].c_str(), args[2].c_str(), num_vertices(A), la.size());
   print("harmonic", before);
   print("refined", after);

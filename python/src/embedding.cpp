@@ -13,6 +13,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 
 #include "command_line.h"
@@ -411,14 +412,54 @@ void check_map_pair(const Embedding& A, const Embedding& B)
 
 } // namespace
 
+namespace {
+
+// A's corners as a read-write property map over a vector (a refined copy of A.uv)
+struct Corner_vector_map
+{
+  typedef SM_halfedge key_type;
+  typedef Kernel::Point_2 value_type;
+  typedef value_type& reference;
+  typedef boost::lvalue_property_map_tag category;
+  std::vector<value_type>* points;
+  friend value_type& get(const Corner_vector_map& m, SM_halfedge h) { return (*m.points)[h.idx()]; }
+  friend void put(const Corner_vector_map& m, SM_halfedge h, const value_type& p) { (*m.points)[h.idx()] = p; }
+};
+
+} // namespace
+
 void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int64_t>& faces, std::vector<double>& bary,
-                    std::vector<std::int64_t>* unreliable)
+                    std::vector<std::int64_t>* unreliable, int refine, HOT::Map_refinement_statistics* refinement)
 {
   check_map_pair(A, B);
+  if(refine < 0)
+    fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
+  if(refine > 0 && (A.genus > 0 || !A.stats.charts.empty()))
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string("refine handles maps of genus 0 whose source is embedded without charts; the source ") +
+                                       (A.genus > 0 ? "has genus " + std::to_string(A.genus) : std::string("is embedded partly in charts around cone images")));
   const Locator locB = target_locator(B);
   if(!locB.is_valid())
     fail(HOT::ERROR_POINT_NOT_LOCATED, "the target's embedding cannot be searched: " + locB.message());
-  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
+  std::vector<Kernel::Point_2> refined;
+  std::vector<Locator::Location> f;
+  if(refine > 0) {
+    refined.resize(A.mesh.number_of_halfedges() + A.mesh.number_of_removed_halfedges());
+    for(SM_halfedge h : halfedges(A.mesh))
+      refined[h.idx()] = A.uv[h];
+    const Corner_vector_map uv{&refined};
+    std::vector<SM_vertex> ordered;
+    for(std::size_t i : A.order)
+      ordered.push_back(A.landmarks[i]);
+    HOT::Map_refinement_statistics st;
+    const HOT::Error_code ec = HOT::refine_orbifold_map(A.mesh, ordered, uv, B.mesh, locB, st,
+      HOT::parameters::refine(refine, HOT::parameters::frame(A.stats.frame, HOT::parameters::cone_orders(A.stats.cone_orders, HOT::parameters::orbifold_type(A.type)))));
+    if(ec != HOT::OK)
+      fail(ec, "refine: " + st.message);
+    if(refinement)
+      *refinement = st;
+    f = HOT::map_vertices(A.mesh, uv, locB);
+  } else
+    f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
   faces.resize(f.size());
   bary.resize(3 * f.size());
   for(std::size_t i = 0; i < f.size(); ++i) {
@@ -429,14 +470,15 @@ void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int
     for(int c = 0; c < 3; ++c) bary[3 * i + c] = b[c];
   }
   if(unreliable) {
-    const HOT::Map_reliability r = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
+    const HOT::Map_reliability r = refine > 0 ? HOT::map_reliability(A.mesh, Corner_vector_map{&refined}, B.mesh, B.uv, locB, f)
+                                              : HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
     unreliable->assign(r.unreliable_vertices.begin(), r.unreliable_vertices.end());
   }
 }
 
 namespace {
 
-py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable)
+py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable, int refine)
 {
   if(!A || !B)
     fail(HOT::ERROR_WRONG_PARAMETER, "map() needs two embeddings");
@@ -444,7 +486,7 @@ py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable)
   std::vector<double> bary;
   {
     py::gil_scoped_release release;
-    map_embeddings(*A, *B, faces, bary, unreliable ? &flagged : nullptr);
+    map_embeddings(*A, *B, faces, bary, unreliable ? &flagged : nullptr, refine);
   }
   const py::ssize_t n = static_cast<py::ssize_t>(faces.size()), u = static_cast<py::ssize_t>(flagged.size());
   py::array f = owning_array(std::move(faces), {n}), b = owning_array(std::move(bary), {n, 3});
@@ -457,8 +499,8 @@ py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable)
 
 void register_maps(py::module_& m)
 {
-  m.def("map", &map, py::arg("source"), py::arg("target"), py::kw_only(), py::arg("unreliable") = false,
-        R"doc(map(source, target, *, unreliable=False) -> (faces, bary) or (faces, bary, unreliable_vertices)
+  m.def("map", &map, py::arg("source"), py::arg("target"), py::kw_only(), py::arg("unreliable") = false, py::arg("refine") = 0,
+        R"doc(map(source, target, *, unreliable=False, refine=0) -> (faces, bary) or (faces, bary, unreliable_vertices)
 
 Maps every vertex of the source embedding's mesh A onto the target's mesh B through
 their common orbifold (the paper's section 7), as the command line's `map` does: for
@@ -477,7 +519,15 @@ the GIL.
 unreliable=True also returns the vertices of A whose images the map cannot resolve (int64
 array, increasing): in a protrusion without a landmark, squeezed by both embeddings below
 their disagreement (the command line's map report's "unreliable_vertices"; put a landmark
-at the tip of such a protrusion).)doc");
+at the tip of such a protrusion).
+
+refine=N (N >= 1) refines the map towards an isometry first, as the command line's
+map --refine N does (refine_orbifold_map(): at most N certified iterations lowering the
+symmetric Dirichlet energy; landmarks kept, every iterate certified bijective), on a copy
+of the source's corners: `source` itself is unchanged. Genus 0 and a source embedded
+without charts only (else Error). Example:
+    faces, bary = hot.map(a, b, refine=100)
+    images = np.einsum("ij,ijk->ik", bary, VB[FB[faces]]))doc");
 }
 
 } // namespace hot_python

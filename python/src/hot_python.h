@@ -25,6 +25,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Map_refinement_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 
@@ -191,9 +192,12 @@ Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64
 // barycentric coordinates w.r.t. the vertices of that face in F's order (`bary`, 3 per vertex,
 // hot_tools::input_order_barycentric(), as write_map() writes them); with `unreliable`, the
 // vertices of A whose images the map cannot resolve (HOT::map_reliability(), the map report's
-// "unreliable_vertices"). Does not need the GIL. Failures throw Hot_error.
+// "unreliable_vertices"). With `refine` > 0, the map refined by HOT::refine_orbifold_map() (at
+// most `refine` iterations, on a copy of A's corners: A is unchanged; `refinement` gets its
+// statistics if not null). Does not need the GIL. Failures throw Hot_error.
 void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int64_t>& faces, std::vector<double>& bary,
-                    std::vector<std::int64_t>* unreliable = nullptr);
+                    std::vector<std::int64_t>* unreliable = nullptr, int refine = 0,
+                    HOT::Map_refinement_statistics* refinement = nullptr);
 
 // ---------------------------------------------------------------------------------------
 // registration, one function per area (module.cpp calls them)

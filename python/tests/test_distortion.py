@@ -80,3 +80,34 @@ def test_the_numbers_of_the_cli_map_report(cli, meshes, source_dir, tmp_path):
     assert d["symmetric_dirichlet_energy"] == pytest.approx(report["symmetric_dirichlet_energy"], rel=1e-12)
     assert report["symmetric_dirichlet_energy"] >= 4  # (s^2 + 1/s^2 >= 2 for each singular value)
     assert d["conformal_summary"]["p50"] >= 1  # sigma1 >= sigma2
+
+
+def test_map_refine_moves_towards_the_isometry(bear):
+    # bear and a rotated, scaled, moved copy (vertex i <-> i: an isometry up to scale); the
+    # source embedded with uniform weights, so that the harmonic map is not that truth. The
+    # refined map is closer to it, its symmetric Dirichlet energy lower and never below 4 (its
+    # least value, an isometry's); the source embedding is left as it was.
+    V, F, lm, _ = bear
+    c, s = np.cos(0.7), np.sin(0.7)
+    W = 2.0 * V @ np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]]).T + [1, -3, 0.5]
+    a = hot.embed(V, F, lm, weights="uniform", order="tsp")
+    b = hot.embed(W, F, lm, order=a.landmark_order)
+    diag = np.linalg.norm(W.max(0) - W.min(0))
+
+    def error(faces, bary):
+        return np.linalg.norm(hot.transfer(faces, bary, F, W) - W, axis=1) / diag
+
+    f0, b0 = hot.map(a, b)
+    f1, b1 = hot.map(a, b, refine=40)
+    e0, e1 = error(f0, b0), error(f1, b1)
+    assert e0.mean() > 0.002  # (else nothing is tested)
+    assert e1.mean() < 0.7 * e0.mean() and e1.max() < e0.max()
+    d0 = hot.map_distortion(V, F, hot.transfer(f0, b0, F, W))
+    d1 = hot.map_distortion(V, F, hot.transfer(f1, b1, F, W))
+    assert 4 - 1e-9 <= d1["symmetric_dirichlet_energy"] < d0["symmetric_dirichlet_energy"]
+    for i in lm:  # the landmarks stay on their landmarks
+        assert np.linalg.norm(hot.transfer(f1[i:i + 1], b1[i:i + 1], F, W)[0] - W[i]) < 1e-9 * diag
+    f2, b2 = hot.map(a, b)  # the source is unchanged by the refinement
+    assert np.array_equal(f2, f0) and np.array_equal(b2, b0)
+    with pytest.raises(hot.Error, match="refine must be"):
+        hot.map(a, b, refine=-1)

@@ -293,6 +293,26 @@ public:
     return with_face(loc);
   }
 
+  /// locates `z` by a walk from `near`, the location of a point close to `z` (for example the
+  /// same point before a small move): the face found is the one `locate(z)` finds (the element
+  /// may differ by rounding), in fewer steps. Falls back to `locate(z)` when `near` is not a
+  /// success, the embedding has charts, or the walk fails a check.
+  Location locate_near(const Point_2& z, const Location& near) const
+  {
+    if(!near.success || near.face_index == npos || !ch_.charts.empty())
+      return locate(z);
+    const C z0(CGAL::to_double(z.x()), CGAL::to_double(z.y()));
+    if(!(internal::squared_modulus(z0) < 1.0) || !std::isfinite(z0.real()) || !std::isfinite(z0.imag()))
+      return locate(z);
+    Location loc;
+    Isometry h;
+    if(internal::walk_to(lt_, near.element.apply(z0), static_cast<int>(near.face_index), loc, h)) {
+      loc.element = h.inverse() * near.element;
+      return with_face(loc);
+    }
+    return locate(z);
+  }
+
   /// locates the point whose coordinates in the frame `chart` (an isometry applied to the tile's
   /// coordinates, such as a chart of another embedding of the same orbifold) are `w`: in this
   /// embedding's chart with the same isometry if it has one, else at `chart^-1(w)` (rounded to

@@ -19,6 +19,7 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -66,16 +67,19 @@ std::optional<std::complex<double> > refinement_target(const Location& l, const 
   return l.element.inverse().apply(klein_to_poincare(k / s));
 }
 
-// an orthonormal basis of the plane of B's face at location l
+// an orthonormal basis of the plane of B's face at location l, its first vector `first`
+// projected onto the plane (the face's first edge if the projection is short)
 template <class Location, class Locator, class VertexPointMapB>
-Eigen::Matrix<double, 3, 2> tangent_basis(const Location& l, const Locator& locB, VertexPointMapB vpmB)
+Eigen::Matrix<double, 3, 2> tangent_basis(const Location& l, const Locator& locB, VertexPointMapB vpmB, const Eigen::Vector3d& first)
 {
   Eigen::Vector3d P[3];
   for(int k = 0; k < 3; ++k) {
     const auto& p = get(vpmB, locB.vertex(locB.corner_vertex_index(l.face_index, k)));
     P[k] = Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
   }
-  const Eigen::Vector3d t1 = (P[1] - P[0]).normalized(), n = (P[1] - P[0]).cross(P[2] - P[0]).normalized();
+  const Eigen::Vector3d n = (P[1] - P[0]).cross(P[2] - P[0]).normalized();
+  const Eigen::Vector3d projected = first - first.dot(n) * n;
+  const Eigen::Vector3d t1 = projected.norm() > 0.5 ? projected.normalized() : Eigen::Vector3d((P[1] - P[0]).normalized());
   Eigen::Matrix<double, 3, 2> T;
   T.col(0) = t1;
   T.col(1) = n.cross(t1);
@@ -220,17 +224,39 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
   // the images of the vertices (their primary corners located on B)
   std::vector<typename Locator::Location> locs;
   std::vector<Eigen::Vector3d> q(vidx.size(), Eigen::Vector3d::Zero());
+  // the images of the vertices whose primary corner moved (all of them the first time), each
+  // located by a walk from its previous location
+  std::vector<C> located(vidx.size(), C(2, 2)); // (2: never located)
   const auto locate = [&]() {
-    locs = map_vertices(A, uv_of, locB);
-    for(std::size_t i = 0; i < locs.size(); ++i) {
-      if(moves.primary(i) == GT::null_halfedge())
-        continue;
-      if(!locs[i].success)
-        return false;
+    if(locs.empty())
+      locs.resize(vidx.size());
+    std::atomic<bool> ok(true);
+    const auto run = [&](std::size_t i) {
+      const halfedge_descriptor h = moves.primary(i);
+      if(h == GT::null_halfedge() || corners[hidx(h)] == located[i])
+        return;
+      const typename Locator::Point_2 z(corners[hidx(h)].real(), corners[hidx(h)].imag());
+      locs[i] = located[i] == C(2, 2) ? locB.locate(z) : locB.locate_near(z, locs[i]);
+      located[i] = corners[hidx(h)];
+      if(!locs[i].success) {
+        ok = false;
+        return;
+      }
       const auto p = surface_point(locs[i], locB, vpmB);
       q[i] = Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(vidx.size() > 10000) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vidx.size(), 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t i = r.begin(); i != r.end(); ++i)
+          run(i);
+      });
+      return ok.load();
     }
-    return true;
+#endif
+    for(std::size_t i = 0; i < vidx.size(); ++i)
+      run(i);
+    return ok.load();
   };
   if(!locate()) {
     stats.message = "a vertex of the source could not be located on the target";
@@ -242,17 +268,21 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
   const Sign sign = faces(A).empty() ? POSITIVE : moves.orientation(*faces(A).begin(), corners);
   internal::Arap_global_step step(src, fixed, true);
   stats.stop = iterations == 0 ? Refinement_not_run : Refinement_iterations;
+  // the tangent bases at the images: the previous one projected onto the plane of the image's
+  // face (a basis that turns little from one step to the next keeps the global steps' matrices
+  // close, and the earlier factor a good preconditioner)
+  std::vector<Eigen::Matrix<double, 3, 2> > T(vidx.size(), Eigen::Matrix<double, 3, 2>::Zero());
   for(int it = 0; it < iterations; ++it) {
-    std::vector<Eigen::Matrix<double, 3, 2> > T(vidx.size(), Eigen::Matrix<double, 3, 2>::Zero());
     for(std::size_t i = 0; i < vidx.size(); ++i)
       if(!fixed[i])
-        T[i] = internal::tangent_basis(locs[i], locB, vpmB);
+        T[i] = internal::tangent_basis(locs[i], locB, vpmB, T[i].col(0));
     // The step, then a line search along it: halved until the energy decreases and the
     // iterate is certified (the moves that would turn a face over undone). When no step
     // lowers the energy and moves were undone, the step is solved again with the undone
     // vertices held (the rest of it is then a descent direction of the energy), twice at most.
     const std::vector<C> old = corners;
     const std::vector<typename Locator::Location> old_locs = locs;
+    const std::vector<C> old_located = located;
     const std::vector<Eigen::Vector3d> old_q = q;
     std::vector<char> held(vidx.size(), 0);
     bool accepted = false, certificate_failed = false, solved = true;
@@ -299,6 +329,7 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
     if(!accepted) {
       corners = old;
       locs = old_locs;
+      located = old_located;
       q = old_q;
       stats.stop = !solved ? Refinement_solver : certificate_failed ? Refinement_certificate : Refinement_converged;
       break;

@@ -91,25 +91,22 @@ struct Arap_source
     return s * full.matrixU().leftCols<2>() * full.matrixV().transpose();
   }
 
-  // the singular values of J / s
-  static Eigen::Vector2d singular_values(const Eigen::Matrix<double, 3, 2>& J, double s)
-  {
-    return Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2> >(J).singularValues() / s;
-  }
-
   // the symmetric Dirichlet energy: the area-weighted mean over A's faces of
   // s1^2 + s2^2 + 1/s1^2 + 1/s2^2 (s1, s2 the singular values of J_f / s): 4 for an isometry up
-  // to the scale s, infinite for a face whose image is degenerate
+  // to the scale s, infinite for a face whose image is degenerate. With the columns c0, c1 of
+  // J / s: s1^2 + s2^2 = |c0|^2 + |c1|^2 and s1 s2 = |c0 x c1|, so the density is
+  // (|c0|^2 + |c1|^2) (1 + 1 / |c0 x c1|^2), no SVD needed.
   double symmetric_dirichlet(const std::vector<Eigen::Vector3d>& q, double s) const
   {
     double e = 0;
     for(std::size_t f = 0; f < corners.size(); ++f) {
       if(!(areas[f] > 0))
         continue;
-      const Eigen::Vector2d sv = singular_values(jacobian(f, q), s);
-      if(!(sv[1] > 0))
+      const Eigen::Matrix<double, 3, 2> J = jacobian(f, q) / s;
+      const double area2 = J.col(0).cross(J.col(1)).squaredNorm();
+      if(!(area2 > 0))
         return std::numeric_limits<double>::infinity();
-      e += areas[f] * (sv.squaredNorm() + 1 / (sv[0] * sv[0]) + 1 / (sv[1] * sv[1]));
+      e += areas[f] * J.squaredNorm() * (1 + 1 / area2);
     }
     return e / total_area;
   }
@@ -173,16 +170,18 @@ public:
           trip.emplace_back(2 * unknown_[i] + r0, 2 * unknown_[i] + r0, (held[i] ? 1e8 : 1e-12) * src_.total_area);
     Eigen::SparseMatrix<double> H(2 * n_, 2 * n_);
     H.setFromTriplets(trip.begin(), trip.end());
-    if(!analysed_) {
-      ldlt_.analyzePattern(H);
-      analysed_ = true;
-    }
-    ldlt_.factorize(H);
     d.assign(fixed_.size(), Eigen::Vector2d::Zero());
-    if(ldlt_.info() != Eigen::Success)
-      return false;
-    const Eigen::VectorXd x = ldlt_.solve(rhs);
-    if(ldlt_.info() != Eigen::Success || !x.allFinite())
+    Eigen::VectorXd x;
+    if(!(factored_ && preconditioned_solve(H, rhs, x))) {
+      if(!factored_)
+        ldlt_.analyzePattern(H);
+      ldlt_.factorize(H);
+      factored_ = ldlt_.info() == Eigen::Success;
+      if(!factored_)
+        return false;
+      x = ldlt_.solve(rhs);
+    }
+    if(!x.allFinite())
       return false;
     for(std::size_t i = 0; i < fixed_.size(); ++i)
       if(unknown_[i] != npos)
@@ -191,6 +190,36 @@ public:
   }
 
 private:
+  // Conjugate gradients on H x = rhs preconditioned by the factor of an earlier matrix (the
+  // matrices of successive steps differ little): false when 20 iterations do not bring the
+  // residual below 1e-3 of the right-hand side's, and the caller factors H itself.
+  bool preconditioned_solve(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const
+  {
+    const double goal = 1e-3 * rhs.norm();
+    x = ldlt_.solve(rhs);
+    Eigen::VectorXd r = rhs - H * x;
+    if(!(r.norm() > goal))
+      return x.allFinite();
+    Eigen::VectorXd z = ldlt_.solve(r), p = z;
+    double rz = r.dot(z);
+    for(int k = 0; k < 20; ++k) {
+      const Eigen::VectorXd Hp = H * p;
+      const double pHp = p.dot(Hp);
+      if(!(pHp > 0))
+        return false;
+      const double a = rz / pHp;
+      x += a * p;
+      r -= a * Hp;
+      if(!(r.norm() > goal))
+        return x.allFinite();
+      z = ldlt_.solve(r);
+      const double rz2 = r.dot(z);
+      p = z + (rz2 / rz) * p;
+      rz = rz2;
+    }
+    return false;
+  }
+
   // The proxy's metric on the residual J - s R: the identity for ARAP; for the symmetric
   // Dirichlet energy, the reweighting of scalable locally injective maps (Rabinovich et al.
   // 2017): along each singular direction u_k of J the weight w_k^2 = (t - t^-3) / (t - 1)
@@ -226,7 +255,7 @@ private:
   bool symmetric_dirichlet_;
   std::vector<std::size_t> unknown_;
   std::size_t n_ = 0;
-  bool analysed_ = false;
+  bool factored_ = false; // (ldlt_ holds the factor of an earlier step's matrix)
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt_;
 };
 

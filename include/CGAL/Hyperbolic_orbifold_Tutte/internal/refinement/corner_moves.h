@@ -97,13 +97,27 @@ public:
         corners[hidx_(h)] = old[hidx_(h)];
   }
 
-  // the sign of face f's corners (exact)
+  // the sign of face f's corners: the sign of det[(x_i, y_i, 1 + x_i^2 + y_i^2)]
+  // (filtered_predicates.h), first in double with rows 1 and 2 less row 0 (accurate for the
+  // tiny triangles near the disk's rim, where the static filter of the exact predicate fails),
+  // trusted when it exceeds 1e-12 of the sum of its terms' magnitudes, else the exact predicate
   Sign orientation(face_descriptor f, const std::vector<C>& corners) const
   {
     std::array<C, 3> z;
     int k = 0;
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_))
       z[k++] = corners[hidx_(h)];
+    const double x0 = z[0].real(), y0 = z[0].imag();
+    const double dx1 = z[1].real() - x0, dy1 = z[1].imag() - y0, dx2 = z[2].real() - x0, dy2 = z[2].imag() - y0;
+    const double dw1 = dx1 * (z[1].real() + x0) + dy1 * (z[1].imag() + y0), dw2 = dx2 * (z[2].real() + x0) + dy2 * (z[2].imag() + y0);
+    const double w0 = 1 + x0 * x0 + y0 * y0;
+    const double det = x0 * (dy1 * dw2 - dw1 * dy2) - y0 * (dx1 * dw2 - dw1 * dx2) + w0 * (dx1 * dy2 - dy1 * dx2);
+    const double size = std::abs(x0) * (std::abs(dy1 * dw2) + std::abs(dw1 * dy2)) + std::abs(y0) * (std::abs(dx1 * dw2) + std::abs(dw1 * dx2)) +
+                        w0 * (std::abs(dx1 * dy2) + std::abs(dy1 * dx2));
+    if(det > 1e-12 * size)
+      return POSITIVE;
+    if(det < -1e-12 * size)
+      return NEGATIVE;
     return poincare_orientation_sign_filtered(z[0].real(), z[0].imag(), z[1].real(), z[1].imag(), z[2].real(), z[2].imag());
   }
 
