@@ -440,6 +440,44 @@ PY
     done
     grep -q -- "--refine" "$tmp/stderr" || fail "the usage error does not name --refine: $(cat "$tmp/stderr")"
     echo ok ;;
+  collection_refine)
+    # collection --refine: cow.off and two copies bent by bend.awk (radii 4 and 6 times its
+    # height; vertex i <-> vertex i): every mesh's embedding fitted to the first mesh's metric,
+    # the maps still cycle consistent (compositions through the one orbifold), the symmetric
+    # Dirichlet energy of each refined map lower and not below 4, the worst error against the
+    # truth lower than the unrefined collection's
+    command -v python3 >/dev/null || fail "python3 is needed to read the report"
+    d="$(dirname "${BASH_SOURCE[0]}")"
+    cow="$data/meshes/cow.off"
+    h=$(awk 'NR == 2 { n = $1 } NR > 2 && NR <= 2 + n { if(NR == 3 || $3 < lo) lo = $3; if(NR == 3 || $3 > hi) hi = $3 } END { print hi - lo }' "$cow")
+    awk -v R="$(awk -v h="$h" 'BEGIN { print 4 * h }')" -f "$d/bend.awk" "$cow" > "$tmp/c1.off"
+    awk -v R="$(awk -v h="$h" 'BEGIN { print 6 * h }')" -f "$d/bend.awk" "$cow" > "$tmp/c2.off"
+    "$prog" landmarks --mesh "$cow" --count 12 --out "$tmp/cow.cones" > /dev/null || fail "landmarks"
+    printf '%s %s\n%s %s\n%s %s\n' "$cow" "$tmp/cow.cones" "$tmp/c1.off" "$tmp/cow.cones" "$tmp/c2.off" "$tmp/cow.cones" > "$tmp/list.txt"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/c0" --all-pairs > /dev/null 2>&1 || fail "collection failed"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cr" --all-pairs --refine 30 > /dev/null 2> "$tmp/stderr" \
+      || fail "collection --refine failed: $(cat "$tmp/stderr")"
+    [ "$(grep -c '^  refined .* certified iterations' "$tmp/stderr")" -eq 2 ] || fail "stderr does not say what was refined"
+    python3 - "$tmp/c0/report.json" "$tmp/cr/report.json" <<'PY' || fail "the report of collection --refine"
+import json, sys
+r0, r = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert "refinement" not in r0
+f = r["refinement"]
+assert f["reference"] == 0 and [m["mesh"] for m in f["meshes"]] == [1, 2], f
+for m in f["meshes"]:
+    assert m["iterations"] >= 1 and 4 - 1e-9 <= m["symmetric_dirichlet_energy_after"] < m["symmetric_dirichlet_energy_before"], m
+assert r["triples_checked"] == 6 and r["cycle_consistency_max_rel_error"] < 1e-8, r["cycle_consistency_max_rel_error"]
+PY
+    for pair in "1_to_0 $cow" "2_to_1 $tmp/c1.off"; do
+      set -- $pair
+      e0=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/c0/$1.map.txt" "$2" "$2")
+      e1=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/cr/$1.map.txt" "$2" "$2")
+      echo "$1: unrefined $e0; refined $e1"
+      echo "$e0 $e1" | awk '{ if(!($4 == 0 && $12 == 0 && $14 < $6)) exit 1 }' || fail "$1: the refined worst error is not lower"
+    done
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --stage embed --refine 2> "$tmp/stderr"; [ $? -eq 2 ] || fail "--refine with --stage: not a usage error"
+    [ ! -e "$tmp/cs" ] || fail "--refine with --stage left a folder"
+    echo ok ;;
   map_distortion)
     # the report's per-face distortion ("distortion"): a mesh onto the same file with the same
     # landmarks maps every vertex onto itself, so every face has sigma1 = sigma2 = 1: conformal

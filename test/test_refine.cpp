@@ -13,6 +13,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <cmath>
@@ -145,6 +146,79 @@ TEST_CASE(refinement_refusals_leave_the_embedding)
   CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, L, st, HOT::parameters::frame(p.sa.frame)) == HOT::ERROR_NO_1_TO_1_MAPPING);
   CHECK(st.message.find("not certified") != std::string::npos);
   CHECK(corners(p) == folded);
+}
+
+// a copy of m bent along its z axis into an arc of radius R in the x-z plane (as test/bend.awk:
+// the axis is not stretched, so the copy is near an isometry of m for R large against m's width)
+static Mesh bent(const Mesh& m, double R)
+{
+  Mesh b = m;
+  for(vertex_descriptor v : vertices(b)) {
+    const K::Point_3& q = m.point(v);
+    const double t = q.z() / R, c = std::cos(t), s = std::sin(t);
+    b.point(v) = K::Point_3(R * (1 - c) + q.x() * c, q.y(), R * s - q.x() * s);
+  }
+  return b;
+}
+
+static double diagonal(const Mesh& m)
+{
+  const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(m);
+  return std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) + CGAL::square(bb.zmax() - bb.zmin()));
+}
+
+// the mean distance, in diagonals of b, of the images of a collection map a -> b to the truth
+// (vertex i <-> vertex i: the copies share the triangulation)
+template <class Collection>
+static double collection_error(Collection& coll, const std::vector<Mesh>& m, std::size_t a, std::size_t b)
+{
+  const auto& f = coll.map(a, b);
+  double sum = 0;
+  for(vertex_descriptor v : vertices(m[a]))
+    sum += f[v.idx()].success ? std::sqrt(CGAL::squared_distance(HOT::surface_point(f[v.idx()], coll.locator(b), get(CGAL::vertex_point, m[b])), m[b].point(v)))
+                              : 1e300;
+  return sum / num_vertices(m[a]) / diagonal(m[b]);
+}
+
+TEST_CASE(refined_collection_is_cycle_consistent)
+{
+  // cow.off and three bent copies (radii 4, 6 and 10 times its extent along z): four shapes
+  // of one triangulation, the truth between any two vertex i <-> vertex i, near isometries
+  std::vector<Mesh> m(1);
+  CHECK(read_demo_mesh("cow", m[0]));
+  if(num_vertices(m[0]) == 0)
+    return;
+  const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(m[0]);
+  for(double r : {4.0, 6.0, 10.0})
+    m.push_back(bent(m[0], r * (bb.zmax() - bb.zmin())));
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m[0], 12);
+  HOT::Orbifold_collection<Mesh> coll;
+  for(const Mesh& x : m)
+    coll.add_mesh(x, lm);
+  CHECK(coll.embed() == HOT::OK);
+  double before[4] = {0, 0, 0, 0};
+  for(std::size_t i = 1; i < 4; ++i)
+    before[i] = collection_error(coll, m, i, 0);
+  CHECK(coll.refine(30) == HOT::OK);
+  CHECK(coll.refinement_statistics(0).stop == HOT::Refinement_not_run); // (the reference)
+  for(std::size_t i = 1; i < 4; ++i) {
+    const HOT::Map_refinement_statistics st = coll.refinement_statistics(i);
+    const double after = collection_error(coll, m, i, 0);
+    std::cout << "  mesh " << i << " -> 0: error mean " << 100 * before[i] << "% -> " << 100 * after << "%, energy " << st.energy_before
+              << " -> " << st.energy_after << ", " << st.iterations << " iterations" << std::endl;
+    CHECK(st.iterations >= 1 && st.energy_after < st.energy_before && st.energy_after >= 4 - 1e-9);
+    CHECK(after < before[i]);
+  }
+  // maps compose through the one orbifold: f_bc(f_ab(x)) = f_ac(x) to rounding, over all triples
+  double worst = 0;
+  for(std::size_t a = 0; a < 4; ++a)
+    for(std::size_t b = 0; b < 4; ++b)
+      for(std::size_t c = 0; c < 4; ++c)
+        if(a != b && b != c && a != c)
+          worst = (std::max)(worst, coll.cycle_consistency_error(a, b, c));
+  std::cout << "  cycle consistency over the 24 triples: " << worst << " of the diagonal" << std::endl;
+  CHECK(worst < 1e-8);
+  CHECK(coll.refine(5, 9) == HOT::ERROR_WRONG_PARAMETER); // (no mesh 9)
 }
 
 HOT_TEST_MAIN

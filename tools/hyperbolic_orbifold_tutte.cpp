@@ -109,7 +109,7 @@ const char* const usage_text =
   "      the same map from two embeddings stored by embed or collection (no embedding again):\n"
   "      they must put the same landmarks at the same cones (embed B with --order set to A's\n"
   "      \"landmark_positions_used\"); MAP.txt has one line per v line of A.obj; REPORT.json as map's\n"
-  "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [REPAIR]\n"
+  "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [--refine [N]] [REPAIR]\n"
   "      [--order auto|tsp|given] [--stage embed|maps|merge [--shard I/N]]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') in one landmark order (as\n"
   "      map's --order, over all the meshes' tours; tsp: the first mesh's) and maps them onto\n"
@@ -117,7 +117,10 @@ const char* const usage_text =
   "      As separate jobs (array jobs of a batch scheduler; the same options in every job):\n"
   "      --stage embed --shard I/N embeds meshes I, I+N, ...; then --stage maps --shard I/N maps\n"
   "      its share of the pairs from the stored embeddings; then --stage merge writes\n"
-  "      DIR/report.json (the same files as one process; DIR/.parts holds the jobs' results)\n"
+  "      DIR/report.json (the same files as one process; DIR/.parts holds the jobs' results).\n"
+  "      --refine [N] (one process only): fits every mesh's embedding to the first mesh's metric\n"
+  "      (map --refine onto it, at most N iterations, default 100); the maps stay compositions\n"
+  "      through the one orbifold (cycle consistent); report.json's \"refinement\" per mesh\n"
   "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES [REPAIR]\n"
   "      writes K well-spread landmarks of the mesh (vertices of the file, also with --repair)\n"
   "  hyperbolic_orbifold_tutte cut --mesh IN --cones CONES [--order given|tsp] --out OUT.selection.txt\n"
@@ -1090,7 +1093,11 @@ int run_collection(int argc, char** argv)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("all-pairs");
-  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "target-genus", "max-handle", "cone-orders", "stage", "shard", "order"}, flags);
+  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "target-genus", "max-handle", "cone-orders", "stage", "shard", "order"}, flags,
+                    {"refine"});
+  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
+  if(refine > 0 && opt.has("stage"))
+    throw Usage_error{"--refine runs in the single-process collection, not with --stage"};
   Collection_job job;
   job.manifest_path = opt.get("manifest");
   job.dir = opt.get("out");
@@ -1111,6 +1118,16 @@ int run_collection(int argc, char** argv)
   std::vector<hot_tools::Input_mesh> inputs;
   const HOT::Orbifold_type type = read_collection(job.entries, job.repair, coll, inputs, minimum_landmarks(job.orders));
   embed_collection(job.entries, coll);
+  if(refine > 0) { // every mesh's embedding fitted to mesh 0's metric; the maps through the one orbifold
+    const HOT::Error_code ec = coll.refine(refine, 0);
+    if(ec != HOT::OK)
+      throw Failure{ec, "--refine: " + coll.message()};
+    for(std::size_t i = 1; i < job.size(); ++i) {
+      const HOT::Map_refinement_statistics st = coll.refinement_statistics(i);
+      std::cerr << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << ": " << st.iterations
+                << " certified iterations, symmetric Dirichlet energy " << st.energy_before << " -> " << st.energy_after << " (" << st.seconds << " s)" << std::endl;
+    }
+  }
   const Collection_maps maps = map_collection(coll, job.all_pairs);
   write_collection_files(job, coll, type, maps, inputs);
   std::cout << "landmark order:";

@@ -250,17 +250,24 @@ struct Map_summary
 };
 
 // map --refine's block of the report: the refinement's statistics and the distortion before it
-inline void write_refinement_json(std::ostream& os, const HOT::Map_refinement_statistics& r, const HOT::Map_distortion& before)
+// the fields of a refinement's statistics (without braces; `sep` between groups of them)
+inline void write_refinement_fields(std::ostream& os, const HOT::Map_refinement_statistics& r, const char* sep)
 {
   static const char* const stops[] = {"not_run", "iterations", "converged", "certificate", "solver"};
-  os << "  \"refinement\": {\"iterations\": " << r.iterations << ", \"stop\": \"" << stops[r.stop] << "\", \"message\": \""
-     << json_escape(r.message) << "\",\n                 \"symmetric_dirichlet_energy_before\": ";
+  os << "\"iterations\": " << r.iterations << ", \"stop\": \"" << stops[r.stop] << "\", \"message\": \"" << json_escape(r.message)
+     << "\"," << sep << "\"symmetric_dirichlet_energy_before\": ";
   write_json_number(os, r.energy_before);
   os << ", \"symmetric_dirichlet_energy_after\": ";
   write_json_number(os, r.energy_after);
-  os << ", \"free_vertices\": " << r.free_vertices << ", \"undone_moves\": " << r.undone_moves
-     << ",\n                 \"seconds\": " << r.seconds << ", \"seconds_certificate\": " << r.seconds_certificate
-     << ",\n                 \"distortion_before\": {\"conformal\": ";
+  os << ", \"free_vertices\": " << r.free_vertices << ", \"undone_moves\": " << r.undone_moves << "," << sep
+     << "\"seconds\": " << r.seconds << ", \"seconds_certificate\": " << r.seconds_certificate;
+}
+
+inline void write_refinement_json(std::ostream& os, const HOT::Map_refinement_statistics& r, const HOT::Map_distortion& before)
+{
+  os << "  \"refinement\": {";
+  write_refinement_fields(os, r, "\n                 ");
+  os << ",\n                 \"distortion_before\": {\"conformal\": ";
   write_distortion_summary_json(os, before.conformal_summary);
   os << ",\n                                       \"area\": ";
   write_distortion_summary_json(os, before.area_summary);
@@ -377,6 +384,10 @@ struct Collection_report
   std::size_t orders_tried = 0;
   std::size_t triples = 0;
   double cycle = 0;
+  // collection --refine: what refine() did to each mesh (empty: not refined; the reference's
+  // entry is not written)
+  std::vector<HOT::Map_refinement_statistics> refinement;
+  std::size_t refinement_reference = 0;
 };
 
 // Writes the report of `collection`.
@@ -392,6 +403,18 @@ inline void write_collection_report(std::ostream& os, const Collection_report& r
   os << "],\n";
   if(r.orders_tried > 0)
     os << "  \"landmark_order_from\": \"" << r.order_from << "\",\n  \"orders_tried\": " << r.orders_tried << ",\n";
+  if(!r.refinement.empty()) {
+    os << "  \"refinement\": {\"reference\": " << r.refinement_reference << ", \"meshes\": [";
+    bool first = true;
+    for(std::size_t i = 0; i < r.refinement.size(); ++i)
+      if(i != r.refinement_reference) {
+        os << (first ? "" : ",") << "\n    {\"mesh\": " << i << ", ";
+        write_refinement_fields(os, r.refinement[i], " ");
+        os << "}";
+        first = false;
+      }
+    os << "\n  ]},\n";
+  }
   os << "  \"pairs\": [\n";
   for(std::size_t p = 0; p < r.pairs.size(); ++p)
     os << (p ? ",\n" : "") << "    {\"source\": " << r.pairs[p].first.first << ", \"target\": " << r.pairs[p].first.second
@@ -424,6 +447,11 @@ void write_collection_report(std::ostream& os, const std::vector<std::string>& m
         r.pairs.push_back(std::make_pair(std::make_pair(a, b), coll.map_seconds(a, b)));
   r.triples = maps.triples;
   r.cycle = maps.cycle;
+  bool refined = false;
+  for(std::size_t i = 0; i < N; ++i)
+    refined = refined || coll.refinement_statistics(i).stop != HOT::Refinement_not_run;
+  for(std::size_t i = 0; i < N && refined; ++i) // (mesh 0: the reference of collection --refine)
+    r.refinement.push_back(coll.refinement_statistics(i));
   write_collection_report(os, r);
 }
 

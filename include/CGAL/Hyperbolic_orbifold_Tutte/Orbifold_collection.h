@@ -13,6 +13,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 
 #include <CGAL/Dynamic_property_map.h>
@@ -219,9 +220,57 @@ public:
     locators_.clear();
     maps_.clear();
     map_seconds_.clear();
+    refinement_.clear();
     embedded_ = true;
     return OK;
   }
+
+  /// refines the embedding of every mesh but `reference` towards an isometric map onto
+  /// `reference` (`refine_orbifold_map()`, at most `iterations` each, in parallel with
+  /// `CGAL::Parallel_tag`). Each mesh keeps one embedding: the maps stay compositions through
+  /// the one orbifold (cycle consistent), fitted to one metric. Drops the cached maps and the
+  /// refined meshes' locators. Returns `OK` or the first failure (`message()`; a mesh embedded
+  /// partly in charts is refused). \pre `embed()` returned `OK`
+  Error_code refine(int iterations, std::size_t reference = 0)
+  {
+    const std::size_t N = items_.size();
+    if(!embedded_ || reference >= N || iterations < 0) {
+      message_ = !embedded_ ? "refine() needs the embeddings: call embed() first"
+                 : reference >= N ? "the reference mesh " + std::to_string(reference) + " is not in the collection"
+                                  : "the number of refinement iterations must be at least 0";
+      return ERROR_WRONG_PARAMETER;
+    }
+    for(std::size_t i = 0; i < N; ++i)
+      if(!items_[i].stats.charts.empty()) {
+        message_ = "mesh " + std::to_string(i) + " is embedded partly in charts around cone images, which refine() does not handle";
+        return ERROR_WRONG_PARAMETER;
+      }
+    const Locator& lr = locator(reference);
+    refinement_.assign(N, Map_refinement_statistics());
+    std::vector<Error_code> codes(N, OK);
+    for_each_index(N, [&](std::size_t i) {
+      if(i == reference)
+        return;
+      Item& it = items_[i];
+      std::vector<vertex_descriptor> ordered;
+      for(std::size_t c : order_) ordered.push_back(it.landmarks[c]);
+      codes[i] = refine_orbifold_map(*it.mesh, ordered, it.uv, *items_[reference].mesh, lr, refinement_[i],
+        parameters::refine(iterations, parameters::frame(it.stats.frame, parameters::cone_orders(ordered_orders(), parameters::orbifold_type(type_)))));
+    });
+    for(std::size_t i = 0; i < N; ++i)
+      if(codes[i] != OK) {
+        message_ = "mesh " + std::to_string(i) + ": " + refinement_[i].message;
+        return codes[i];
+      }
+    for(auto it = locators_.begin(); it != locators_.end();)
+      it = it->first == reference ? std::next(it) : locators_.erase(it);
+    maps_.clear();
+    map_seconds_.clear();
+    return OK;
+  }
+
+  /// what `refine()` did to mesh `i` (`Refinement_not_run` for the reference, or before `refine()`)
+  Map_refinement_statistics refinement_statistics(std::size_t i) const { return i < refinement_.size() ? refinement_[i] : Map_refinement_statistics(); }
 
   /// the locator of mesh `i` (built on first use)
   const Locator& locator(std::size_t i)
@@ -540,6 +589,7 @@ private:
   std::map<std::size_t, std::unique_ptr<Locator> > locators_;
   std::map<std::pair<std::size_t, std::size_t>, std::vector<Location> > maps_;
   std::map<std::pair<std::size_t, std::size_t>, double> map_seconds_;
+  std::vector<Map_refinement_statistics> refinement_;
 };
 
 } // namespace Hyperbolic_orbifold_Tutte

@@ -266,7 +266,7 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
   for(char f : fixed)
     stats.free_vertices += f ? 0 : 1;
   const Sign sign = faces(A).empty() ? POSITIVE : moves.orientation(*faces(A).begin(), corners);
-  internal::Arap_global_step step(src, fixed, true);
+  internal::Arap_global_step step(src, fixed);
   stats.stop = iterations == 0 ? Refinement_not_run : Refinement_iterations;
   // the tangent bases at the images: the previous one projected onto the plane of the image's
   // face (a basis that turns little from one step to the next keeps the global steps' matrices
@@ -278,8 +278,9 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
         T[i] = internal::tangent_basis(locs[i], locB, vpmB, T[i].col(0));
     // The step, then a line search along it: halved until the energy decreases and the
     // iterate is certified (the moves that would turn a face over undone). When no step
-    // lowers the energy and moves were undone, the step is solved again with the undone
-    // vertices held (the rest of it is then a descent direction of the energy), twice at most.
+    // lowers the energy, the step is solved again with the undone vertices held (the rest of
+    // it is then a descent direction of the energy), and the last two rounds with the ARAP
+    // proxy, whose weights do not blow up on nearly degenerate images.
     const std::vector<C> old = corners;
     const std::vector<typename Locator::Location> old_locs = locs;
     const std::vector<C> old_located = located;
@@ -288,12 +289,13 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
     bool accepted = false, certificate_failed = false, solved = true;
     double e = stats.energy_after;
     std::size_t undone = 0;
-    for(int round = 0; round < 3 && !accepted; ++round) {
+    for(int round = 0; round < 4 && !accepted; ++round) {
       std::vector<Eigen::Vector2d> d;
-      if(!step.solve(q, T, s, held, d)) {
-        solved = false;
-        break;
+      if(!step.solve(q, T, s, held, d, round < 2)) {
+        solved = false; // (a round with the ARAP proxy may still solve)
+        continue;
       }
+      solved = true;
       std::vector<C> from(vidx.size()), to(vidx.size());
       std::vector<double> alpha(vidx.size(), 0.0);
       for(std::size_t i = 0; i < vidx.size(); ++i)
@@ -319,12 +321,8 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
           stats.message = why;
         }
       }
-      bool more = false;
       for(std::size_t i = 0; i < held.size(); ++i)
-        if(undone_flag[i] && !held[i])
-          held[i] = more = true;
-      if(!more)
-        break;
+        held[i] = held[i] || undone_flag[i];
     }
     if(!accepted) {
       corners = old;

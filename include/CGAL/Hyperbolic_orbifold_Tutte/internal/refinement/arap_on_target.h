@@ -113,13 +113,13 @@ struct Arap_source
 };
 
 // The global step: with the rotations of the current images q frozen, the moves d (2 per
-// vertex, in the tangent bases T) minimising sum_f area_f |J_f(q + T d) - s R_f|^2 with the
-// vertices of `fixed` kept. The sparsity pattern is analysed once.
+// vertex, in the tangent bases T) minimising sum_f area_f |W_f (J_f(q + T d) - s R_f)|^2 with
+// the vertices of `fixed` kept: W_f = I (ARAP), or the reweighting of the symmetric Dirichlet
+// energy (see weights()). The sparsity pattern is analysed once.
 class Arap_global_step
 {
 public:
-  Arap_global_step(const Arap_source& src, const std::vector<char>& fixed, bool symmetric_dirichlet)
-    : src_(src), fixed_(fixed), symmetric_dirichlet_(symmetric_dirichlet)
+  Arap_global_step(const Arap_source& src, const std::vector<char>& fixed) : src_(src), fixed_(fixed)
   {
     unknown_.assign(fixed.size(), npos);
     for(std::size_t i = 0; i < fixed.size(); ++i)
@@ -132,8 +132,9 @@ public:
   // false when the factorisation fails (then d is zero); the vertices of `held` are tied to
   // d = 0 by a stiff spring (the pattern stays the one analysed)
   bool solve(const std::vector<Eigen::Vector3d>& q, const std::vector<Eigen::Matrix<double, 3, 2> >& T, double s,
-             const std::vector<char>& held, std::vector<Eigen::Vector2d>& d)
+             const std::vector<char>& held, std::vector<Eigen::Vector2d>& d, bool symmetric_dirichlet = true)
   {
+    symmetric_dirichlet_ = symmetric_dirichlet;
     typedef Eigen::Triplet<double> Tr;
     std::vector<Tr> trip;
     trip.reserve(src_.corners.size() * 36);
@@ -241,7 +242,8 @@ private:
     double mean = 0;
     for(int k = 0; k < 2; ++k) {
       const double tk = (std::max)(t[k], 1e-8);
-      const double w2 = std::abs(tk - 1) < 1e-6 ? 4.0 : (tk - std::pow(tk, -3)) / (tk - 1);
+      // (capped: a nearly degenerate image would make the system too stiff to factor)
+      const double w2 = (std::min)(std::abs(tk - 1) < 1e-6 ? 4.0 : (tk - std::pow(tk, -3)) / (tk - 1), 1e6);
       M += w2 * u[k] * u[k].transpose();
       mean += 0.5 * w2;
     }
@@ -252,7 +254,7 @@ private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   const Arap_source& src_;
   const std::vector<char>& fixed_;
-  bool symmetric_dirichlet_;
+  bool symmetric_dirichlet_ = true; // (the proxy of the current solve)
   std::vector<std::size_t> unknown_;
   std::size_t n_ = 0;
   bool factored_ = false; // (ldlt_ holds the factor of an earlier step's matrix)
