@@ -32,10 +32,16 @@
 #     (debris, openings of 2% to 20% of the area beside and between the landmarks, a handle)
 #     on bear.off and on a TOSCA wolf (../shared/data, read in place, when present), mapped
 #     with `map --repair` onto the clean shape: error against the clean pair's, time.
+# 11. refinement (bench_refine, `map --refine`): refine_orbifold_map() on pose pairs with a
+#     ground truth, TOSCA's wolves with 7 and 21 landmarks and SHREC'07 humans with 7
+#     (../shared/data, read in place, when present): error and distortion before/after, the
+#     independent certificate, the times; and the whole `map` process against `map --refine`
+#     on libcgal-demo meshes onto bent copies (test/bend.awk): the ratio of the times.
 # Prints the machine first.
-# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans]
+# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine]
 #   --whole: only section 7; --io: only section 6; --scaling: only section 8; --fifty: only
-#   section 1's 50-landmark table; --reliability: only section 9; --scans: only section 10 (each runs alone in a few
+#   section 1's 50-landmark table; --reliability: only section 9; --scans: only section 10;
+#   --refine: only section 11 (each runs alone in a few
 #   minutes; --scaling --large in about 25)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -43,8 +49,8 @@ large=0; quick=0; only=""
 for a in "$@"; do
   case "$a" in
     --large) large=1 ;; --quick) quick=1 ;; --whole) only=whole ;; --io) only=io ;; --scaling) only=scaling ;;
-    --fifty) only=fifty ;; --reliability) only=reliability ;; --scans) only=scans ;;
-    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans]" >&2; exit 2 ;;
+    --fifty) only=fifty ;; --reliability) only=reliability ;; --scans) only=scans ;; --refine) only=refine ;;
+    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine]" >&2; exit 2 ;;
   esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
@@ -55,7 +61,8 @@ case "$only" in
   fifty) targets=(bench_parameterizer) ;;
   reliability) targets=(bench_reliability hyperbolic_orbifold_tutte) ;;
   scans) targets=(hyperbolic_orbifold_tutte) ;;
-  *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte bench_reliability) ;;
+  refine) targets=(bench_refine hyperbolic_orbifold_tutte) ;;
+  *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte bench_reliability bench_refine) ;;
 esac
 "$root/scripts/build.sh" "${targets[@]}" >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
@@ -203,6 +210,48 @@ scans_section() {
   echo "== scans as they come: generated defects mapped with map --repair onto the clean shape"
   bash "$root/benchmark/scan_defects.sh" "$cli" "$build/data" "$root/../shared/data" 2>/dev/null
 }
+refine_section() {
+  echo "== refinement (refine_orbifold_map(); errors in % of the target's diagonal against vertex i <-> vertex i)"
+  local wolf="$root/../shared/data/collections/tosca_wolf" human="$root/../shared/data/collections/shrec07_human"
+  if [ -f "$wolf/tosca_wolf.suggested_rows7.txt" ]; then
+    for p in "0 1" "0 2" "1 2"; do
+      set -- $p
+      for rows in "$wolf/tosca_wolf.suggested_rows7.txt" ""; do
+        "$build/bin/bench_refine" "$wolf/tosca_wolf$1.off" "$wolf/tosca_wolf$1.landmarks.txt" "$wolf/tosca_wolf$2.off" \
+          "$wolf/tosca_wolf$2.landmarks.txt" $rows || true
+      done
+    done
+  else
+    echo "(../shared/data/collections/tosca_wolf not found: the TOSCA pairs are skipped)"
+  fi
+  if [ -f "$human/shrec07_human.suggested_rows7.txt" ]; then
+    for p in "001 002" "001 003" "002 004"; do
+      set -- $p
+      "$build/bin/bench_refine" "$human/shrec07_human_$1.off" "$human/shrec07_human_$1.landmarks.txt" "$human/shrec07_human_$2.off" \
+        "$human/shrec07_human_$2.landmarks.txt" "$human/shrec07_human.suggested_rows7.txt" || true
+    done
+  fi
+  echo "== map against map --refine, whole processes (7 landmarks from 'landmarks'; onto a copy bent by test/bend.awk, radius 4 heights)"
+  printf '%-16s %9s %9s %9s %7s  %s\n' mesh vertices map_s refine_s ratio "worst error % (map, map --refine)"
+  for m in bear cow bull armadillo; do
+    local off="$build/data/meshes/$m.off"
+    [ -f "$off" ] || continue
+    local h; h=$(awk 'NR == 2 { n = $1 } NR > 2 && NR <= 2 + n { if(NR == 3 || $3 < lo) lo = $3; if(NR == 3 || $3 > hi) hi = $3 } END { print 4 * (hi - lo) }' "$off")
+    awk -v R="$h" -f "$root/test/bend.awk" "$off" > "$work/$m-bent.off"
+    "$cli" landmarks --mesh "$off" --count 7 --out "$work/$m.c7" >/dev/null 2>&1 || continue
+    local args=(--source "$off" --source-cones "$work/$m.c7" --target "$work/$m-bent.off" --target-cones "$work/$m.c7")
+    local t0 t1 t2
+    t0=$(now); "$cli" map "${args[@]}" --out "$work/m0.txt" >/dev/null 2>&1 || continue
+    t1=$(now); "$cli" map "${args[@]}" --out "$work/m1.txt" --refine >/dev/null 2>&1 || continue
+    t2=$(now)
+    local e0 e1
+    e0=$(awk -f "$root/test/off_reader.awk" -f "$root/test/map_error.awk" "$work/m0.txt" "$work/$m-bent.off" "$work/$m-bent.off" | awk '{ printf "%.2f", 100 * $6 }')
+    e1=$(awk -f "$root/test/off_reader.awk" -f "$root/test/map_error.awk" "$work/m1.txt" "$work/$m-bent.off" "$work/$m-bent.off" | awk '{ printf "%.2f", 100 * $6 }')
+    printf '%-16s %9s %9s %9s %7s  %s -> %s\n' "$m" "$(sed -n 2p "$off" | awk '{print $1}')" "$(seconds "$t0" "$t1")" "$(seconds "$t1" "$t2")" \
+      "$(awk -v a="$(seconds "$t0" "$t1")" -v b="$(seconds "$t1" "$t2")" 'BEGIN { printf "%.2f", b / a }')" "$e0" "$e1"
+  done
+}
+if [ "$only" = refine ]; then refine_section; exit 0; fi
 if [ "$only" = reliability ]; then reliability_section; exit 0; fi
 if [ "$only" = scans ]; then scans_section; exit 0; fi
 if [ "$only" = whole ]; then whole_section; exit 0; fi
@@ -264,3 +313,4 @@ whole_section
 scaling_section
 reliability_section
 scans_section
+refine_section

@@ -103,7 +103,7 @@ bool refinement_move(const Location& l, const Locator& locB, VertexPointMapB vpm
 } // namespace internal
 
 /*!
-\ingroup PkgHyperbolicOrbifoldTutteMainFunctions
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
 refines the map \f$f_{AB}\f$ from `A` onto `B` through their common orbifold (the map of
 `map_vertices()`) towards an isometry: moves `A`'s embedding `uvA` so that the map lowers its
