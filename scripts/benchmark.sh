@@ -33,8 +33,8 @@
 #     on bear.off and on a TOSCA wolf (../shared/data, read in place, when present), mapped
 #     with `map --repair` onto the clean shape: error against the clean pair's, time.
 # 11. refinement (bench_refine, `map --refine`): refine_orbifold_map() on pose pairs with a
-#     ground truth, TOSCA's wolves with 7 and 21 landmarks and SHREC'07 humans with 7
-#     (../shared/data, read in place, when present): error and distortion before/after, the
+#     ground truth, TOSCA's wolves with 7 and 21 landmarks (../shared/data, read in place,
+#     when present): error and distortion before/after, the
 #     independent certificate, the times; and the whole `map` process against `map --refine`
 #     on libcgal-demo meshes onto bent copies (test/bend.awk): the ratio of the times.
 # Prints the machine first.
@@ -212,7 +212,7 @@ scans_section() {
 }
 refine_section() {
   echo "== refinement (refine_orbifold_map(); errors in % of the target's diagonal against vertex i <-> vertex i)"
-  local wolf="$root/../shared/data/collections/tosca_wolf" human="$root/../shared/data/collections/shrec07_human"
+  local wolf="$root/../shared/data/collections/tosca_wolf" # (SHREC'07's humans are not one triangulation: no vertex truth)
   if [ -f "$wolf/tosca_wolf.suggested_rows7.txt" ]; then
     for p in "0 1" "0 2" "1 2"; do
       set -- $p
@@ -223,13 +223,6 @@ refine_section() {
     done
   else
     echo "(../shared/data/collections/tosca_wolf not found: the TOSCA pairs are skipped)"
-  fi
-  if [ -f "$human/shrec07_human.suggested_rows7.txt" ]; then
-    for p in "001 002" "001 003" "002 004"; do
-      set -- $p
-      "$build/bin/bench_refine" "$human/shrec07_human_$1.off" "$human/shrec07_human_$1.landmarks.txt" "$human/shrec07_human_$2.off" \
-        "$human/shrec07_human_$2.landmarks.txt" "$human/shrec07_human.suggested_rows7.txt" || true
-    done
   fi
   echo "== map against map --refine, whole processes (7 landmarks from 'landmarks'; onto a copy bent by test/bend.awk, radius 4 heights)"
   printf '%-16s %9s %9s %9s %7s  %s\n' mesh vertices map_s refine_s ratio "worst error % (map, map --refine)"

@@ -250,6 +250,20 @@ struct Map_summary
 };
 
 // map --refine's block of the report: the refinement's statistics and the distortion before it
+// `"conformal": {..}, "area": {..}, "symmetric_dirichlet": {..}, "symmetric_dirichlet_energy": E`
+// (`indent` before "area" and "symmetric_dirichlet")
+inline void write_distortion_figures(std::ostream& os, const HOT::Map_distortion& d, const char* indent)
+{
+  os << "\"conformal\": ";
+  write_distortion_summary_json(os, d.conformal_summary);
+  os << "," << indent << "\"area\": ";
+  write_distortion_summary_json(os, d.area_summary);
+  os << "," << indent << "\"symmetric_dirichlet\": ";
+  write_distortion_summary_json(os, d.symmetric_dirichlet_summary);
+  os << ", \"symmetric_dirichlet_energy\": ";
+  write_json_number(os, d.symmetric_dirichlet_energy);
+}
+
 // the fields of a refinement's statistics (without braces; `sep` between groups of them)
 inline void write_refinement_fields(std::ostream& os, const HOT::Map_refinement_statistics& r, const char* sep)
 {
@@ -267,14 +281,8 @@ inline void write_refinement_json(std::ostream& os, const HOT::Map_refinement_st
 {
   os << "  \"refinement\": {";
   write_refinement_fields(os, r, "\n                 ");
-  os << ",\n                 \"distortion_before\": {\"conformal\": ";
-  write_distortion_summary_json(os, before.conformal_summary);
-  os << ",\n                                       \"area\": ";
-  write_distortion_summary_json(os, before.area_summary);
-  os << ",\n                                       \"symmetric_dirichlet\": ";
-  write_distortion_summary_json(os, before.symmetric_dirichlet_summary);
-  os << ", \"symmetric_dirichlet_energy\": ";
-  write_json_number(os, before.symmetric_dirichlet_energy);
+  os << ",\n                 \"distortion_before\": {";
+  write_distortion_figures(os, before, "\n                                       ");
   os << "}},\n";
 }
 
@@ -304,14 +312,8 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
      << ", \"map\": " << m.seconds_map << ", \"reliability\": " << m.seconds_reliability
      << ", \"distortion\": " << m.seconds_distortion << "},\n";
   // per-face distortion summaries (infinity as "inf"), the faces measured, the degenerate ones
-  os << "  \"distortion\": {\"conformal\": ";
-  write_distortion_summary_json(os, m.distortion.conformal_summary);
-  os << ",\n                 \"area\": ";
-  write_distortion_summary_json(os, m.distortion.area_summary);
-  os << ",\n                 \"symmetric_dirichlet\": ";
-  write_distortion_summary_json(os, m.distortion.symmetric_dirichlet_summary);
-  os << ", \"symmetric_dirichlet_energy\": ";
-  write_json_number(os, m.distortion.symmetric_dirichlet_energy);
+  os << "  \"distortion\": {";
+  write_distortion_figures(os, m.distortion, "\n                 ");
   os << ",\n                 \"faces\": " << m.distortion.conformal_summary.number_of_faces
      << ", \"degenerate_faces\": " << m.distortion.number_of_degenerate_faces() << "},\n";
   if(m.refined)

@@ -22,7 +22,7 @@ enum Refinement_stop
 {
   Refinement_not_run,     ///< no iteration was asked for
   Refinement_iterations,  ///< the asked number of iterations ran
-  Refinement_converged,   ///< an iteration lowered the energy by less than a relative 1e-6 (kept), or no step along its moves lowered it
+  Refinement_converged,   ///< five iterations in a row lowered the energy by less than a relative 1e-6 (kept), or no step along an iteration's moves lowered it
   Refinement_certificate, ///< no step along an iteration's moves that lowered the energy passed the exact certificate: the last certified iterate is kept
   Refinement_solver       ///< the global step's linear system could not be solved: the last iterate is kept
 };

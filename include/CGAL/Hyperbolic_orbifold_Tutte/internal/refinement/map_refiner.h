@@ -1,0 +1,347 @@
+// Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s)     : Hyperbolic_orbifold_Tutte developers
+
+#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_REFINEMENT_MAP_REFINER_H
+#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_REFINEMENT_MAP_REFINER_H
+
+// The refinement's driver (refine_orbifold_map() runs it; see arap_on_target.h for the
+// subsystem): the state of one refinement (A's corners, the images of its vertices on B, their
+// tangent bases) and its iterations. The certificate is a function given by the caller, so
+// that this layer knows no public header but the vocabulary ones.
+
+#include <CGAL/Hyperbolic_orbifold_Tutte/Map_refinement_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/refinement/arap_on_target.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/refinement/corner_moves.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/squared_distance_3.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// the point of the disk, in the frame of the located corner, whose image on B's face
+// `l.face_index` is y (affine coordinates there, extended outside the face, combined as the
+// hyperboloid model does); none when the extension leaves the disk
+template <class Location, class Locator, class VertexPointMapB>
+std::optional<std::complex<double> > refinement_target(const Location& l, const Locator& locB, VertexPointMapB vpmB,
+                                                        const Eigen::Vector3d& y)
+{
+  typedef std::complex<double> C;
+  Eigen::Vector3d P[3];
+  C z[3];
+  for(int k = 0; k < 3; ++k) {
+    const auto& p = get(vpmB, locB.vertex(locB.corner_vertex_index(l.face_index, k)));
+    P[k] = Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+    const auto c = locB.corner_point(l.face_index, k);
+    z[k] = C(to_double(c.x()), to_double(c.y()));
+  }
+  Eigen::Matrix<double, 3, 2> E;
+  E.col(0) = P[1] - P[0];
+  E.col(1) = P[2] - P[0];
+  const Eigen::Vector2d st = (E.transpose() * E).ldlt().solve(E.transpose() * (y - P[0]));
+  const double bc[3] = {1 - st[0] - st[1], st[0], st[1]};
+  C k(0, 0);
+  double s = 0;
+  for(int j = 0; j < 3; ++j) {
+    const double mu = bc[j] / hyperboloid_weight(z[j]);
+    k += mu * poincare_to_klein(z[j]);
+    s += mu;
+  }
+  if(!(s > 0) || !(std::abs(k / s) < 1 - 1e-9))
+    return std::nullopt;
+  return l.element.inverse().apply(klein_to_poincare(k / s));
+}
+
+// an orthonormal basis of the plane of B's face at location l, its first vector `first`
+// projected onto the plane (the face's first edge if the projection is short)
+template <class Location, class Locator, class VertexPointMapB>
+Eigen::Matrix<double, 3, 2> tangent_basis(const Location& l, const Locator& locB, VertexPointMapB vpmB, const Eigen::Vector3d& first)
+{
+  Eigen::Vector3d P[3];
+  for(int k = 0; k < 3; ++k) {
+    const auto& p = get(vpmB, locB.vertex(locB.corner_vertex_index(l.face_index, k)));
+    P[k] = Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+  }
+  const Eigen::Vector3d n = (P[1] - P[0]).cross(P[2] - P[0]).normalized();
+  const Eigen::Vector3d projected = first - first.dot(n) * n;
+  const Eigen::Vector3d t1 = projected.norm() > 0.5 ? projected.normalized() : Eigen::Vector3d((P[1] - P[0]).normalized());
+  Eigen::Matrix<double, 3, 2> T;
+  T.col(0) = t1;
+  T.col(1) = n.cross(t1);
+  return T;
+}
+
+// the disk point (located corner's frame) where the move m of image q leads, m halved while
+// its extension leaves the disk; false if none is found
+template <class Location, class Locator, class VertexPointMapB>
+bool refinement_move(const Location& l, const Locator& locB, VertexPointMapB vpmB, const Eigen::Vector3d& q, Eigen::Vector3d m,
+                     std::complex<double>& z)
+{
+  for(int halving = 0; halving < 30; ++halving, m *= 0.5)
+    if(const auto t = refinement_target(l, locB, vpmB, q + m)) {
+      z = *t;
+      return true;
+    }
+  return false;
+}
+
+// One refinement of the map from A onto B (B's embedding searched by `Locator`): A's corners
+// in `corners_`, the images `q_` of A's vertices (their primary corners located on B) and the
+// iterations of refine_orbifold_map(). `certify(uv, why)` answers whether corners given as a
+// halfedge property map are a certified embedding (OK), or the error and why.
+template <class TriangleMeshA, class HalfedgeUVMapA, class TriangleMeshB, class Locator>
+class Map_refiner
+{
+  typedef boost::graph_traits<TriangleMeshA> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::property_traits<HalfedgeUVMapA>::value_type UV_point;
+  typedef std::complex<double> C;
+  typedef typename Locator::Location Location;
+
+public:
+  typedef std::function<UV_point(halfedge_descriptor)> Corner_reader;
+  typedef std::function<Error_code(const Corner_reader&, std::string&)> Certify;
+
+  Map_refiner(const TriangleMeshA& A, const std::vector<vertex_descriptor>& landmarks, HalfedgeUVMapA uvA, const TriangleMeshB& B,
+              const Locator& locB, Map_refinement_statistics& stats, const Certify& certify)
+    : A_(A), landmarks_(landmarks), B_(B), locB_(locB), stats_(stats), certify_(certify), vidx_(vertices(A)), hidx_(halfedges(A)),
+      corners_(hidx_.size(), C(0, 0)), fixed_(vidx_.size(), 0), q_(vidx_.size(), Eigen::Vector3d::Zero()), located_(vidx_.size(), C(2, 2)),
+      T_(vidx_.size(), Eigen::Matrix<double, 3, 2>::Zero())
+  {
+    for(halfedge_descriptor h : halfedges(A))
+      if(!is_border(h, A))
+        corners_[hidx_(h)] = C(to_double(get(uvA, h).x()), to_double(get(uvA, h).y()));
+  }
+
+  // checks the embedding, reads A's faces and locates the images: OK, or the error (and
+  // stats.message)
+  template <class VertexPointMapA>
+  Error_code prepare(VertexPointMapA vpmA)
+  {
+    std::string why;
+    const Error_code ec = certified(why);
+    if(ec != OK) {
+      stats_.message = "the embedding to refine is not certified: " + why;
+      return ec;
+    }
+    for(vertex_descriptor v : landmarks_)
+      fixed_[vidx_(v)] = 1;
+    moves_.reset(new Corner_moves<TriangleMeshA>(A_, vidx_, hidx_, corners_, fixed_));
+    for(auto f : faces(A_)) {
+      std::array<std::size_t, 3> c;
+      std::array<Eigen::Vector3d, 3> p;
+      int k = 0;
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, A_), A_)) {
+        c[k] = vidx_(v);
+        p[k++] = to_eigen(get(vpmA, v));
+      }
+      src_.add_face(c, p);
+    }
+    double area_B = 0;
+    const auto vpmB = get(vertex_point, B_);
+    for(auto f : faces(B_)) {
+      const auto h = halfedge(f, B_);
+      area_B += std::sqrt(to_double(squared_area(get(vpmB, source(h, B_)), get(vpmB, target(h, B_)), get(vpmB, target(next(h, B_), B_)))));
+    }
+    s_ = std::sqrt(area_B / src_.total_area);
+    if(!locate()) {
+      stats_.message = "a vertex of the source could not be located on the target";
+      return ERROR_POINT_NOT_LOCATED;
+    }
+    stats_.energy_before = stats_.energy_after = src_.symmetric_dirichlet(q_, s_);
+    for(char f : fixed_)
+      stats_.free_vertices += f ? 0 : 1;
+    sign_ = faces(A_).empty() ? POSITIVE : moves_->orientation(*faces(A_).begin(), corners_);
+    step_.reset(new Arap_global_step(src_, fixed_));
+    return OK;
+  }
+
+  // One iteration. The step, then a line search along it: halved until the energy decreases
+  // and the iterate is certified (the moves that would turn a face over undone). When no step
+  // lowers the energy, the step is solved again with the undone vertices held (the rest of it
+  // is then a descent direction of the energy), and the last two rounds with the ARAP proxy,
+  // whose weights do not blow up on nearly degenerate images. False when it stops (the last
+  // certified iterate kept, stats.stop set).
+  bool iterate()
+  {
+    // the tangent bases at the images: the previous one projected onto the plane of the
+    // image's face (a basis that turns little from one step to the next keeps the global
+    // steps' matrices close, and the earlier factor a good preconditioner)
+    for(std::size_t i = 0; i < vidx_.size(); ++i)
+      if(!fixed_[i])
+        T_[i] = tangent_basis(locs_[i], locB_, get(vertex_point, B_), T_[i].col(0));
+    const std::vector<C> old = corners_, old_located = located_;
+    const std::vector<Location> old_locs = locs_;
+    const std::vector<Eigen::Vector3d> old_q = q_;
+    std::vector<char> held(vidx_.size(), 0);
+    bool accepted = false, certificate_failed = false, solved = true;
+    double e = stats_.energy_after;
+    std::size_t undone = 0;
+    for(int round = 0; round < 4 && !accepted; ++round) {
+      std::vector<Eigen::Vector2d> d;
+      if(!step_->solve(q_, T_, s_, held, d, round < 2)) {
+        solved = false; // (a round with the ARAP proxy may still solve)
+        continue;
+      }
+      solved = true;
+      std::vector<C> from(vidx_.size()), to(vidx_.size());
+      std::vector<double> alpha(vidx_.size(), 0.0);
+      for(std::size_t i = 0; i < vidx_.size(); ++i)
+        if(!fixed_[i] && !held[i]) {
+          from[i] = corners_[hidx_(moves_->primary(i))];
+          alpha[i] = refinement_move(locs_[i], locB_, get(vertex_point, B_), q_[i], T_[i] * d[i], to[i]) ? 1.0 : 0.0;
+        }
+      std::vector<char> undone_flag(vidx_.size(), 0);
+      for(int attempt = 0; attempt < 8 && !accepted; ++attempt) {
+        corners_ = old;
+        std::vector<double> a = alpha;
+        for(double& x : a)
+          x = std::ldexp(x, -attempt);
+        undone = moves_->move(from, to, a, old, corners_, sign_, undone_flag);
+        e = locate() ? src_.symmetric_dirichlet(q_, s_) : std::numeric_limits<double>::infinity();
+        if(!(e < stats_.energy_after))
+          continue;
+        std::string why;
+        if(certified(why) == OK)
+          accepted = true;
+        else {
+          certificate_failed = true;
+          stats_.message = why;
+        }
+      }
+      for(std::size_t i = 0; i < held.size(); ++i)
+        held[i] = held[i] || undone_flag[i];
+    }
+    if(!accepted) {
+      corners_ = old;
+      locs_ = old_locs;
+      located_ = old_located;
+      q_ = old_q;
+      stats_.stop = !solved ? Refinement_solver : certificate_failed ? Refinement_certificate : Refinement_converged;
+      return false;
+    }
+    // converged after five iterations in a row that lower the energy by less than a relative
+    // 1e-6 (one is not enough: a nearly degenerate image can make the first steps small
+    // against a huge energy, and the later ones large)
+    small_steps_ = e > stats_.energy_after * (1 - 1e-6) ? small_steps_ + 1 : 0;
+    stats_.energy_after = e;
+    stats_.undone_moves = undone;
+    ++stats_.iterations;
+    if(small_steps_ >= 5)
+      stats_.stop = Refinement_converged;
+    return small_steps_ < 5;
+  }
+
+  // writes the corners into `uv`
+  void write(HalfedgeUVMapA uv) const
+  {
+    for(halfedge_descriptor h : halfedges(A_))
+      if(!is_border(h, A_))
+        put(uv, h, UV_point(corners_[hidx_(h)].real(), corners_[hidx_(h)].imag()));
+  }
+
+private:
+  template <class P>
+  static Eigen::Vector3d to_eigen(const P& p)
+  {
+    return Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+  }
+
+  // the certificate of the current corners (its time counted)
+  Error_code certified(std::string& why)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Error_code ec = certify_([this](halfedge_descriptor h) { return UV_point(corners_[hidx_(h)].real(), corners_[hidx_(h)].imag()); }, why);
+    stats_.seconds_certificate += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return ec;
+  }
+
+  // locates the vertices whose primary corner moved (all of them the first time), each by a
+  // walk from its previous location; false if one is not located
+  bool locate()
+  {
+    if(locs_.empty())
+      locs_.resize(vidx_.size());
+    std::atomic<bool> ok(true);
+    const auto vpmB = get(vertex_point, B_);
+    const auto run = [&](std::size_t i) {
+      const halfedge_descriptor h = moves_->primary(i);
+      if(h == GT::null_halfedge() || corners_[hidx_(h)] == located_[i])
+        return;
+      const typename Locator::Point_2 z(corners_[hidx_(h)].real(), corners_[hidx_(h)].imag());
+      locs_[i] = located_[i] == C(2, 2) ? locB_.locate(z) : locB_.locate_near(z, locs_[i]);
+      located_[i] = corners_[hidx_(h)];
+      if(!locs_[i].success) {
+        ok = false;
+        return;
+      }
+      const Location& l = locs_[i]; // (as surface_point())
+      q_[i] = to_eigen(CGAL::barycenter(get(vpmB, locB_.vertex(locB_.corner_vertex_index(l.face_index, 0))), l.barycentric[0],
+                                        get(vpmB, locB_.vertex(locB_.corner_vertex_index(l.face_index, 1))), l.barycentric[1],
+                                        get(vpmB, locB_.vertex(locB_.corner_vertex_index(l.face_index, 2))), l.barycentric[2]));
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(vidx_.size() > 10000) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vidx_.size(), 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t i = r.begin(); i != r.end(); ++i)
+          run(i);
+      });
+      return ok.load();
+    }
+#endif
+    for(std::size_t i = 0; i < vidx_.size(); ++i)
+      run(i);
+    return ok.load();
+  }
+
+  const TriangleMeshA& A_;
+  const std::vector<vertex_descriptor>& landmarks_;
+  const TriangleMeshB& B_;
+  const Locator& locB_;
+  Map_refinement_statistics& stats_;
+  Certify certify_;
+  const Dense_index<vertex_descriptor> vidx_;
+  const Dense_index<halfedge_descriptor> hidx_;
+  std::vector<C> corners_;
+  std::vector<char> fixed_;
+  std::unique_ptr<Corner_moves<TriangleMeshA> > moves_;
+  Arap_source src_;
+  double s_ = 1;
+  std::vector<Location> locs_;
+  std::vector<Eigen::Vector3d> q_;
+  std::vector<C> located_; // per vertex: the primary corner's point when last located (2: never)
+  std::vector<Eigen::Matrix<double, 3, 2> > T_;
+  Sign sign_ = POSITIVE;
+  std::unique_ptr<Arap_global_step> step_;
+  int small_steps_ = 0; // iterations in a row that lowered the energy by less than a relative 1e-6
+};
+
+} // namespace internal
+} // namespace Hyperbolic_orbifold_Tutte
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_REFINEMENT_MAP_REFINER_H
