@@ -42,7 +42,7 @@ fi
 # with Ninja where it is installed (make would build the named targets one after the other).
 labels='^(unit|input|cut|maps|cli|embedding)$'
 targets=(test_hyperbolic_kernel test_orbifold_tiles test_multigrid test_traits_archetype test_input_checks test_prepare_mesh test_cut_graph
-         test_parameterizer test_maps test_cgal_drop_in test_certify fuzz_mesh_reader hyperbolic_orbifold_tutte)
+         test_parameterizer test_maps test_refine test_cgal_drop_in test_certify fuzz_mesh_reader hyperbolic_orbifold_tutte)
 asan="${HOT_ASAN_BUILD_DIR:-$build-asan}"
 t0=$SECONDS
 echo "== sanitizer stage (address, undefined) in $asan"
