@@ -146,6 +146,24 @@ TEST_CASE(refinement_refusals_leave_the_embedding)
   CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, L, st, HOT::parameters::frame(p.sa.frame)) == HOT::ERROR_NO_1_TO_1_MAPPING);
   CHECK(st.message.find("not certified") != std::string::npos);
   CHECK(corners(p) == folded);
+  // a torus (a 6 x 6 grid with its sides identified: V - E + F = 0, genus 1) is refused before
+  // its embedding is read
+  Mesh torus;
+  std::vector<vertex_descriptor> grid;
+  for(int i = 0; i < 36; ++i)
+    grid.push_back(torus.add_vertex(K::Point_3((2 + std::cos(i / 6 * M_PI / 3)) * std::cos(i % 6 * M_PI / 3),
+                                               (2 + std::cos(i / 6 * M_PI / 3)) * std::sin(i % 6 * M_PI / 3), std::sin(i / 6 * M_PI / 3))));
+  for(int i = 0; i < 6; ++i)
+    for(int j = 0; j < 6; ++j) {
+      const auto at = [&](int a, int b) { return grid[(a % 6) * 6 + b % 6]; };
+      CHECK(torus.add_face(at(i, j), at(i, j + 1), at(i + 1, j + 1)) != Mesh::null_face());
+      CHECK(torus.add_face(at(i, j), at(i + 1, j + 1), at(i + 1, j)) != Mesh::null_face());
+    }
+  CHECK(CGAL::is_closed(torus) && num_vertices(torus) - num_edges(torus) + num_faces(torus) == 0);
+  auto uvt = torus.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  const std::vector<vertex_descriptor> torus_landmarks(grid.begin(), grid.begin() + 3);
+  CHECK(HOT::refine_orbifold_map(torus, torus_landmarks, uvt, p.b, L, st) == HOT::ERROR_WRONG_PARAMETER);
+  CHECK(st.message.find("genus 1") != std::string::npos);
 }
 
 // a copy of m bent along its z axis into an arc of radius R in the x-z plane (as test/bend.awk:

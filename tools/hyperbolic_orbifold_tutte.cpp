@@ -838,9 +838,8 @@ int run_map(int argc, char** argv)
   HOT::Map_distortion distortion_before;
   HOT::Map_refinement_statistics refinement;
   if(refine > 0) { // (A's embedding moves: everything below reads the refined map)
-    if(genus_of(A) > 0 || !A.stats.charts.empty())
-      throw Failure{HOT::ERROR_WRONG_PARAMETER, std::string("--refine handles maps of genus 0 whose source is embedded without charts; the source ") +
-                                                (genus_of(A) > 0 ? "has genus " + std::to_string(genus_of(A)) : std::string("is embedded partly in charts around cone images"))};
+    if(!A.stats.charts.empty()) // (the library refuses the rest: genus 1 or more)
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, "--refine handles sources embedded without charts; the source is embedded partly in charts around cone images"};
     distortion_before = HOT::map_distortion(A.mesh, B.mesh, locB, f);
     const HOT::Error_code ec = HOT::refine_orbifold_map(A.mesh, A.ordered, A.uv, B.mesh, locB, refinement,
       HOT::parameters::refine(refine, HOT::parameters::frame(A.stats.frame, HOT::parameters::cone_orders(A.stats.cone_orders, HOT::parameters::orbifold_type(A.type)))));

@@ -434,9 +434,8 @@ void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int
   check_map_pair(A, B);
   if(refine < 0)
     fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
-  if(refine > 0 && (A.genus > 0 || !A.stats.charts.empty()))
-    fail(HOT::ERROR_WRONG_PARAMETER, std::string("refine handles maps of genus 0 whose source is embedded without charts; the source ") +
-                                       (A.genus > 0 ? "has genus " + std::to_string(A.genus) : std::string("is embedded partly in charts around cone images")));
+  if(refine > 0 && !A.stats.charts.empty()) // (the library refuses the rest: genus 1 or more)
+    fail(HOT::ERROR_WRONG_PARAMETER, "refine handles sources embedded without charts; the source is embedded partly in charts around cone images");
   const Locator locB = target_locator(B);
   if(!locB.is_valid())
     fail(HOT::ERROR_POINT_NOT_LOCATED, "the target's embedding cannot be searched: " + locB.message());

@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/refinement/map_refiner.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -63,7 +64,8 @@ stays a bijection that interpolates the landmarks and is seamless through the or
        (`orbifold_type`, `frame`, `cone_orders`, `cut_graph`) describing `A`'s embedding, and
        `vertex_point_map` for `A` (`B`'s points are read with `get(vertex_point, B)`)
 
-\return `OK` (read `stats.stop`), `ERROR_NO_1_TO_1_MAPPING` if `uvA` itself is not certified,
+\return `OK` (read `stats.stop`), `ERROR_WRONG_PARAMETER` if `A` has genus 1 or more or its
+embedding is given in charts (`chart_map`: refused), `ERROR_NO_1_TO_1_MAPPING` if `uvA` itself is not certified,
 `ERROR_POINT_NOT_LOCATED` if a vertex of `A` cannot be located on `B`, or the certificate's
 error; `uvA` is then unchanged.
 */
@@ -97,6 +99,14 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
     }
     return ec;
   };
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value) {
+    stats.message = "refine_orbifold_map() handles embeddings without charts around cone images";
+    return ERROR_WRONG_PARAMETER;
+  }
+  if(is_closed(A) && internal::closed_mesh_genus(A) > 0) {
+    stats.message = "refine_orbifold_map() handles surfaces of genus 0; the source has genus " + std::to_string(internal::closed_mesh_genus(A));
+    return ERROR_WRONG_PARAMETER;
+  }
   Refiner refiner(A, landmarks, uvA, B, locB, stats, certify);
   const Error_code ec = refiner.prepare(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, A)));
   if(ec != OK)

@@ -27,6 +27,7 @@
 #include <tbb/parallel_for.h>
 #endif
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -42,6 +43,18 @@ namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
+// the points of B's face at location l
+template <class Location, class Locator, class VertexPointMapB>
+std::array<Eigen::Vector3d, 3> face_points(const Location& l, const Locator& locB, VertexPointMapB vpmB)
+{
+  std::array<Eigen::Vector3d, 3> P;
+  for(int k = 0; k < 3; ++k) {
+    const auto& p = get(vpmB, locB.vertex(locB.corner_vertex_index(l.face_index, k)));
+    P[k] = Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+  }
+  return P;
+}
+
 // the point of the disk, in the frame of the located corner, whose image on B's face
 // `l.face_index` is y (affine coordinates there, extended outside the face, combined as the
 // hyperboloid model does); none when the extension leaves the disk
@@ -50,11 +63,9 @@ std::optional<std::complex<double> > refinement_target(const Location& l, const 
                                                         const Eigen::Vector3d& y)
 {
   typedef std::complex<double> C;
-  Eigen::Vector3d P[3];
+  const std::array<Eigen::Vector3d, 3> P = face_points(l, locB, vpmB);
   C z[3];
   for(int k = 0; k < 3; ++k) {
-    const auto& p = get(vpmB, locB.vertex(locB.corner_vertex_index(l.face_index, k)));
-    P[k] = Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
     const auto c = locB.corner_point(l.face_index, k);
     z[k] = C(to_double(c.x()), to_double(c.y()));
   }
@@ -80,11 +91,7 @@ std::optional<std::complex<double> > refinement_target(const Location& l, const 
 template <class Location, class Locator, class VertexPointMapB>
 Eigen::Matrix<double, 3, 2> tangent_basis(const Location& l, const Locator& locB, VertexPointMapB vpmB, const Eigen::Vector3d& first)
 {
-  Eigen::Vector3d P[3];
-  for(int k = 0; k < 3; ++k) {
-    const auto& p = get(vpmB, locB.vertex(locB.corner_vertex_index(l.face_index, k)));
-    P[k] = Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
-  }
+  const std::array<Eigen::Vector3d, 3> P = face_points(l, locB, vpmB);
   const Eigen::Vector3d n = (P[1] - P[0]).cross(P[2] - P[0]).normalized();
   const Eigen::Vector3d projected = first - first.dot(n) * n;
   const Eigen::Vector3d t1 = projected.norm() > 0.5 ? projected.normalized() : Eigen::Vector3d((P[1] - P[0]).normalized());
@@ -300,9 +307,9 @@ private:
         return;
       }
       const Location& l = locs_[i]; // (as surface_point())
-      q_[i] = to_eigen(CGAL::barycenter(get(vpmB, locB_.vertex(locB_.corner_vertex_index(l.face_index, 0))), l.barycentric[0],
-                                        get(vpmB, locB_.vertex(locB_.corner_vertex_index(l.face_index, 1))), l.barycentric[1],
-                                        get(vpmB, locB_.vertex(locB_.corner_vertex_index(l.face_index, 2))), l.barycentric[2]));
+      const std::array<Eigen::Vector3d, 3> P = face_points(l, locB_, vpmB);
+      const std::array<double, 3>& b = l.barycentric;
+      q_[i] = (b[0] * P[0] + b[1] * P[1] + b[2] * P[2]) / (b[0] + b[1] + b[2]);
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(vidx_.size() > 10000) {
