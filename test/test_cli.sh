@@ -34,8 +34,8 @@ same_files() {
   local f
   for f in "$1"/*; do
     if [ "$(basename "$f")" = report.json ]; then
-      diff <(sed -E 's/"(embedding_seconds|map_seconds)": [0-9.e+-]+/"\1": T/g' "$f") \
-           <(sed -E 's/"(embedding_seconds|map_seconds)": [0-9.e+-]+/"\1": T/g' "$2/report.json") >/dev/null || fail "report.json differs beyond its times"
+      local times='s/"(embedding_seconds|map_seconds|seconds|seconds_certificate)": [0-9.e+-]+/"\1": T/g'
+      diff <(sed -E "$times" "$f") <(sed -E "$times" "$2/report.json") >/dev/null || fail "report.json differs beyond its times"
     else
       cmp -s "$f" "$2/$(basename "$f")" || fail "$(basename "$f") differs"
     fi
@@ -475,8 +475,22 @@ PY
       echo "$1: unrefined $e0; refined $e1"
       echo "$e0 $e1" | awk '{ if(!($4 == 0 && $12 == 0 && $14 < $6)) exit 1 }' || fail "$1: the refined worst error is not lower"
     done
-    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --stage embed --refine 2> "$tmp/stderr"; [ $? -eq 2 ] || fail "--refine with --stage: not a usage error"
-    [ ! -e "$tmp/cs" ] || fail "--refine with --stage left a folder"
+    # as separate jobs (the stages embed, refine, maps, merge, each with --refine 30, refine in
+    # two shards): the files of the single-process run, byte for byte (report.json apart from
+    # its times)
+    expect_error "$tmp/cs/1_c1.obj" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --all-pairs --refine 30 --stage refine
+    grep -q "run the embed stage" "$tmp/stderr" || fail "the refine stage before the embed stage should say so"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --all-pairs --refine 30 --stage embed >/dev/null 2>&1 || fail "--stage embed --refine"
+    expect_error "$tmp/cs/0_to_1.map.txt" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --all-pairs --refine 30 --stage maps
+    grep -q "was not refined" "$tmp/stderr" || fail "the maps stage before the refine stage should say so"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --all-pairs --stage refine 2> "$tmp/stderr"; [ $? -eq 2 ] || fail "--stage refine without --refine: not a usage error"
+    for i in 0 1; do
+      "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --all-pairs --refine 30 --stage refine --shard $i/2 >/dev/null 2>&1 || fail "--stage refine --shard $i/2"
+    done
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --all-pairs --refine 30 --stage maps >/dev/null 2>&1 || fail "--stage maps --refine"
+    "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/cs" --all-pairs --refine 30 --stage merge >/dev/null 2>&1 || fail "--stage merge --refine"
+    [ ! -e "$tmp/cs/.parts" ] || fail "the merge leaves the jobs' parts behind"
+    same_files "$tmp/cr" "$tmp/cs"
     echo ok ;;
   map_distortion)
     # the report's per-face distortion ("distortion"): a mesh onto the same file with the same

@@ -14,6 +14,9 @@
 //     since the other jobs have used it: the message says to run the collection in one process,
 //     which tries the others, or to force an order), writes DIR/<i>_<name>.obj and its entry of
 //     the report (DIR/.parts/mesh_<i>.json);
+//   - with --refine N, a refinement job per mesh (after the embeddings; the embed stage then
+//     writes DIR/.parts/embedded_<i>.obj): mesh i's embedding refined onto mesh 0's, written as
+//     DIR/<i>_<name>.obj, its statistics as DIR/.parts/refine_<i>.txt;
 //   - a map job per pair (a, b) the collection computes: reads the two stored embeddings (no
 //     embedding again), maps a onto b, writes DIR/<a>_to_<b>.map.txt (--all-pairs) and the
 //     map itself for the cycle check (DIR/.parts/map_<a>_<b>.bin) and its time;
@@ -29,6 +32,7 @@
 #include "io/reports.h"
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
@@ -134,6 +138,7 @@ struct Collection_job
   hot_tools::Repair_options repair;
   std::vector<int> orders; // --cone-orders, per landmark in the class-wide order (empty: 2 for all)
   std::string order = "auto"; // --order given|tsp|auto
+  int refine = 0;             // --refine N: the refine stage fits meshes 1, 2, ... to mesh 0's metric
 
   // the --repair options of every mesh: a collection's closed meshes are of genus 0, so with
   // --repair the handles of the others are cut (target genus 0) unless --target-genus is given
@@ -157,6 +162,10 @@ struct Collection_job
   std::string parts() const { return dir + "/.parts"; }
   std::string mesh_part(std::size_t i) const { return parts() + "/mesh_" + std::to_string(i) + ".json"; }
   std::string map_part(std::size_t a, std::size_t b) const { return parts() + "/map_" + std::to_string(a) + "_" + std::to_string(b) + ".bin"; }
+  // with --refine: the embed stage's embedding (the refine stage writes obj_path(i) from it and
+  // leaves it, so that a refine job run again refines the same embedding), the refinement's part
+  std::string embedded_path(std::size_t i) const { return parts() + "/embedded_" + std::to_string(i) + ".obj"; }
+  std::string refine_part(std::size_t i) const { return parts() + "/refine_" + std::to_string(i) + ".txt"; }
 };
 
 inline void make_folder(const std::string& dir)
@@ -267,7 +276,8 @@ inline double embed_collection_mesh(const Collection_job& job, const Collection_
   make_folder(job.parts());
   Output_files files;
   const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
-  files.write(job.obj_path(i), [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, addressed, &ch, &cones); });
+  files.write(job.refine > 0 ? job.embedded_path(i) : job.obj_path(i),
+              [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, addressed, &ch, &cones); });
   files.write(job.mesh_part(i), [&](std::ostream& os) {
     os << "reversed " << (st.landmark_order_reversed ? 1 : 0) << "\n"
        << "order_from " << (co.from < job.size() ? "mesh " + std::to_string(co.from) : std::string("given")) << "\n"
@@ -275,6 +285,108 @@ inline double embed_collection_mesh(const Collection_job& job, const Collection_
   });
   files.commit();
   return st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate;
+}
+
+// the text of the OBJ file `text` (the embedding `e` was read from) with its vt lines replaced
+// by e.uv's corners, as write_embedding_obj() writes them; a vt whose corners no longer have one
+// point fails (the corners of a cut-mesh vertex move together: they do not part)
+inline std::string with_corners(const std::string& text, const Stored_embedding& e)
+{
+  std::vector<Kernel::Point_2> point;
+  std::vector<char> seen;
+  for(SM_halfedge h : halfedges(e.mesh)) {
+    const std::size_t t = e.corner_vt[h.idx()];
+    if(t == Stored_embedding::npos)
+      continue;
+    if(t >= point.size()) {
+      point.resize(t + 1);
+      seen.resize(t + 1, 0);
+    }
+    if(seen[t] && point[t] != get(e.uv, h))
+      throw Failure{HOT::ERROR_NO_1_TO_1_MAPPING, e.path + ": two corners of one vt line of the stored embedding moved apart"};
+    point[t] = get(e.uv, h);
+    seen[t] = 1;
+  }
+  std::ostringstream os;
+  hot_tools::io_impl::Text_buffer b;
+  std::size_t t = 0;
+  for(std::size_t at = 0; at < text.size();) {
+    const std::size_t eol = std::min(text.find('\n', at), text.size());
+    if(text.compare(at, 3, "vt ") == 0) {
+      if(t >= point.size() || !seen[t])
+        throw Failure{HOT::ERROR_READ_FAILED, e.path + ": a vt line on no face"};
+      b.put("vt ").put(CGAL::to_double(point[t].x())).put(' ').put(CGAL::to_double(point[t].y())).put('\n');
+      ++t;
+    } else {
+      b.put(std::string_view(text).substr(at, eol - at));
+      if(eol < text.size())
+        b.put('\n');
+    }
+    at = eol + 1;
+  }
+  b.flush_to(os);
+  return os.str();
+}
+
+// The refinement job of mesh i (collection --refine N, after the embed stage): mesh i's
+// embedding refined towards an isometric map onto mesh 0 (refine_orbifold_map(), with the
+// parameters Orbifold_collection::refine() gives it in one process), written as
+// DIR/<i>_<name>.obj, and its statistics as DIR/.parts/refine_<i>.txt; mesh 0, the reference,
+// is copied. Returns the refinement's time.
+inline double refine_collection_mesh(const Collection_job& job, std::size_t i)
+{
+  std::string text;
+  if(!hot_tools::read_file_contents(job.embedded_path(i), text))
+    throw Failure{HOT::ERROR_READ_FAILED, job.entries[i].first + ": mesh " + std::to_string(i) +
+                                            " was not embedded for the refinement (run the embed stage of every shard with --refine first)"};
+  HOT::Map_refinement_statistics st;
+  if(i != 0) {
+    Stored_embedding A, B;
+    read_stored_embedding(job.embedded_path(i), A);
+    read_stored_embedding(job.embedded_path(0), B);
+    check_stored_pair(A, B);
+    if(!A.chart_isometries.empty())
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, "--refine: mesh " + std::to_string(i) + ": " + job.entries[i].first +
+                                                  " is embedded partly in charts around cone images, which the refinement does not handle"};
+    std::vector<SM_vertex> ordered;
+    for(std::size_t line : A.cones.vertex)
+      ordered.push_back(SM_vertex(static_cast<SM_vertex::size_type>(A.line_vertex[line])));
+    const Locator lb = stored_locator(B);
+    const HOT::Error_code ec = HOT::refine_orbifold_map(A.mesh, ordered, A.uv, B.mesh, lb, st,
+      HOT::parameters::refine(job.refine, HOT::parameters::frame(HOT::Hyperbolic_isometry_2<double>(),
+        HOT::parameters::cone_orders(job.orders.empty() ? std::vector<int>() : A.cones.order, HOT::parameters::orbifold_type(A.cones.type)))));
+    if(ec != HOT::OK)
+      throw Failure{ec, "--refine: mesh " + std::to_string(i) + ": " + st.message};
+    text = with_corners(text, A);
+  }
+  Output_files files;
+  files.write(job.obj_path(i), [&](std::ostream& os) { os << text; });
+  files.write(job.refine_part(i), [&](std::ostream& os) {
+    os.precision(17);
+    os << "iterations " << st.iterations << "\nstop " << static_cast<int>(st.stop) << "\nenergy_before " << st.energy_before
+       << "\nenergy_after " << st.energy_after << "\nfree_vertices " << st.free_vertices << "\nundone_moves " << st.undone_moves
+       << "\nseconds " << st.seconds << "\nseconds_certificate " << st.seconds_certificate << "\nmessage " << st.message << "\n";
+  });
+  files.commit();
+  return st.seconds;
+}
+
+// reads a refine job's part (the refinement's statistics)
+inline HOT::Map_refinement_statistics read_refine_part(const Collection_job& job, std::size_t i)
+{
+  std::ifstream is(job.refine_part(i));
+  HOT::Map_refinement_statistics st;
+  std::string key;
+  int stop = -1;
+  if(!(is >> key) || key != "iterations" || !(is >> st.iterations >> key >> stop >> key >> st.energy_before >> key >> st.energy_after >> key >>
+                                              st.free_vertices >> key >> st.undone_moves >> key >> st.seconds >> key >> st.seconds_certificate >> key) ||
+     key != "message" || stop < HOT::Refinement_not_run || stop > HOT::Refinement_solver)
+    throw Failure{HOT::ERROR_READ_FAILED, job.refine_part(i) + ": missing or unreadable: mesh " + std::to_string(i) +
+                                            " was not refined (run the refine stage of every shard first)"};
+  st.stop = static_cast<HOT::Refinement_stop>(stop);
+  is.get();
+  std::getline(is, st.message);
+  return st;
 }
 
 // the map f_ab of a collection from the stored embeddings; a point not located fails
@@ -293,6 +405,9 @@ inline std::vector<Locator::Location> map_stored(const Stored_embedding& A, cons
 // coordinates (the locator's order), in the machine's binary doubles. Returns the map's time.
 inline double map_collection_pair(const Collection_job& job, std::size_t a, std::size_t b)
 {
+  if(job.refine > 0) // (the refine stage's files, not a half-done stage's)
+    for(std::size_t i : {a, b})
+      read_refine_part(job, i);
   Stored_embedding A, B;
   read_stored_embedding(job.obj_path(a), A);
   read_stored_embedding(job.obj_path(b), B);
@@ -391,6 +506,13 @@ inline hot_tools::Collection_report merge_collection(const Collection_job& job)
                                                   " mesh's: the correspondence would reverse orientation"};
     r.mesh_entries.push_back(text.substr(eol + 1, text.size() - eol - 2));
   }
+  if(job.refine > 0) {
+    for(std::size_t i = 0; i < N; ++i)
+      r.refinement.push_back(read_refine_part(job, i));
+    r.refinement[0] = HOT::Map_refinement_statistics(); // (the reference: as in one process)
+    if(std::none_of(r.refinement.begin(), r.refinement.end(), [](const auto& st) { return st.stop != HOT::Refinement_not_run; }))
+      r.refinement.clear();
+  }
   Stored_embedding first;
   read_stored_embedding(job.obj_path(0), first);
   r.type = first.cones.type;
@@ -436,7 +558,13 @@ inline hot_tools::Collection_report merge_collection(const Collection_job& job)
   Output_files files;
   files.write(job.dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, r); });
   files.commit();
-  for(std::size_t i = 0; i < N; ++i) std::remove(job.mesh_part(i).c_str());
+  for(std::size_t i = 0; i < N; ++i) {
+    std::remove(job.mesh_part(i).c_str());
+    if(job.refine > 0) {
+      std::remove(job.refine_part(i).c_str());
+      std::remove(job.embedded_path(i).c_str());
+    }
+  }
   for(const auto& p : cp.pairs) std::remove(job.map_part(p.first, p.second).c_str());
   rmdir(job.parts().c_str());
   return r;

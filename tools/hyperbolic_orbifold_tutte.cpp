@@ -1048,7 +1048,7 @@ std::pair<std::size_t, std::size_t> parse_shard(const Options& opt)
   return std::make_pair(i, n);
 }
 
-// `collection --stage embed|maps|merge [--shard I/N]`: the collection as separate jobs
+// `collection --stage embed|refine|maps|merge [--shard I/N]`: the collection as separate jobs
 // (collection_jobs.h): the embed stage embeds meshes I, I + N, ...; the maps stage computes the
 // maps I, I + N, ... of the collection's list of pairs from the stored embeddings; the merge
 // writes report.json once both stages are done for every shard
@@ -1063,6 +1063,17 @@ int run_collection_stage(const Collection_job& job, const std::string& stage, st
       ++done;
     }
     std::cout << "collection shard " << shard.first << "/" << shard.second << ": embedded " << done << " of " << job.size() << " meshes into "
+              << job.dir << std::endl;
+  } else if(stage == "refine") {
+    if(job.refine <= 0)
+      throw Usage_error{"--stage refine needs --refine [N] (in every stage's job)"};
+    for(std::size_t i = shard.first; i < job.size(); i += shard.second) {
+      const double t = refine_collection_mesh(job, i);
+      if(i > 0)
+        std::cerr << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << " (" << t << " s)" << std::endl;
+      ++done;
+    }
+    std::cout << "collection shard " << shard.first << "/" << shard.second << ": refined " << done << " of " << job.size() << " meshes in "
               << job.dir << std::endl;
   } else if(stage == "maps") {
     const Collection_pairs cp = collection_pairs(job.size(), job.all_pairs);
@@ -1084,7 +1095,7 @@ int run_collection_stage(const Collection_job& job, const std::string& stage, st
     std::cout << "collection of " << job.size() << " meshes merged; " << r.triples << " triples checked, cycle consistency " << r.cycle
               << "; wrote " << job.dir << "/report.json" << std::endl;
   } else
-    throw Usage_error{"--stage must be embed, maps or merge, got '" + stage + "'"};
+    throw Usage_error{"--stage must be embed, refine, maps or merge, got '" + stage + "'"};
   return EXIT_SUCCESS;
 }
 
@@ -1095,8 +1106,6 @@ int run_collection(int argc, char** argv)
   const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "target-genus", "max-handle", "cone-orders", "stage", "shard", "order"}, flags,
                     {"refine"});
   const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
-  if(refine > 0 && opt.has("stage"))
-    throw Usage_error{"--refine runs in the single-process collection, not with --stage"};
   Collection_job job;
   job.manifest_path = opt.get("manifest");
   job.dir = opt.get("out");
@@ -1104,9 +1113,10 @@ int run_collection(int argc, char** argv)
   job.set_repair(parse_repair_options(opt));
   job.orders = parse_cone_orders(opt);
   job.order = parse_common_order(opt);
+  job.refine = refine;
   const std::pair<std::size_t, std::size_t> shard = parse_shard(opt);
   if(opt.has("shard") && !opt.has("stage"))
-    throw Usage_error{"--shard needs --stage embed or --stage maps (then --stage merge once)"};
+    throw Usage_error{"--shard needs --stage embed, refine or maps (then --stage merge once)"};
   job.entries = read_manifest(job.manifest_path);
   if(opt.has("stage"))
     return run_collection_stage(job, opt.get("stage"), shard);

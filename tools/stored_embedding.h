@@ -41,6 +41,7 @@ struct Stored_embedding
   // (a map file has one line per v line, "-1 0 0 0" for those)
   std::vector<std::size_t> line_vertex;
   std::vector<std::size_t> vertex_line; // per vertex of `mesh`: its v line
+  std::vector<std::size_t> corner_vt;   // per halfedge of `mesh`: the vt line (0-based) of its target corner (npos: border)
 
   static constexpr std::size_t npos = std::size_t(-1);
 
@@ -109,11 +110,13 @@ inline void read_stored_embedding(const std::string& path, Stored_embedding& e)
   e.uv = e.mesh.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
   e.charts = e.mesh.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
   const bool with_charts = !ce.point_charts.empty();
+  e.corner_vt.assign(num_halfedges(e.mesh), Stored_embedding::npos);
   std::size_t j = 0;
   for(SM_face f : faces(e.mesh)) {
     int k = 0;
     for(SM_halfedge h : halfedges_around_face(prev(halfedge(f, e.mesh), e.mesh), e.mesh)) {
       const std::size_t t = ce.face_points[j][k++];
+      e.corner_vt[h.idx()] = t;
       put(e.uv, h, Kernel::Point_2(ce.points[t][0], ce.points[t][1]));
       if(with_charts && ce.point_charts[t] >= 0)
         put(e.charts, h, HOT::Chart_point<Kernel::Point_2>{ce.point_charts[t], Kernel::Point_2(ce.chart_points[t][0], ce.chart_points[t][1])});

@@ -193,10 +193,10 @@ public:
 private:
   // Conjugate gradients on H x = rhs preconditioned by the factor of an earlier matrix (the
   // matrices of successive steps differ little): false when 20 iterations do not bring the
-  // residual below 1e-3 of the right-hand side's, and the caller factors H itself.
+  // residual below 1e-2 of the right-hand side's, and the caller factors H itself.
   bool preconditioned_solve(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const
   {
-    const double goal = 1e-3 * rhs.norm();
+    const double goal = 1e-2 * rhs.norm();
     x = ldlt_.solve(rhs);
     Eigen::VectorXd r = rhs - H * x;
     if(!(r.norm() > goal))
