@@ -21,6 +21,7 @@ PACKAGES=(
   python3-dev pybind11-dev python3-numpy   # the Python module (python/)
   python3-dask python3-distributed          # collections on a Dask cluster
   python3-pytest     # the Python tests
+  python3-mypy       # the type stubs checked against the examples (python/tests/test_stubs_and_errors.py)
 )
 
 missing=()

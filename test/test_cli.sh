@@ -673,5 +673,64 @@ PY
     expect_error "$tmp/x.selection.txt" cut --mesh "$off" --cones "$tmp/bear.cones" --order random --out "$tmp/x.selection.txt"
     "$prog" cut --mesh "$off" --cones "$tmp/bear.cones" --order random --out "$tmp/x.selection.txt" 2>/dev/null; [ $? -eq 2 ] || fail "status for a usage error"
     echo ok ;;
+  job_help)
+    # JOB --help (or -h, or help JOB): the job's own usage on stdout, exit 0, whatever else is
+    # given, before anything is checked or written. The jobs, their sections and which of them take
+    # [REPAIR] are read from the top-level usage text, which must be the jobs' texts in a row.
+    "$prog" --help > "$tmp/all.txt" 2> "$tmp/stderr" || fail "--help failed"
+    [ ! -s "$tmp/stderr" ] || fail "--help wrote on stderr"
+    for h in -h help; do "$prog" $h 2>/dev/null | cmp -s - "$tmp/all.txt" || fail "'$h' is not --help"; done
+    [ "$(head -n 1 "$tmp/all.txt")" = "usage:" ] || fail "--help does not start with 'usage:'"
+    jobs=$(sed -n 's/^  hyperbolic_orbifold_tutte \([a-z]*\) .*/\1/p' "$tmp/all.txt" | awk '!seen[$0]++')
+    [ "$(echo "$jobs" | wc -l)" -ge 7 ] || fail "fewer than 7 jobs in --help: $jobs"
+    sed -n '/^  REPAIR (/,$p' "$tmp/all.txt" > "$tmp/repair.txt"
+    [ -s "$tmp/repair.txt" ] || fail "no REPAIR section in --help"
+    repair_jobs=" $(sed -n 's/^  REPAIR (\(.*\)):$/\1/p' "$tmp/all.txt" | tr -d ',') "
+    mkdir "$tmp/scratch" "$tmp/in"
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/in/bear.cones"
+    s="$tmp/scratch"
+    : > "$tmp/concat.txt"
+    for job in $jobs; do
+      n=0
+      for args in "$job --help" "$job -h" "help $job" "$job --out $s/o --help" "$job --help --out $s/o" \
+                  "$job --bogus 1 -h" "$job --mesh $data/meshes/bear.off --cones $tmp/in/bear.cones --out $s/o.obj --svg $s/o.svg --report $s/o.json --help" \
+                  "$job --out $s/o --svg $s/o.svg --report $s/o.json --orbifold sphere --cones 7 --count 7 --manifest $tmp/in/none --help"; do
+        n=$((n + 1))
+        "$prog" $args > "$tmp/help_${job}_$n.txt" 2> "$tmp/stderr"; rc=$?
+        [ $rc -eq 0 ] || fail "exit $rc for: $args -- $(cat "$tmp/stderr")"
+        [ ! -s "$tmp/stderr" ] || fail "stderr for: $args -- $(cat "$tmp/stderr")"
+        [ -z "$(ls -A "$s")" ] || fail "files written for: $args -- $(ls -A "$s")"
+        [ $n -eq 1 ] || cmp -s "$tmp/help_${job}_1.txt" "$tmp/help_${job}_$n.txt" || fail "'$args' is not '$job --help'"
+      done
+      help="$tmp/help_${job}_1.txt"
+      [ "$(head -n 1 "$help")" = "usage:" ] || fail "$job --help does not start with 'usage:'"
+      grep -q "^  hyperbolic_orbifold_tutte $job " "$help" || fail "$job --help has no line 'hyperbolic_orbifold_tutte $job'"
+      for other in $jobs; do
+        [ "$other" = "$job" ] && continue
+        ! grep -q -E "hyperbolic_orbifold_tutte $other( |\$)" "$help" || fail "$job --help shows $other's usage"
+      done
+      # the job's own text: after 'usage:', up to the REPAIR section, which it has iff REPAIR names the job
+      awk 'NR > 1 && /^  REPAIR \(/ { exit } NR > 1' "$help" > "$tmp/body.txt"
+      [ -s "$tmp/body.txt" ] || fail "$job --help is empty"
+      cat "$tmp/body.txt" >> "$tmp/concat.txt"
+      if [ "${repair_jobs#* $job }" != "$repair_jobs" ]; then
+        grep -q -F "[REPAIR]" "$tmp/body.txt" || fail "REPAIR names $job but its usage does not take [REPAIR]"
+        { echo "usage:"; cat "$tmp/body.txt" "$tmp/repair.txt"; } | cmp -s - "$help" || fail "$job --help is not its text and the REPAIR section"
+      else
+        ! grep -q -F "[REPAIR]" "$tmp/body.txt" || fail "$job's usage takes [REPAIR] but REPAIR does not name it"
+        { echo "usage:"; cat "$tmp/body.txt"; } | cmp -s - "$help" || fail "$job --help is not its text alone"
+      fi
+      [[ "$(cat "$tmp/all.txt")" == *"$(cat "$tmp/body.txt")"* ]] || fail "$job's text is not in --help"
+      echo "ok: $job --help ($(wc -l < "$help") lines)"
+    done
+    # --help is the jobs' texts in a row (its order) and the REPAIR section, nothing else
+    { echo "usage:"; cat "$tmp/concat.txt" "$tmp/repair.txt"; } | cmp -s - "$tmp/all.txt" || fail "--help is not the jobs' texts in a row"
+    # an unknown job stays an error, --help or not
+    for args in "nosuchjob --help" "nosuchjob -h" "help nosuchjob"; do
+      expect_error "$s/o" $args
+      "$prog" $args 2>/dev/null; [ $? -eq 2 ] || fail "status for: $args"
+      grep -q "unknown command 'nosuchjob'" "$tmp/stderr" || fail "the reason for: $args"
+    done
+    echo ok ;;
   *) fail "unknown case $case_name" ;;
 esac

@@ -43,6 +43,23 @@ struct Failure
   std::string message;
 };
 
+// `JOB --help` (or -h): the job's usage on stdout, exit 0 (thrown by Options, caught by main())
+struct Help_request
+{
+};
+
+// whether --help or -h is among the arguments from `first` on, wherever it stands: it wins over
+// every other argument, missing, unknown or wrong ones included (main() asks before a job runs)
+inline bool help_requested(int argc, char** argv, int first)
+{
+  for(int i = first; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--help" || a == "-h")
+      return true;
+  }
+  return false;
+}
+
 // throws a failed check's reason
 inline void require(const HOT::Status& r)
 {
@@ -50,7 +67,8 @@ inline void require(const HOT::Status& r)
     throw Failure{r.code, r.message};
 }
 
-// --name value options, and --flag options without value (listed in `flags`).
+// --name value options, and --flag options without value (listed in `flags`); --help or -h,
+// for every job, throws Help_request before any other check.
 class Options
 {
 public:
@@ -59,6 +77,8 @@ public:
   Options(int argc, char** argv, int first, const std::set<std::string>& known,
           const std::set<std::string>& flags = std::set<std::string>(), const std::set<std::string>& optional = std::set<std::string>())
   {
+    if(help_requested(argc, argv, first))
+      throw Help_request{};
     for(int i = first; i < argc; ++i) {
       const std::string a = argv[i];
       if(a.size() < 3 || a.compare(0, 2, "--") != 0)

@@ -59,12 +59,18 @@ namespace {
 
 using namespace hot_cli;
 
-const char* const usage_text =
-  "usage:\n"
+// The usage text, one section per job: `--help` prints the head, every job's section in this
+// order and the REPAIR options (the same bytes as ever: a promise); `JOB --help` (or -h, or
+// `help JOB`) the head, the job's section and REPAIR when the section names [REPAIR].
+const char* const usage_head = "usage:\n";
+
+const char* const usage_tile =
   "  hyperbolic_orbifold_tutte tile --orbifold sphere|disk --cones K --svg FILE [--depth D]\n"
   "  hyperbolic_orbifold_tutte tile --orbifold sphere --cone-orders P1,P2,... --svg FILE [--depth D]\n"
   "      draws the basic tile of the orbifold with K cones and its images under the group\n"
-  "      (products of at most D side pairings, default 3) in the Poincare disk\n"
+  "      (products of at most D side pairings, default 3) in the Poincare disk\n";
+
+const char* const usage_embed =
   "  hyperbolic_orbifold_tutte embed --mesh IN --cones CONES [--orbifold sphere|disk]\n"
   "      [--weights cotan|mvc|uniform] [--order given|tsp|I0,I1,...] --out OUT.obj [--svg PICTURE.svg]\n"
   "      [--report REPORT.json] [--recentre] [--cone-orders P1,P2,...] [REPAIR]\n"
@@ -82,7 +88,9 @@ const char* const usage_text =
   "      landmarks) may be solved in a moved frame; the report then gives the frame.\n"
   "      A closed mesh of genus g >= 1 is detected and cut along a graph (2g shortest handle\n"
   "      loops and the paths to the landmarks); it needs 1 landmark for g = 1, none for g >= 2\n"
-  "      (CONES may be an empty file); the report gives \"genus\" and the \"cut_graph\".\n"
+  "      (CONES may be an empty file); the report gives \"genus\" and the \"cut_graph\".\n";
+
+const char* const usage_map =
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
   "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off]\n"
   "      [--report REPORT.json] [--cone-orders P1,P2,...] [--order auto|tsp|given] [--refine [N]] [REPAIR]\n"
@@ -108,9 +116,11 @@ const char* const usage_text =
   "  hyperbolic_orbifold_tutte map --source-embedding A.obj --target-embedding B.obj --out MAP.txt [--report REPORT.json]\n"
   "      the same map from two embeddings stored by embed or collection (no embedding again):\n"
   "      they must put the same landmarks at the same cones (embed B with --order set to A's\n"
-  "      \"landmark_positions_used\"); MAP.txt has one line per v line of A.obj; REPORT.json as map's\n"
+  "      \"landmark_positions_used\"); MAP.txt has one line per v line of A.obj; REPORT.json as map's\n";
+
+const char* const usage_collection =
   "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [--refine [N]] [REPAIR]\n"
-  "      [--order auto|tsp|given] [--stage embed|maps|merge [--shard I/N]]\n"
+  "      [--order auto|tsp|given] [--stage embed|refine|maps|merge [--shard I/N]]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') in one landmark order (as\n"
   "      map's --order, over all the meshes' tours; tsp: the first mesh's) and maps them onto\n"
   "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt).\n"
@@ -118,16 +128,24 @@ const char* const usage_text =
   "      --stage embed --shard I/N embeds meshes I, I+N, ...; then --stage maps --shard I/N maps\n"
   "      its share of the pairs from the stored embeddings; then --stage merge writes\n"
   "      DIR/report.json (the same files as one process; DIR/.parts holds the jobs' results).\n"
-  "      --refine [N] (one process only): fits every mesh's embedding to the first mesh's metric\n"
-  "      (map --refine onto it, at most N iterations, default 100); the maps stay compositions\n"
-  "      through the one orbifold (cycle consistent); report.json's \"refinement\" per mesh\n"
+  "      --refine [N]: fits every mesh's embedding to the first mesh's metric (map --refine\n"
+  "      onto it, at most N iterations, default 100); the maps stay compositions through the one\n"
+  "      orbifold (cycle consistent); report.json's \"refinement\" per mesh. As separate jobs,\n"
+  "      --stage refine --shard I/N refines meshes I, I+N, ... between the embed and maps stages\n"
+  "      (--refine [N] given to every stage's job)\n";
+
+const char* const usage_landmarks =
   "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES [REPAIR]\n"
-  "      writes K well-spread landmarks of the mesh (vertices of the file, also with --repair)\n"
+  "      writes K well-spread landmarks of the mesh (vertices of the file, also with --repair)\n";
+
+const char* const usage_cut =
   "  hyperbolic_orbifold_tutte cut --mesh IN --cones CONES [--order given|tsp] --out OUT.selection.txt\n"
   "      cuts the closed genus-0 mesh along a simple path through the cones in order (the\n"
   "      given one by default, or the paper's tour) and writes it as CGAL's selection file:\n"
   "      line 1 the cones in that order, line 2 empty, line 3 the seam edges 's0 t0 s1 t1 ...'\n"
-  "      (for Seam_mesh::add_seams() and Surface_mesh_parameterization::locate_cones())\n"
+  "      (for Seam_mesh::add_seams() and Surface_mesh_parameterization::locate_cones())\n";
+
+const char* const usage_certify =
   "  hyperbolic_orbifold_tutte certify --mesh IN --embedding E.obj --cones CONES [--orbifold sphere|disk]\n"
   "      [--cone-orders P1,P2,...] [--frame A_RE,A_IM,B_RE,B_IM] [--report REPORT.json]\n"
   "      checks that E.obj (v, vt and 'f v/vt v/vt v/vt' lines, from embed or any other program)\n"
@@ -142,7 +160,9 @@ const char* const usage_text =
   "      --frame: the frame of a recentred embedding (embed's report), z -> (az + b)/(conj(b) z + conj(a))\n"
   "      A closed mesh of genus g >= 1 (CONES may be empty for g >= 2): no tile; each seam's isometry\n"
   "      is read from its two copies (equal lengths, shared along the cut), angle sums 2 pi (2 pi / p\n"
-  "      at a cone) within 1e-6, area 2 pi (2g - 2 + sum(1 - 1/p)); the report gives \"genus\".\n"
+  "      at a cone) within 1e-6, area 2 pi (2g - 2 + sum(1 - 1/p)); the report gives \"genus\".\n";
+
+const char* const usage_repair =
   "  REPAIR (embed, map, collection, landmarks):\n"
   "      --repair: prepares the mesh first (merges duplicated border vertices, orients, removes\n"
   "      invalid, duplicated and degenerate faces, splits non-manifold vertices, triangulates\n"
@@ -161,6 +181,41 @@ const char* const usage_text =
   "      loop cut (default 0.2 diagonals)\n"
   "      --snap-landmarks: moves disk-type corners that are not on the boundary to the\n"
   "      nearest boundary vertex (also without --repair)\n";
+
+struct Job_usage
+{
+  const char* job;
+  const char* text;
+};
+
+// the jobs main() runs, in the order of --help
+const Job_usage job_usages[] = {{"tile", usage_tile},           {"embed", usage_embed},
+                                {"map", usage_map},             {"collection", usage_collection},
+                                {"landmarks", usage_landmarks}, {"cut", usage_cut},
+                                {"certify", usage_certify}};
+
+std::string usage_text()
+{
+  std::string s = usage_head;
+  for(const Job_usage& u : job_usages)
+    s += u.text;
+  return s + usage_repair;
+}
+
+// the usage of one job; nullptr for an unknown one
+const Job_usage* find_job_usage(const std::string& job)
+{
+  for(const Job_usage& u : job_usages)
+    if(job == u.job)
+      return &u;
+  return nullptr;
+}
+
+std::string job_usage_text(const Job_usage& u)
+{
+  const std::string text = u.text;
+  return usage_head + text + (text.find("[REPAIR]") != std::string::npos ? usage_repair : "");
+}
 
 int run_tile(int argc, char** argv)
 {
@@ -1251,10 +1306,23 @@ int main(int argc, char** argv)
     if(argc < 2)
       throw Usage_error{"missing command"};
     const std::string command = argv[1];
-    if(command == "--help" || command == "-h" || command == "help") {
-      std::cout << usage_text;
+    if(command == "help" && argc > 2) { // help JOB: the job's usage
+      const Job_usage* u = find_job_usage(argv[2]);
+      if(u == nullptr)
+        throw Usage_error{"unknown command '" + std::string(argv[2]) + "'"};
+      std::cout << job_usage_text(*u);
       return EXIT_SUCCESS;
     }
+    if(command == "--help" || command == "-h" || command == "help") {
+      std::cout << usage_text();
+      return EXIT_SUCCESS;
+    }
+    // JOB ... --help (or -h) anywhere: the job's usage, before the job parses or checks anything
+    if(const Job_usage* u = find_job_usage(command))
+      if(help_requested(argc, argv, 2)) {
+        std::cout << job_usage_text(*u);
+        return EXIT_SUCCESS;
+      }
     if(command == "tile")
       return run_tile(argc, argv);
     if(command == "embed")
@@ -1270,6 +1338,10 @@ int main(int argc, char** argv)
     if(command == "certify")
       return run_certify(argc, argv);
     throw Usage_error{"unknown command '" + command + "'"};
+  } catch(const Help_request&) { // (main() answers --help first; Options' own check, for safety)
+    const Job_usage* u = find_job_usage(argv[1]);
+    std::cout << (u != nullptr ? job_usage_text(*u) : usage_text());
+    return EXIT_SUCCESS;
   } catch(const Failure& e) {
     std::cerr << "hyperbolic_orbifold_tutte: " << HOT::error_message(e.code) << ": " << e.message << std::endl;
     return 3;

@@ -12,11 +12,12 @@ with the map's per-face distortion.
 import sys
 
 import numpy as np
+from numpy.typing import NDArray
 
 import hyperbolic_orbifold_tutte as hot
 
 
-def main(a_mesh, a_cones, b_mesh, b_cones):
+def main(a_mesh: str, a_cones: str, b_mesh: str, b_cones: str) -> NDArray[np.float64]:
     VA, FA = hot.read_mesh(a_mesh)
     VB, FB = hot.read_mesh(b_mesh)
     if VA.shape != VB.shape:
@@ -28,7 +29,7 @@ def main(a_mesh, a_cones, b_mesh, b_cones):
     faces, bary, unreliable = hot.map(ea, eb, unreliable=True)
     images = hot.surface_points(faces, bary, VB, FB)
     diagonal = np.linalg.norm(VB.max(axis=0) - VB.min(axis=0))
-    error = np.linalg.norm(images - VB, axis=1) / diagonal * 100
+    error: NDArray[np.float64] = np.linalg.norm(images - VB, axis=1) / diagonal * 100
     trusted = np.ones(len(error), dtype=bool)
     trusted[np.asarray(unreliable, dtype=np.int64)] = False
     d = hot.map_distortion(VA, FA, images)

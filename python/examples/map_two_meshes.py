@@ -19,11 +19,12 @@ import sys
 import time
 
 import numpy as np
+from numpy.typing import NDArray
 
 import hyperbolic_orbifold_tutte as hot
 
 
-def bend(V, radius):
+def bend(V: NDArray[np.float64], radius: float) -> NDArray[np.float64]:
     """V bent about the z axis into an arc of the given radius in the x-z plane"""
     t = V[:, 2] / radius
     x = radius * (1 - np.cos(t)) + V[:, 0] * np.cos(t)
@@ -31,7 +32,7 @@ def bend(V, radius):
     return np.stack([x, V[:, 1], z], axis=1)
 
 
-def main():
+def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("source")
     parser.add_argument("target", nargs="?")

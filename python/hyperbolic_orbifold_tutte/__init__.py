@@ -19,14 +19,19 @@ writers, the same numbers.
     hot.collection("list.txt", "out", all_pairs=True, client=None)  # or a dask.distributed.Client
     values = hot.transfer(faces, bary, F2, values2) # a function on mesh 2 pulled back to mesh 1
 
-Every failure raises hot.Error (message, .code = the library's Error_code name).
+Every failure raises a hot.Error (message, .code = the library's Error_code name): a
+hot.InputError (also a ValueError) when the input or a parameter is wrong, a
+hot.ComputationError (also a RuntimeError) when the input was accepted but no result could be
+computed, certified or written; hot.error_classes gives the class of every code. Type stubs
+(__init__.pyi, _core.pyi, py.typed) come with the package, for mypy and editors.
 The computations release the GIL: embeddings of several meshes run in parallel in threads
 (concurrent.futures, Dask's threaded scheduler).
 """
 
 import numpy as _np
 
-from ._core import Embedding, Error, embed, error_codes, map, map_distortion, read_mesh, select_landmarks
+from ._core import (ComputationError, Embedding, Error, InputError, embed, error_classes, error_codes, map, map_distortion,
+                    read_mesh, select_landmarks)
 from .collection import collection
 
 __all__ = [
@@ -34,7 +39,10 @@ __all__ = [
     "map_distortion",
     "Embedding",
     "Error",
+    "InputError",
+    "ComputationError",
     "embed",
+    "error_classes",
     "error_codes",
     "map",
     "read_mesh",
@@ -59,29 +67,29 @@ def transfer(faces, bary, F_b, values_b):
     (mB, 3); values_b: array (nB,) or (nB, k) (a scalar or a vector per vertex of B,
     e.g. B's vertex positions VB, which gives the image points of the map).
     Returns a float array of shape (n,) or (n, k). Vectorised numpy; no loop in Python.
-    Raises Error (code ERROR_WRONG_PARAMETER) on inconsistent shapes or indices.
+    Raises InputError (code ERROR_WRONG_PARAMETER) on inconsistent shapes or indices.
     """
     faces = _np.asarray(faces)
     bary = _np.asarray(bary, dtype=_np.float64)
     F_b = _np.asarray(F_b)
     values_b = _np.asarray(values_b)
     if faces.ndim != 1 or bary.shape != (faces.shape[0], 3):
-        raise Error("transfer: faces must have shape (n,) and bary (n, 3), got %s and %s"
+        raise InputError("transfer: faces must have shape (n,) and bary (n, 3), got %s and %s"
                     % (faces.shape, bary.shape), "ERROR_WRONG_PARAMETER")
     if F_b.ndim != 2 or F_b.shape[1] != 3 or not _np.issubdtype(F_b.dtype, _np.integer):
-        raise Error("transfer: F_b must be an integer array of shape (m, 3), got %s %s"
+        raise InputError("transfer: F_b must be an integer array of shape (m, 3), got %s %s"
                     % (F_b.shape, F_b.dtype), "ERROR_WRONG_PARAMETER")
     if not _np.issubdtype(faces.dtype, _np.integer):
-        raise Error("transfer: faces must hold integers, got %s" % faces.dtype, "ERROR_WRONG_PARAMETER")
+        raise InputError("transfer: faces must hold integers, got %s" % faces.dtype, "ERROR_WRONG_PARAMETER")
     if values_b.ndim not in (1, 2):
-        raise Error("transfer: values_b must have shape (nB,) or (nB, k), got %s" % (values_b.shape,),
+        raise InputError("transfer: values_b must have shape (nB,) or (nB, k), got %s" % (values_b.shape,),
                     "ERROR_WRONG_PARAMETER")
     if faces.size and (faces.min() < 0 or faces.max() >= F_b.shape[0]):
-        raise Error("transfer: faces holds an index out of range (F_b has %d faces)" % F_b.shape[0],
+        raise InputError("transfer: faces holds an index out of range (F_b has %d faces)" % F_b.shape[0],
                     "ERROR_WRONG_PARAMETER")
     corners = F_b[faces]                                    # (n, 3) vertex indices of B
     if corners.size and (corners.min() < 0 or corners.max() >= values_b.shape[0]):
-        raise Error("transfer: F_b refers to vertices beyond values_b's %d rows" % values_b.shape[0],
+        raise InputError("transfer: F_b refers to vertices beyond values_b's %d rows" % values_b.shape[0],
                     "ERROR_WRONG_PARAMETER")
     v = values_b[corners]                                   # (n, 3) or (n, 3, k)
     if values_b.ndim == 1:

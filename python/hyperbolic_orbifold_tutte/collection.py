@@ -16,11 +16,11 @@ from concurrent.futures import ThreadPoolExecutor as _ThreadPoolExecutor
 from . import _core
 
 
-def _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks):
+def _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine):
     return dict(manifest=_os.fspath(manifest), out_dir=_os.fspath(out_dir), all_pairs=bool(all_pairs),
                 cone_orders=None if cone_orders is None else [int(p) for p in cone_orders],
                 repair=bool(repair), max_hole=None if max_hole is None else float(max_hole), largest_component=bool(largest_component),
-                snap_landmarks=bool(snap_landmarks))
+                snap_landmarks=bool(snap_landmarks), refine=int(refine))
 
 
 # The tasks (top-level functions: a Dask worker imports them by name). The map tasks take the
@@ -28,6 +28,10 @@ def _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, larges
 
 def _embed_task(i, orbifold, landmarks, order, options):
     return _core.collection_embed(i, orbifold, landmarks, order, **options)
+
+
+def _refine_task(i, options, *after):
+    return _core.collection_refine(i, **options)
 
 
 def _map_task(a, b, options, *after):
@@ -53,6 +57,10 @@ class _Progress:
             print("  embedded %d/%d: %s (%.3g s)" % (self.embedded, len(self.meshes), self.meshes[i][0], seconds),
                   file=_sys.stderr, flush=True)
 
+    def refinement_done(self, i, seconds):
+        if self.enabled and i > 0:
+            print("  refined %s onto %s (%.3g s)" % (self.meshes[i][0], self.meshes[0][0], seconds), file=_sys.stderr, flush=True)
+
     def map_done(self, a, b, seconds):
         self.mapped += 1
         n = len(self.pairs)
@@ -66,6 +74,9 @@ def _run_in_threads(plan, options, threads, progress):
     with _ThreadPoolExecutor(max_workers=threads or _os.cpu_count() or 1) as pool:
         futures = {pool.submit(_embed_task, i, *order, options): i for i in range(len(plan["meshes"]))}
         _drain(futures, progress.embedding_done)
+        if options["refine"] > 0:
+            futures = {pool.submit(_refine_task, i, options): i for i in range(len(plan["meshes"]))}
+            _drain(futures, progress.refinement_done)
         futures = {pool.submit(_core.collection_map, a, b, **options): (a, b) for a, b in plan["pairs"]}
         _drain(futures, lambda ab, seconds: progress.map_done(ab[0], ab[1], seconds))
     return _core.collection_merge(**options)
@@ -89,26 +100,35 @@ def _run_on_dask(plan, options, client, progress):
     order = (plan["orbifold"], plan["landmarks"], list(plan["order"]))
     embeds = [client.submit(_embed_task, i, *order, options, key="hot-embed-%d-%s" % (i, token), pure=False)
               for i in range(len(plan["meshes"]))]
-    maps = [client.submit(_map_task, a, b, options, embeds[a], embeds[b], key="hot-map-%d-%d-%s" % (a, b, token), pure=False)
+    ready = embeds  # (what a map waits for: its meshes' embeddings, or their refinements)
+    refines = []
+    if options["refine"] > 0:
+        refines = [client.submit(_refine_task, i, options, embeds[0], embeds[i], key="hot-refine-%d-%s" % (i, token), pure=False)
+                   for i in range(len(plan["meshes"]))]
+        ready = refines
+    maps = [client.submit(_map_task, a, b, options, ready[a], ready[b], key="hot-map-%d-%d-%s" % (a, b, token), pure=False)
             for a, b in plan["pairs"]]
     what = {f.key: ("embed", i) for i, f in enumerate(embeds)}
+    what.update({f.key: ("refine", i) for i, f in enumerate(refines)})
     what.update({f.key: ("map", p) for p, f in zip(plan["pairs"], maps)})
     try:
-        for f in distributed.as_completed(embeds + maps):
+        for f in distributed.as_completed(embeds + refines + maps):
             kind, x = what[f.key]
             seconds = f.result()  # (raises the task's hot.Error)
             if kind == "embed":
                 progress.embedding_done(x, seconds)
+            elif kind == "refine":
+                progress.refinement_done(x, seconds)
             else:
                 progress.map_done(x[0], x[1], seconds)
         return client.submit(_merge_task, options, *maps, key="hot-merge-" + token, pure=False).result()
     except BaseException:
-        client.cancel(embeds + maps)
+        client.cancel(embeds + refines + maps)
         raise
 
 
 def collection(manifest, out_dir, all_pairs=False, client=None, cone_orders=None, repair=False, max_hole=None,
-               largest_component=False, snap_landmarks=False, threads=None, progress=True):
+               largest_component=False, snap_landmarks=False, threads=None, progress=True, refine=0):
     """collection(manifest, out_dir, all_pairs=False, client=None, ...) -> dict (report.json)
 
     Embeds every mesh of `manifest` (lines `mesh_path cones_path`, relative paths against the
@@ -130,11 +150,14 @@ def collection(manifest, out_dir, all_pairs=False, client=None, cone_orders=None
     cone_orders: the order p of every landmark's cone (angle 2 pi/p), in the manifest's
     landmark order (default: 2 for all); repair, max_hole, largest_component, snap_landmarks:
     the command line's --repair options (max_hole=None: as without --max-hole, a limit of 0.5
-    bounding box diagonals, none when the landmarks are inside the surface). progress: a line on stderr per mesh embedded and
+    bounding box diagonals, none when the landmarks are inside the surface). refine: at most this many
+    iterations fitting every mesh's embedding to mesh 0's metric (the command line's --refine; 0:
+    none), one task per mesh after the embeddings; the maps stay compositions through the one
+    orbifold (cycle consistent). progress: a line on stderr per mesh embedded (and refined) and
     every 5% of the maps. A failure raises hot.Error (the first one, naming the mesh), and the
     files this call wrote are removed.
     """
-    options = _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks)
+    options = _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine)
     plan = _core.collection_plan(**options)
     out = options["out_dir"]
     before = set(_os.listdir(out)) if _os.path.isdir(out) else None

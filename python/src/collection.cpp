@@ -22,8 +22,10 @@ namespace {
 
 // what every job is given, from the Python arguments
 hot_cli::Collection_job make_job(const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders,
-                                 bool repair, std::optional<double> max_hole, bool largest_component, bool snap_landmarks)
+                                 bool repair, std::optional<double> max_hole, bool largest_component, bool snap_landmarks, int refine)
 {
+  if(refine < 0)
+    fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
   hot_cli::Collection_job job;
   job.manifest_path = manifest;
   job.dir = out_dir;
@@ -41,6 +43,7 @@ hot_cli::Collection_job make_job(const std::string& manifest, const std::string&
     r.max_hole_given = true;
   }
   job.set_repair(r);
+  job.refine = refine;
   if(!cone_orders.is_none())
     for(std::int64_t p : int_list(cone_orders, "cone_orders")) {
       if(p < 2 || p > 1000000)
@@ -68,7 +71,8 @@ auto run_job(F&& f) -> decltype(f())
 
 #define HOT_JOB_ARGS                                                                                                                   \
   py::arg("manifest"), py::arg("out_dir"), py::arg("all_pairs") = false, py::arg("cone_orders") = py::none(),                        \
-    py::arg("repair") = false, py::arg("max_hole") = py::none(), py::arg("largest_component") = false, py::arg("snap_landmarks") = false
+    py::arg("repair") = false, py::arg("max_hole") = py::none(), py::arg("largest_component") = false, py::arg("snap_landmarks") = false, \
+    py::arg("refine") = 0
 
 } // namespace
 
@@ -77,8 +81,8 @@ void register_collection(py::module_& m)
   m.def(
     "collection_plan",
     [](const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, std::optional<double> max_hole,
-       bool largest_component, bool snap_landmarks) {
-      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
+       bool largest_component, bool snap_landmarks, int refine) {
+      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine);
       std::pair<hot_cli::Collection_order, hot_cli::Collection_pairs> r = run_job([&] {
         job.entries = hot_cli::read_manifest(job.manifest_path);
         return std::make_pair(hot_cli::collection_order(job), hot_cli::collection_pairs(job.size(), job.all_pairs));
@@ -106,8 +110,8 @@ void register_collection(py::module_& m)
     "collection_embed",
     [](std::size_t i, const std::string& orbifold, std::size_t landmarks, const std::vector<std::size_t>& order, const std::string& manifest,
        const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, std::optional<double> max_hole, bool largest_component,
-       bool snap_landmarks) {
-      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
+       bool snap_landmarks, int refine) {
+      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine);
       hot_cli::Collection_order co;
       co.type = orbifold == "disk" ? HOT::Disk_type : HOT::Sphere_type;
       co.landmarks = landmarks;
@@ -125,10 +129,30 @@ void register_collection(py::module_& m)
     "out_dir/<i>_<name>.obj and its entry of the report (out_dir/.parts).");
 
   m.def(
+    "collection_refine",
+    [](std::size_t i, const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair,
+       std::optional<double> max_hole, bool largest_component, bool snap_landmarks, int refine) {
+      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine);
+      return run_job([&] {
+        job.entries = hot_cli::read_manifest(job.manifest_path);
+        if(i >= job.size())
+          throw hot_cli::Failure{HOT::ERROR_WRONG_PARAMETER, "mesh " + std::to_string(i) + " is not in the manifest's " + std::to_string(job.size())};
+        if(job.refine <= 0)
+          throw hot_cli::Failure{HOT::ERROR_WRONG_PARAMETER, "collection_refine() needs refine > 0 (the number of iterations)"};
+        return hot_cli::refine_collection_mesh(job, i);
+      });
+    },
+    py::arg("i"), HOT_JOB_ARGS,
+    "collection_refine(i, manifest, out_dir, ..., refine=N) -> seconds\n\n"
+    "The refinement job of mesh i (after the embedding jobs, with the same refine=N given to every\n"
+    "job): mesh i's embedding refined onto mesh 0's (at most N certified iterations; mesh 0 is\n"
+    "copied), written as out_dir/<i>_<name>.obj, its statistics for the merge (out_dir/.parts).");
+
+  m.def(
     "collection_map",
     [](std::size_t a, std::size_t b, const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders,
-       bool repair, std::optional<double> max_hole, bool largest_component, bool snap_landmarks) {
-      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
+       bool repair, std::optional<double> max_hole, bool largest_component, bool snap_landmarks, int refine) {
+      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine);
       return run_job([&] {
         job.entries = hot_cli::read_manifest(job.manifest_path);
         if(a >= job.size() || b >= job.size() || a == b)
@@ -145,8 +169,8 @@ void register_collection(py::module_& m)
   m.def(
     "collection_merge",
     [](const std::string& manifest, const std::string& out_dir, bool all_pairs, py::handle cone_orders, bool repair, std::optional<double> max_hole,
-       bool largest_component, bool snap_landmarks) {
-      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks);
+       bool largest_component, bool snap_landmarks, int refine) {
+      hot_cli::Collection_job job = make_job(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine);
       const hot_tools::Collection_report r = run_job([&] {
         job.entries = hot_cli::read_manifest(job.manifest_path);
         return hot_cli::merge_collection(job);

@@ -61,9 +61,9 @@ using hot_cli::UV_map;
 using hot_cli::Chart_map;
 
 // ---------------------------------------------------------------------------------------
-// Errors: every failure of the module is raised as hyperbolic_orbifold_tutte.Error, with the
-// library's message, `.code` the Error_code's name ("ERROR_NON_MANIFOLD"), `.code_value` its
-// number and `.description` error_message(code).
+// Errors: every failure is raised as a hyperbolic_orbifold_tutte.Error (its subclass InputError
+// or ComputationError by the code: the table in module.cpp) with the library's message, `.code`
+// the Error_code's name ("ERROR_NON_MANIFOLD"), `.code_value` its number, `.description`.
 // ---------------------------------------------------------------------------------------
 
 struct Hot_error

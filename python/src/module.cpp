@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 //
-// The Python extension `hyperbolic_orbifold_tutte._core`: the module, its error class, the
+// The Python extension `hyperbolic_orbifold_tutte._core`: the module, its error classes, the
 // numpy helpers, meshes from arrays and files (read_mesh), and landmark selection. The
 // embeddings and maps are in embedding.cpp; each area registers itself (hot_python.h).
 
@@ -24,63 +24,160 @@ namespace hot_python {
 // errors
 // ---------------------------------------------------------------------------------------
 
+// The classification of every Error_code: its name and the Python class it raises, one row per
+// code in the order of the enumeration (checked below at compile time: a code added to the
+// enumeration without a row here does not compile).
+//
+//   InputError (hot.Error and ValueError): the caller's input or parameters are wrong, and the
+//     same call fails again until they are changed: a parameter out of range, a mesh that is
+//     not a triangulated 2-manifold of the right topology, degenerate or non-finite geometry,
+//     landmarks that are too few, repeated, not vertices, not on the boundary, or that make a
+//     non-hyperbolic orbifold, an unreadable or unparsable input file, a fixed-boundary polygon
+//     or corner order that is invalid, a disk whose boundary chord the landmarks leave inside
+//     one tile side (the message says which landmark to add).
+//   ComputationError (hot.Error and RuntimeError): the input was accepted, but no result could
+//     be computed, certified or delivered: the cut through the landmarks, a linear solve, the
+//     nonlinear solver's convergence, the bijectivity certificate, the location of a point in
+//     an embedding, or writing an output file failed. Not "CertificationError": only one of
+//     these is the certificate, and a caller who catches it wants all of them (the input was
+//     valid, the computation did not succeed).
+//   OK is never raised (the base class Error, for completeness of the table).
+//
+// (Running out of memory is not an Error_code: std::bad_alloc becomes Python's MemoryError.)
+
+namespace {
+
+enum class Error_class { base, input, computation };
+
+struct Error_classification
+{
+  HOT::Error_code code;
+  const char* name;
+  Error_class error_class;
+};
+
+#define HOT_ERROR_ROW(code, error_class) {HOT::code, #code, Error_class::error_class}
+
+constexpr Error_classification error_table[] = {
+  HOT_ERROR_ROW(OK, base),
+  HOT_ERROR_ROW(ERROR_NOT_HYPERBOLIC, input),
+  HOT_ERROR_ROW(ERROR_WRONG_PARAMETER, input),
+  HOT_ERROR_ROW(ERROR_EMPTY_MESH, input),
+  HOT_ERROR_ROW(ERROR_NON_TRIANGULAR_MESH, input),
+  HOT_ERROR_ROW(ERROR_NON_MANIFOLD, input),
+  HOT_ERROR_ROW(ERROR_SEVERAL_COMPONENTS, input),
+  HOT_ERROR_ROW(ERROR_WRONG_TOPOLOGY, input),
+  HOT_ERROR_ROW(ERROR_TOO_FEW_LANDMARKS, input),
+  HOT_ERROR_ROW(ERROR_DUPLICATE_LANDMARK, input),
+  HOT_ERROR_ROW(ERROR_LANDMARK_OUT_OF_RANGE, input),
+  HOT_ERROR_ROW(ERROR_LANDMARK_NOT_ON_BORDER, input),
+  HOT_ERROR_ROW(ERROR_DEGENERATE_FACE, input),
+  HOT_ERROR_ROW(ERROR_NON_FINITE_COORDINATES, input),
+  HOT_ERROR_ROW(ERROR_CUT_FAILED, computation),
+  HOT_ERROR_ROW(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, computation),
+  HOT_ERROR_ROW(ERROR_NOT_CONVERGED, computation),
+  HOT_ERROR_ROW(ERROR_NO_1_TO_1_MAPPING, computation),
+  HOT_ERROR_ROW(ERROR_POINT_NOT_LOCATED, computation),
+  HOT_ERROR_ROW(ERROR_READ_FAILED, input),
+  HOT_ERROR_ROW(ERROR_WRITE_FAILED, computation),
+  HOT_ERROR_ROW(ERROR_BOUNDARY_CHORD, input),
+  HOT_ERROR_ROW(ERROR_POLYGON_NOT_CONVEX, input),
+  HOT_ERROR_ROW(ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER, input)
+};
+
+#undef HOT_ERROR_ROW
+
+constexpr bool error_table_follows_the_enumeration()
+{
+  for(int i = 0; i < HOT::number_of_error_codes; ++i)
+    if(static_cast<int>(error_table[i].code) != i)
+      return false;
+  return true;
+}
+
+static_assert(sizeof(error_table) / sizeof(error_table[0]) == HOT::number_of_error_codes,
+              "error_table: one row per Error_code value (classify the new code as input or computation)");
+static_assert(error_table_follows_the_enumeration(), "error_table: the rows follow the order of the enumeration");
+
+const char* error_class_name(Error_class c)
+{
+  switch(c) {
+  case Error_class::input: return "InputError";
+  case Error_class::computation: return "ComputationError";
+  default: return "Error";
+  }
+}
+
+} // namespace
+
 const char* error_code_name(HOT::Error_code code)
 {
-  static const char* const names[] = {
-    "OK",
-    "ERROR_NOT_HYPERBOLIC",
-    "ERROR_WRONG_PARAMETER",
-    "ERROR_EMPTY_MESH",
-    "ERROR_NON_TRIANGULAR_MESH",
-    "ERROR_NON_MANIFOLD",
-    "ERROR_SEVERAL_COMPONENTS",
-    "ERROR_WRONG_TOPOLOGY",
-    "ERROR_TOO_FEW_LANDMARKS",
-    "ERROR_DUPLICATE_LANDMARK",
-    "ERROR_LANDMARK_OUT_OF_RANGE",
-    "ERROR_LANDMARK_NOT_ON_BORDER",
-    "ERROR_DEGENERATE_FACE",
-    "ERROR_NON_FINITE_COORDINATES",
-    "ERROR_CUT_FAILED",
-    "ERROR_CANNOT_SOLVE_LINEAR_SYSTEM",
-    "ERROR_NOT_CONVERGED",
-    "ERROR_NO_1_TO_1_MAPPING",
-    "ERROR_POINT_NOT_LOCATED",
-    "ERROR_READ_FAILED",
-    "ERROR_WRITE_FAILED",
-    "ERROR_BOUNDARY_CHORD",
-    "ERROR_POLYGON_NOT_CONVEX",
-    "ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER"
-  };
-  static_assert(sizeof(names) / sizeof(names[0]) == HOT::number_of_error_codes, "one name per Error_code value");
-  static_assert(HOT::ERROR_CORNERS_NOT_IN_BOUNDARY_ORDER == 23 && HOT::ERROR_READ_FAILED == 19 && HOT::ERROR_NON_MANIFOLD == 5,
-                "the names follow the order of the enumeration");
   const int i = static_cast<int>(code);
-  return (i >= 0 && i < HOT::number_of_error_codes) ? names[i] : "UNKNOWN";
+  return (i >= 0 && i < HOT::number_of_error_codes) ? error_table[i].name : "UNKNOWN";
 }
 
 namespace {
 
-// the class hyperbolic_orbifold_tutte.Error (created once, kept for the process's life)
+// the classes hyperbolic_orbifold_tutte.Error, InputError and ComputationError (created once,
+// kept for the process's life), and the one each code raises
 py::handle error_class;
+py::handle error_class_of_code[HOT::number_of_error_codes];
+
+py::handle class_of(HOT::Error_code code)
+{
+  const int i = static_cast<int>(code);
+  return (i >= 0 && i < HOT::number_of_error_codes) ? error_class_of_code[i] : error_class;
+}
 
 const char* const error_class_source = R"PY(
 class Error(Exception):
-    """The error of every operation of hyperbolic_orbifold_tutte.
+    """The error of every operation of hyperbolic_orbifold_tutte (the base class).
 
     str(e) and e.message: the library's one-line message (what is wrong and where,
     e.g. "face 3 is not a triangle"); e.code: the name of the library's Error_code
     (e.g. "ERROR_NON_TRIANGULAR_MESH", "ERROR_TOO_FEW_LANDMARKS"); e.code_value: its
     number; e.description: the code's general description (error_message()).
+
+    Raised as one of its subclasses: InputError (also a ValueError) when the input or a
+    parameter is wrong, ComputationError (also a RuntimeError) when the input was accepted
+    but no result could be computed, certified or written. error_classes gives the class
+    of every code.
     """
 
-    def __init__(self, message, code="ERROR_WRONG_PARAMETER", code_value=None, description=None):
+    _default_code = "ERROR_WRONG_PARAMETER"
+
+    def __init__(self, message, code=None, code_value=None, description=None):
         super().__init__(message)
+        if code is None:
+            code = self._default_code
         known = _codes.get(code, (None, None))
         self.message = message
         self.code = code
         self.code_value = known[0] if code_value is None else code_value
         self.description = known[1] if description is None else description
+
+    def __reduce__(self):
+        # (pickled with its code, e.g. from a Dask worker; the class by its name in the package)
+        return (type(self), (self.message, self.code, self.code_value, self.description), self.__dict__)
+
+
+class InputError(Error, ValueError):
+    """The input or a parameter is wrong (a hot.Error and a ValueError): an argument out of
+    its range, a mesh that is not a valid triangulated 2-manifold of the right topology,
+    degenerate or non-finite geometry, too few, repeated or misplaced landmarks, a signature
+    that is not hyperbolic, an unreadable input file. The same call fails again until the
+    input is changed; e.code says which check failed."""
+
+    _default_code = "ERROR_WRONG_PARAMETER"
+
+
+class ComputationError(Error, RuntimeError):
+    """The input was accepted but no result could be computed, certified or delivered (a
+    hot.Error and a RuntimeError): the cut through the landmarks, a linear or nonlinear
+    solve, the bijectivity certificate, the location of a point in an embedding, or writing
+    an output file failed; e.code says which."""
+
+    _default_code = "ERROR_NO_1_TO_1_MAPPING"
 )PY";
 
 } // namespace
@@ -98,10 +195,20 @@ void register_errors(py::module_& m)
   ns["__builtins__"] = py::module_::import("builtins");
   ns["_codes"] = numbered;
   py::exec(error_class_source, ns);
-  py::object cls = ns["Error"];
-  cls.attr("__module__") = "hyperbolic_orbifold_tutte";
-  error_class = cls.inc_ref(); // never released: the translator may run until the interpreter ends
-  m.attr("Error") = cls;
+  py::dict by_name; // class name -> class
+  for(const char* name : {"Error", "InputError", "ComputationError"}) {
+    py::object cls = ns[name];
+    cls.attr("__module__") = "hyperbolic_orbifold_tutte";
+    m.attr(name) = cls;
+    by_name[name] = cls;
+    cls.inc_ref(); // never released: the translator may run until the interpreter ends
+  }
+  error_class = by_name["Error"].ptr();
+  py::dict classes; // code name -> class
+  for(int i = 0; i < HOT::number_of_error_codes; ++i) {
+    error_class_of_code[i] = by_name[error_class_name(error_table[i].error_class)].ptr();
+    classes[py::str(error_table[i].name)] = error_class_of_code[i];
+  }
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if(p) std::rethrow_exception(p);
@@ -114,14 +221,16 @@ void register_errors(py::module_& m)
         message = py::str("(unprintable message)");
       }
       try {
-        py::object instance = error_class(message, error_code_name(e.code), static_cast<int>(e.code), HOT::error_message(e.code));
-        PyErr_SetObject(error_class.ptr(), instance.ptr());
+        const py::handle cls = class_of(e.code);
+        py::object instance = cls(message, error_code_name(e.code), static_cast<int>(e.code), HOT::error_message(e.code));
+        PyErr_SetObject(cls.ptr(), instance.ptr());
       } catch(py::error_already_set& x) {
         x.restore();
       }
     }
   });
   m.attr("error_codes") = codes;
+  m.attr("error_classes") = classes;
 }
 
 // ---------------------------------------------------------------------------------------

@@ -33,11 +33,12 @@ def hands(tmp_path_factory, meshes, cli):
     manifest = d / "list.txt"
     manifest.write_text("".join("hand_%s.off cones.txt\n" % n for n in shapes))
     run_cli(cli, "collection", "--manifest", manifest, "--out", d / "cli", "--all-pairs")
+    run_cli(cli, "collection", "--manifest", manifest, "--out", d / "cli_refined", "--all-pairs", "--refine", 10)
     return d, manifest, len(V)
 
 
 def without_times(text):
-    return re.sub(r'"(embedding_seconds|map_seconds)": [0-9.e+-]+', r'"\1": T', text)
+    return re.sub(r'"(embedding_seconds|map_seconds|seconds|seconds_certificate)": [0-9.e+-]+', r'"\1": T', text)
 
 
 def assert_same_files(cli_dir, dir2):
@@ -74,6 +75,29 @@ def test_collection_in_threads_is_the_command_lines(hands):
             assert sum(1 for _ in open(out / n)) == nv  # one line per vertex of the source
 
 
+def check_refinement(report):
+    """every mesh but the reference refined: its map onto mesh 0 nearer an isometry (the symmetric
+    Dirichlet energy, 4 for an isometry up to scale, lower and not below 4)"""
+    r = report["refinement"]
+    assert r["reference"] == 0 and [m["mesh"] for m in r["meshes"]] == [1, 2, 3]
+    for m in r["meshes"]:
+        assert m["iterations"] >= 1
+        assert 4 - 1e-9 <= m["symmetric_dirichlet_energy_after"] < m["symmetric_dirichlet_energy_before"]
+
+
+def test_refined_collection_in_threads_is_the_command_lines(hands):
+    d, manifest, nv = hands
+    out = d / "threads_refined"
+    report = hot.collection(manifest, out, all_pairs=True, threads=2, progress=False, refine=10)
+    assert_same_files(d / "cli_refined", out)
+    check_report(report, out, nv)
+    check_refinement(report)
+    assert "refinement" not in json.load(open(d / "cli" / "report.json"))
+    with pytest.raises(hot.Error, match="refine must be 0"):
+        hot.collection(manifest, d / "o_refine", refine=-1, progress=False)
+    assert not os.path.exists(d / "o_refine")
+
+
 def test_collection_on_a_dask_local_cluster_is_the_command_lines(hands, capsys):
     import distributed  # (Debian's python3-distributed, installed by scripts/install-deps.sh)
     d, manifest, nv = hands
@@ -92,8 +116,13 @@ def test_collection_on_a_dask_local_cluster_is_the_command_lines(hands, capsys):
         with pytest.raises(hot.Error, match="missing.off"):
             hot.collection(bad, d / "dask_bad", client=client, progress=False)
         assert not os.path.exists(d / "dask_bad") or os.listdir(d / "dask_bad") == []
+        # refined: one refinement task per mesh after the embeddings, the maps after them
+        refined = hot.collection(manifest, d / "dask_refined", all_pairs=True, client=client, refine=10)
+        assert capsys.readouterr().err.count("  refined ") == 3
     assert_same_files(d / "cli", out)
     check_report(report, out, nv)
+    assert_same_files(d / "cli_refined", d / "dask_refined")
+    check_refinement(refined)
 
 
 def test_collection_errors(hands):
