@@ -198,7 +198,9 @@ static double collection_error(Collection& coll, const std::vector<Mesh>& m, std
   return sum / num_vertices(m[a]) / diagonal(m[b]);
 }
 
-TEST_CASE(refined_collection_is_cycle_consistent)
+// (heavy_: a minute of the sanitizer stage, whose time CI cannot spare; it runs in the Release
+// tests, and the staged collection --refine runs under the sanitizers in cli.collection_refine)
+TEST_CASE(heavy_refined_collection_is_cycle_consistent)
 {
   // cow.off and three bent copies (radii 4, 6 and 10 times its extent along z): four shapes
   // of one triangulation, the truth between any two vertex i <-> vertex i, near isometries
