@@ -6,11 +6,14 @@
 // vertex), the map's distortion (conformal and area p99, symmetric Dirichlet energy) before and
 // after, the independent certificate of the refined embedding, and the times (the refinement
 // against the two embeddings and the map, measured in this run).
-//   bench_refine A.off LA B.off LB [ROWS] [--iterations N]
+//   bench_refine A.off LA B.off LB [ROWS] [--iterations N] [--svg PICTURE.svg]
+// --svg draws A twice, each vertex coloured by its error before and after the refinement (white
+// 0 to dark red at the harmonic map's worst error), the landmarks as dots (the manual's figure).
 // LA, LB: landmark files (one vertex index per line, line j of LA corresponds to line j of LB);
 // ROWS: an optional file of 0-based rows of LA/LB to use (e.g. tosca_wolf.suggested_rows7.txt).
 #include "bench_common.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -34,6 +37,7 @@ static std::vector<std::size_t> read_indices(const std::string& file)
 struct Figures
 {
   double mean = 0, worst = 0;
+  std::vector<double> error; // per vertex of A, in diagonals of B
   HOT::Map_distortion d;
 };
 
@@ -46,6 +50,7 @@ static Figures measure(const SM& A, const UV& uvA, const SM& B, const Locator& L
     const K::Point_3 p = HOT::surface_point(locs[v.idx()], L, get(CGAL::vertex_point, B));
     const double e = std::sqrt(CGAL::squared_distance(p, B.point(v))) / diag;
     r.mean += e / num_vertices(A);
+    r.error.push_back(e);
     r.worst = (std::max)(r.worst, e);
   }
   r.d = HOT::map_distortion(A, B, L, locs);
@@ -58,14 +63,63 @@ static void print(const char* what, const Figures& f)
               100 * f.mean, 100 * f.worst, f.d.conformal_summary.p99, f.d.area_summary.p99, f.d.symmetric_dirichlet_energy);
 }
 
+// draws A, seen along -z (orthographic, painter's algorithm, Lambert shading), each face coloured
+// by the mean error of its vertices (white at 0, dark red at `top`), into the square
+// [x0, x0 + size] x [0, size]; the landmarks as black dots
+static void draw_errors(std::ostream& os, const SM& A, const std::vector<double>& error, double top,
+                        const std::vector<SM_vertex>& landmarks, double x0, double size)
+{
+  const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(A);
+  const double scale = 0.9 * size / (std::max)(bb.xmax() - bb.xmin(), bb.ymax() - bb.ymin());
+  const double cx = (bb.xmin() + bb.xmax()) / 2, cy = (bb.ymin() + bb.ymax()) / 2;
+  const auto at = [&](SM_vertex v) {
+    return std::make_pair(x0 + size / 2 + scale * (A.point(v).x() - cx), size / 2 - scale * (A.point(v).y() - cy));
+  };
+  std::vector<std::pair<double, SM_face> > order;
+  for(SM_face f : faces(A)) {
+    double z = 0;
+    for(SM_vertex v : vertices_around_face(halfedge(f, A), A)) z += A.point(v).z();
+    order.push_back(std::make_pair(z, f));
+  }
+  std::sort(order.begin(), order.end());
+  const K::Vector_3 light(0.3, 0.4, 1.0);
+  char line[256];
+  for(const auto& of : order) {
+    std::vector<SM_vertex> vs;
+    for(SM_vertex v : vertices_around_face(halfedge(of.second, A), A)) vs.push_back(v);
+    const K::Vector_3 n = CGAL::cross_product(A.point(vs[1]) - A.point(vs[0]), A.point(vs[2]) - A.point(vs[0]));
+    const double len = std::sqrt(n.squared_length());
+    const double shade = len > 0 ? 0.45 + 0.55 * std::abs(n * light) / (len * std::sqrt(light.squared_length())) : 0.7;
+    const double t = (std::min)(1.0, (error[vs[0].idx()] + error[vs[1].idx()] + error[vs[2].idx()]) / (3 * top));
+    // white -> yellow -> red -> dark red
+    const double r = t < 0.75 ? 1.0 : 1.0 - 1.6 * (t - 0.75), g = t < 0.25 ? 1.0 : (std::max)(0.0, 1.0 - 2 * (t - 0.25)),
+                 b = (std::max)(0.0, 1.0 - 4 * t);
+    std::snprintf(line, sizeof(line), "<polygon fill=\"#%02x%02x%02x\" stroke=\"#%02x%02x%02x\" stroke-width=\"0.3\" points=\"",
+                  int(255 * shade * r), int(255 * shade * g), int(255 * shade * b), int(255 * shade * r), int(255 * shade * g), int(255 * shade * b));
+    os << line;
+    for(SM_vertex v : vs) {
+      std::snprintf(line, sizeof(line), "%.1f,%.1f ", at(v).first, at(v).second);
+      os << line;
+    }
+    os << "\"/>\n";
+  }
+  for(SM_vertex v : landmarks) {
+    std::snprintf(line, sizeof(line), "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"black\"/>\n", at(v).first, at(v).second);
+    os << line;
+  }
+}
+
 int main(int argc, char** argv)
 {
   std::vector<std::string> args;
   int iterations = 100;
+  std::string svg;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--iterations" && i + 1 < argc)
       iterations = std::atoi(argv[++i]);
+    else if(a == "--svg" && i + 1 < argc)
+      svg = argv[++i];
     else
       args.push_back(a);
   }
@@ -151,5 +205,18 @@ int main(int argc, char** argv)
   std::printf("  independent certificate of the refined embedding: %s\n", certified ? "bijective" : why.c_str());
   std::printf("  time: embed both + map %.2f s, refine %.2f s (certificates %.2f s), ratio %.2f\n", t_map, rs.seconds, rs.seconds_certificate,
               rs.seconds / t_map);
+  if(!svg.empty()) {
+    std::ofstream os(svg);
+    char caption[256];
+    os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1000\" height=\"560\" viewBox=\"0 0 1000 560\">\n"
+       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    draw_errors(os, A, before.error, before.worst, lma, 0, 500);
+    draw_errors(os, A, after.error, before.worst, lma, 500, 500);
+    std::snprintf(caption, sizeof(caption), "harmonic orbifold map: error mean %.2f%%, worst %.2f%%", 100 * before.mean, 100 * before.worst);
+    os << "<text x=\"250\" y=\"530\" font-family=\"sans-serif\" font-size=\"16\" text-anchor=\"middle\">" << caption << "</text>\n";
+    std::snprintf(caption, sizeof(caption), "refined (%d iterations): mean %.2f%%, worst %.2f%%", rs.iterations, 100 * after.mean, 100 * after.worst);
+    os << "<text x=\"750\" y=\"530\" font-family=\"sans-serif\" font-size=\"16\" text-anchor=\"middle\">" << caption << "</text>\n</svg>\n";
+    std::printf("  wrote %s\n", svg.c_str());
+  }
   return certified ? 0 : 2;
 }

@@ -243,6 +243,12 @@ refine_section() {
     printf '%-16s %9s %9s %9s %7s  %s -> %s\n' "$m" "$(sed -n 2p "$off" | awk '{print $1}')" "$(seconds "$t0" "$t1")" "$(seconds "$t1" "$t2")" \
       "$(awk -v a="$(seconds "$t0" "$t1")" -v b="$(seconds "$t1" "$t2")" 'BEGIN { printf "%.2f", b / a }')" "$e0" "$e1"
   done
+  # the manual's figure (doc/fig/refine_bear_errors.png): bear's errors before and after
+  if [ -f "$work/bear.c7" ]; then
+    echo "== the manual's figure: bear onto its bent copy, errors before and after the refinement"
+    "$build/bin/bench_refine" "$build/data/meshes/bear.off" "$work/bear.c7" "$work/bear-bent.off" "$work/bear.c7" --svg "$build/refine_bear_errors.svg" || true
+    command -v rsvg-convert >/dev/null && rsvg-convert -w 1000 "$build/refine_bear_errors.svg" -o "$build/refine_bear_errors.png" && echo "  wrote $build/refine_bear_errors.png"
+  fi
 }
 if [ "$only" = refine ]; then refine_section; exit 0; fi
 if [ "$only" = reliability ]; then reliability_section; exit 0; fi
