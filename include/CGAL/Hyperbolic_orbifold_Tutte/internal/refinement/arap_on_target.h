@@ -16,6 +16,12 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -135,42 +141,64 @@ public:
              const std::vector<char>& held, std::vector<Eigen::Vector2d>& d, bool symmetric_dirichlet = true)
   {
     symmetric_dirichlet_ = symmetric_dirichlet;
-    typedef Eigen::Triplet<double> Tr;
-    std::vector<Tr> trip;
-    trip.reserve(src_.corners.size() * 36);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n_);
-    for(std::size_t f = 0; f < src_.corners.size(); ++f) {
+    if(H_.rows() == 0)
+      make_pattern();
+    // the faces' blocks (in parallel), then summed in the faces' order (the same sums, to the
+    // bit, whatever the number of threads)
+    const std::size_t nf = src_.corners.size();
+    blocks_.resize(nf);
+    const auto block = [&](std::size_t f) {
+      Face_block& b = blocks_[f];
       const auto& c = src_.corners[f];
       const auto& g = src_.gradients[f];
       const double a = src_.areas[f];
       if(!(a > 0))
-        continue;
+        return;
       const Eigen::Matrix<double, 3, 2> J = src_.jacobian(f, q);
       const Eigen::Matrix<double, 3, 2> r = Arap_source::rotation(J, s) - J;
       const Eigen::Matrix3d M = weights(J, s);
       for(int i = 0; i < 3; ++i) {
+        b.rhs[i] = a * T[c[i]].transpose() * M * r * g[i];
+        for(int j = 0; j < 3; ++j)
+          b.H[3 * i + j] = a * g[i].dot(g[j]) * T[c[i]].transpose() * M * T[c[j]];
+      }
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(nf > 10000)
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t f = r.begin(); f != r.end(); ++f)
+          block(f);
+      });
+    else
+#endif
+      for(std::size_t f = 0; f < nf; ++f)
+        block(f);
+    double* value = H_.valuePtr();
+    std::fill(value, value + H_.nonZeros(), 0.0);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n_);
+    for(std::size_t f = 0; f < nf; ++f) {
+      if(!(src_.areas[f] > 0))
+        continue;
+      const Face_block& b = blocks_[f];
+      const auto& c = src_.corners[f];
+      for(int i = 0; i < 3; ++i) {
         const std::size_t ui = unknown_[c[i]];
         if(ui == npos)
           continue;
-        rhs.segment<2>(2 * ui) += a * T[c[i]].transpose() * M * r * g[i];
-        for(int j = 0; j < 3; ++j) {
-          const std::size_t uj = unknown_[c[j]];
-          if(uj == npos)
-            continue;
-          const Eigen::Matrix2d H = a * g[i].dot(g[j]) * T[c[i]].transpose() * M * T[c[j]];
-          for(int r0 = 0; r0 < 2; ++r0)
-            for(int c0 = 0; c0 < 2; ++c0)
-              trip.emplace_back(2 * ui + r0, 2 * uj + c0, H(r0, c0));
-        }
+        rhs.segment<2>(2 * ui) += b.rhs[i];
+        for(int j = 0; j < 3; ++j)
+          if(unknown_[c[j]] != npos)
+            for(int r0 = 0; r0 < 2; ++r0)
+              for(int c0 = 0; c0 < 2; ++c0)
+                value[slots_[36 * f + 12 * i + 4 * j + 2 * r0 + c0]] += b.H[3 * i + j](r0, c0);
       }
     }
     // a tiny Tikhonov term (a vertex whose faces are all degenerate stays put), the springs
     for(std::size_t i = 0; i < fixed_.size(); ++i)
       if(unknown_[i] != npos)
         for(int r0 = 0; r0 < 2; ++r0)
-          trip.emplace_back(2 * unknown_[i] + r0, 2 * unknown_[i] + r0, (held[i] ? 1e8 : 1e-12) * src_.total_area);
-    Eigen::SparseMatrix<double> H(2 * n_, 2 * n_);
-    H.setFromTriplets(trip.begin(), trip.end());
+          value[diagonal_[2 * unknown_[i] + r0]] += (held[i] ? 1e8 : 1e-12) * src_.total_area;
+    const Eigen::SparseMatrix<double>& H = H_;
     d.assign(fixed_.size(), Eigen::Vector2d::Zero());
     Eigen::VectorXd x;
     if(!(factored_ && preconditioned_solve(H, rhs, x))) {
@@ -191,6 +219,52 @@ public:
   }
 
 private:
+  // the 2 x 2 blocks of a face's part of the system: H[3 i + j] couples its corners i and j
+  struct Face_block
+  {
+    Eigen::Matrix2d H[9];
+    Eigen::Vector2d rhs[3];
+  };
+
+  // H_'s pattern (the blocks of the unknown vertices of a face, the diagonal) and where each
+  // face's entries and the diagonal's are in its values
+  void make_pattern()
+  {
+    typedef Eigen::Triplet<double> Tr;
+    std::vector<Tr> trip;
+    trip.reserve(src_.corners.size() * 36 + 2 * n_);
+    for(const auto& c : src_.corners)
+      for(int i = 0; i < 3; ++i)
+        for(int j = 0; j < 3; ++j)
+          if(unknown_[c[i]] != npos && unknown_[c[j]] != npos)
+            for(int r0 = 0; r0 < 2; ++r0)
+              for(int c0 = 0; c0 < 2; ++c0)
+                trip.emplace_back(2 * unknown_[c[i]] + r0, 2 * unknown_[c[j]] + c0, 0.0);
+    for(std::size_t k = 0; k < 2 * n_; ++k)
+      trip.emplace_back(k, k, 0.0);
+    H_.resize(2 * n_, 2 * n_);
+    H_.setFromTriplets(trip.begin(), trip.end());
+    H_.makeCompressed();
+    const auto slot = [this](std::size_t row, std::size_t col) {
+      const int* begin = H_.innerIndexPtr() + H_.outerIndexPtr()[col];
+      const int* end = H_.innerIndexPtr() + H_.outerIndexPtr()[col + 1];
+      return static_cast<std::size_t>(std::lower_bound(begin, end, static_cast<int>(row)) - H_.innerIndexPtr());
+    };
+    slots_.assign(36 * src_.corners.size(), 0);
+    for(std::size_t f = 0; f < src_.corners.size(); ++f) {
+      const auto& c = src_.corners[f];
+      for(int i = 0; i < 3; ++i)
+        for(int j = 0; j < 3; ++j)
+          if(unknown_[c[i]] != npos && unknown_[c[j]] != npos)
+            for(int r0 = 0; r0 < 2; ++r0)
+              for(int c0 = 0; c0 < 2; ++c0)
+                slots_[36 * f + 12 * i + 4 * j + 2 * r0 + c0] = slot(2 * unknown_[c[i]] + r0, 2 * unknown_[c[j]] + c0);
+    }
+    diagonal_.resize(2 * n_);
+    for(std::size_t k = 0; k < 2 * n_; ++k)
+      diagonal_[k] = slot(k, k);
+  }
+
   // Conjugate gradients on H x = rhs preconditioned by the factor of an earlier matrix (the
   // matrices of successive steps differ little): false when 20 iterations do not bring the
   // residual below 1e-2 of the right-hand side's, and the caller factors H itself.
@@ -257,6 +331,10 @@ private:
   bool symmetric_dirichlet_ = true; // (the proxy of the current solve)
   std::vector<std::size_t> unknown_;
   std::size_t n_ = 0;
+  Eigen::SparseMatrix<double> H_;    // the system, its pattern made once
+  std::vector<std::size_t> slots_;    // per face, 36 places in H_'s values (see solve())
+  std::vector<std::size_t> diagonal_; // per row, its diagonal's place
+  std::vector<Face_block> blocks_;
   bool factored_ = false; // (ldlt_ holds the factor of an earlier step's matrix)
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt_;
 };
