@@ -732,5 +732,56 @@ PY
       grep -q "unknown command 'nosuchjob'" "$tmp/stderr" || fail "the reason for: $args"
     done
     echo ok ;;
+  progress)
+    # --progress: 'embed: PHASE NN%' lines on stderr, the phases in order, percentages that never
+    # decrease within a phase and end at 100%; stdout (apart from its time) and OUT.obj as without
+    # it; without it, stderr not a terminal: no progress output at all
+    echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/bear.cones"
+    args=(embed --mesh "$data/meshes/bear.off" --cones "$tmp/bear.cones" --out "$tmp/b.obj")
+    "$prog" "${args[@]}" > "$tmp/plain.stdout" 2> "$tmp/plain.stderr" || fail "embed failed"
+    [ ! -s "$tmp/plain.stderr" ] || fail "stderr without --progress: $(cat "$tmp/plain.stderr")"
+    mv "$tmp/b.obj" "$tmp/plain.obj"
+    "$prog" "${args[@]}" --progress > "$tmp/p.stdout" 2> "$tmp/p.stderr" || fail "embed --progress failed: $(cat "$tmp/p.stderr")"
+    cmp -s "$tmp/plain.obj" "$tmp/b.obj" || fail "OUT.obj differs with --progress"
+    untimed() { sed -E 's/ in [0-9.e+-]+ s,/ in T s,/' "$1"; }
+    [ "$(untimed "$tmp/plain.stdout")" = "$(untimed "$tmp/p.stdout")" ] || fail "stdout differs with --progress: $(cat "$tmp/p.stdout")"
+    grep -q -F "embedded " "$tmp/p.stdout" || fail "no 'embedded' line on stdout"
+    ! grep -q $'\r' "$tmp/p.stderr" || fail "carriage returns in --progress lines (stderr is not a terminal)"
+    awk -v want="read input cut initialization optimization certificate write" '
+      !/^embed: [a-z ]+ [0-9]+%$/ { print "not a progress line: " $0; bad = 1; next }
+      { pc = $NF; sub(/%$/, "", pc); pc += 0; ph = $0; sub(/^embed: /, "", ph); sub(/ [0-9]+%$/, "", ph)
+        if(ph != cur) {
+          if(cur != "" && last != 100) { print cur " ends at " last "%"; bad = 1 }
+          order = order (order == "" ? "" : " ") ph; cur = ph
+        } else if(pc < last) { print ph " goes down: " last "% -> " pc "%"; bad = 1 }
+        last = pc; n++ }
+      END {
+        if(cur != "" && last != 100) { print cur " ends at " last "%"; bad = 1 }
+        if(order != want) { print "phases: " order; bad = 1 }
+        if(n < 14) { print n " lines"; bad = 1 }
+        exit bad }' "$tmp/p.stderr" || fail "progress lines: $(cat "$tmp/p.stderr")"
+    echo "ok: $(wc -l < "$tmp/p.stderr") progress lines: $(tr '\n' '|' < "$tmp/p.stderr")"
+    # certify --progress: its phases too, nothing else changes
+    "$prog" certify --mesh "$data/meshes/bear.off" --embedding "$tmp/b.obj" --cones "$tmp/bear.cones" --progress \
+      > "$tmp/c.stdout" 2> "$tmp/c.stderr" || fail "certify --progress failed"
+    grep -q -x "certify: certificate 100%" "$tmp/c.stderr" || fail "certify --progress: $(cat "$tmp/c.stderr")"
+    grep -q "^certified: " "$tmp/c.stdout" || fail "certify's stdout: $(cat "$tmp/c.stdout")"
+    # a terminal (script(1) of util-linux gives one): one line updated in place with '\r', without
+    # --progress, cleared before the 'embedded' line
+    if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>&1; then
+      printf '%q ' "$prog" "${args[@]}" > "$tmp/cmd.sh"
+      script -qec "bash $tmp/cmd.sh" /dev/null < /dev/null > "$tmp/tty.out" 2>&1 || fail "embed on a terminal failed: $(cat "$tmp/tty.out")"
+      grep -q -a $'\rembed: optimization [0-9]*%' "$tmp/tty.out" || fail "no line updated in place on a terminal: $(cat -A "$tmp/tty.out" | head -c 2000)"
+      grep -q -a $'\rembed: write 100%' "$tmp/tty.out" || fail "the terminal's line does not reach 'write 100%'"
+      grep -q -a "embedded " "$tmp/tty.out" || fail "no 'embedded' line on the terminal"
+      # (the terminal's last line before 'embedded', cleared: what follows its last '\r')
+      grep -a "embedded " "$tmp/tty.out" | sed 's/\r$//' | awk -F'\r' '{ print $NF }' | grep -q "^embedded " ||
+        fail "the progress line is not cleared before stdout: $(grep -a "embedded " "$tmp/tty.out" | cat -A)"
+      cmp -s "$tmp/plain.obj" "$tmp/b.obj" || fail "OUT.obj differs on a terminal"
+      echo "ok: terminal"
+    else
+      echo "(no script(1): the terminal's line is not checked)"
+    fi
+    echo ok ;;
   *) fail "unknown case $case_name" ;;
 esac

@@ -24,6 +24,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/subdivision_method_3.h>
 
+#include <cstring>
 #include <map>
 #include <random>
 #ifdef CGAL_LINKED_WITH_TBB
@@ -1337,6 +1338,61 @@ TEST_CASE(user_edge_weights)
   CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv3),
           HOT::parameters::edge_weight_map(boost::make_assoc_property_map(w), HOT::parameters::embedding_statistics(&s3))) == HOT::ERROR_WRONG_PARAMETER);
   CHECK(uv3.empty());
+}
+
+// parameters::progress: the phases in order, each from 0 to 1 with fractions in [0, 1] that
+// never decrease, Newton's steps in between; the corners bit for bit those of a call without
+// it; a failure ends the reports (its phase not told 1)
+TEST_CASE(progress_callback)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("hand", m));
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 7);
+  std::unordered_map<halfedge_descriptor, Point_2> uv0, uv1;
+  HOT::Embedding_statistics s0, s1;
+  std::vector<std::pair<std::string, double> > calls;
+  auto record = [&calls](const char* phase, double f) { calls.emplace_back(phase, f); };
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv0),
+          HOT::parameters::embedding_statistics(&s0)) == HOT::OK);
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, boost::make_assoc_property_map(uv1),
+          HOT::parameters::progress(record, HOT::parameters::embedding_statistics(&s1))) == HOT::OK);
+  bool same = uv0.size() == uv1.size() && !uv0.empty();
+  for(const auto& e : uv0) {
+    const auto it = uv1.find(e.first);
+    const double a[2] = {e.second.x(), e.second.y()};
+    same = same && it != uv1.end();
+    if(same) {
+      const double b[2] = {it->second.x(), it->second.y()};
+      same = std::memcmp(a, b, sizeof a) == 0;
+    }
+  }
+  CHECK_MSG(same, "the corners differ with the progress callback");
+  CHECK(s0.iterations == s1.iterations && s0.cg_iterations == s1.cg_iterations);
+  const std::vector<std::string> phases{"input", "cut", "initialization", "optimization", "certificate"};
+  std::vector<std::string> seen;
+  for(const auto& c : calls)
+    if(seen.empty() || seen.back() != c.first)
+      seen.push_back(c.first);
+  std::string list;
+  for(const std::string& p : seen) list += p + " ";
+  CHECK_MSG(seen == phases, list);
+  for(const std::string& p : phases) {
+    std::vector<double> f;
+    for(const auto& c : calls)
+      if(c.first == p) f.push_back(c.second);
+    bool ok = f.size() >= 2 && f.front() == 0.0 && f.back() == 1.0;
+    for(std::size_t i = 0; i < f.size(); ++i)
+      ok = ok && f[i] >= 0.0 && f[i] <= 1.0 && (i == 0 || f[i] >= f[i - 1]);
+    CHECK_MSG(ok, p + ": " + std::to_string(f.size()) + " reports");
+    if(p == "optimization") // one per accepted Newton step between the 0 and the 1
+      CHECK_MSG(f.size() >= 3 && static_cast<int>(f.size()) <= s1.iterations + 2, f.size());
+  }
+  // a failure (too few landmarks): its phase is not told 1, no later phase is told
+  calls.clear();
+  std::unordered_map<halfedge_descriptor, Point_2> uv2;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, std::vector<vertex_descriptor>(lm.begin(), lm.begin() + 2),
+          boost::make_assoc_property_map(uv2), HOT::parameters::progress(record)) == HOT::ERROR_TOO_FEW_LANDMARKS);
+  CHECK(calls.size() == 1 && calls[0].first == "input" && calls[0].second == 0.0);
 }
 
 // The whole energy of a cut mesh, with seam twins (Mobius-transformed variables) and

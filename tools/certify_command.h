@@ -96,7 +96,8 @@ inline int run_certify(int argc, char** argv)
   typedef std::chrono::steady_clock Clock;
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
 
-  const Options opt(argc, argv, 2, {"mesh", "embedding", "cones", "orbifold", "cone-orders", "frame", "report"});
+  const Options opt(argc, argv, 2, {"mesh", "embedding", "cones", "orbifold", "cone-orders", "frame", "report"}, {"progress"});
+  Progress_line progress("certify", opt.has("progress"));
   hot_tools::Certify_request q;
   q.mesh_path = opt.get("mesh");
   q.embedding_path = opt.get("embedding");
@@ -110,6 +111,7 @@ inline int run_certify(int argc, char** argv)
   const HOT::Hyperbolic_isometry_2<double> frame = opt.has("frame") ? parse_frame(opt.get("frame")) : HOT::Hyperbolic_isometry_2<double>();
 
   const Clock::time_point t0 = Clock::now();
+  progress.step("read");
   Mesh m;
   require(hot_tools::read_mesh(q.mesh_path, m));
   // no cone: an empty cones file, for a closed mesh of genus g >= 1 (Euler characteristic below 2;
@@ -140,7 +142,9 @@ inline int run_certify(int argc, char** argv)
                                                 " vertices (v lines) but the mesh " + std::to_string(num_vertices(m)) +
                                                 ": it is not an embedding of this mesh"};
   const Clock::time_point t1 = Clock::now();
+  progress.done("read");
 
+  progress.step("certificate");
   HOT::Corner_embedding_certificate cert;
   std::string why;
   const HOT::Error_code ec =
@@ -158,8 +162,13 @@ inline int run_certify(int argc, char** argv)
   }
   q.time_read = seconds(t0, t1);
   q.time_certify = seconds(t1, Clock::now());
-  if(report)
+  progress.done("certificate");
+  if(report) {
+    progress.step("write");
     write_file_atomically(*report, [&](std::ostream& os) { hot_tools::write_certificate_report(os, q, cert); });
+    progress.done("write");
+  }
+  progress.clear();
 
   if(!cert.is_certified()) {
     std::cerr << "hyperbolic_orbifold_tutte: not certified: " << cert.summary() << std::endl;

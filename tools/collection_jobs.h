@@ -25,6 +25,18 @@
 // The files are those of the single-process `collection`, byte for byte (report.json apart
 // from its times): the same embedding with the same parameters, maps from embeddings read back
 // exactly (stored_embedding.h), the same writers.
+//
+// Faults. Every file is written atomically (write_file_atomically(): FILE.tmp, checked, then
+// renamed), a job's files in the order output then part: a part in DIR/.parts exists only when
+// its job is complete. A job whose part is there skips its mesh or pair (embedding_done(),
+// refinement_done(), map_done()), so a job, a stage or the whole collection run again after a
+// kill resumes where it stopped and recomputes nothing finished. The parts belong to the options
+// they were computed with: the first job of each kind writes them (DIR/.parts/embed.options:
+// the manifest's meshes, the repair options, the cone orders and order; refine.options: N;
+// maps.options: --all-pairs), and a job given other ones refuses to mix them. Locks
+// (Collection_lock, flock(2) on DIR itself, released by the kernel when the process dies, so a
+// killed run leaves no stale lock): the embed, refine and maps jobs take a shared lock (shards
+// run at once), the merge and the single-process collection an exclusive one.
 
 #include "cli_types.h"
 #include "stored_embedding.h"
@@ -39,18 +51,25 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -171,7 +190,136 @@ struct Collection_job
 inline void make_folder(const std::string& dir)
 {
   if(mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
-    throw std::runtime_error("cannot create the folder '" + dir + "'");
+    throw std::runtime_error("cannot create the folder '" + dir + "': " + std::strerror(errno));
+}
+
+inline bool regular_file_exists(const std::string& path)
+{
+  struct stat st;
+  return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+inline bool folder_exists(const std::string& path)
+{
+  struct stat st;
+  return stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+// A lock on the collection's folder (flock(2) on DIR itself: no lock file, and the kernel
+// releases it when the process ends, killed or not): shared for the embed, refine and maps jobs
+// (shards of one collection run at once), exclusive for the merge and the single-process run.
+// A job that cannot have it at once refuses with one line. The folder is created first if
+// `create` (else a missing folder is not locked: there is nothing in it to protect).
+class Collection_lock
+{
+public:
+  Collection_lock(const std::string& dir, bool exclusive, bool create)
+  {
+    if(create)
+      make_folder(dir);
+    fd_ = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if(fd_ < 0) {
+      if(errno == ENOENT && !create)
+        return;
+      throw std::runtime_error("cannot open the folder '" + dir + "': " + std::strerror(errno));
+    }
+    if(flock(fd_, (exclusive ? LOCK_EX : LOCK_SH) | LOCK_NB) != 0) {
+      const int err = errno;
+      close(fd_);
+      fd_ = -1;
+      if(err == EWOULDBLOCK)
+        throw std::runtime_error("'" + dir + "' is in use by another collection run (" +
+                                 (exclusive ? std::string("a collection, a merge or a stage job") : std::string("a collection or a merge")) +
+                                 " holds its lock): wait for it to end, or use another --out");
+      // (a file system without flock on folders, e.g. NFS, where Linux emulates it with fcntl
+      // locks that need a file open for writing: the collection runs unlocked, as before)
+      if(err == EBADF || err == ENOLCK || err == EINVAL || err == EOPNOTSUPP)
+        return;
+      throw std::runtime_error("cannot lock the folder '" + dir + "': " + std::strerror(err));
+    }
+  }
+  Collection_lock(const Collection_lock&) = delete;
+  Collection_lock& operator=(const Collection_lock&) = delete;
+  ~Collection_lock()
+  {
+    if(fd_ >= 0)
+      close(fd_); // (releases the lock)
+  }
+
+private:
+  int fd_ = -1;
+};
+
+// removes the folder `path` and the files in it (not recursive: the parts folder holds files)
+inline void remove_parts_folder(const std::string& path)
+{
+  if(DIR* d = opendir(path.c_str())) {
+    std::vector<std::string> names;
+    while(const dirent* e = readdir(d)) {
+      const std::string n = e->d_name;
+      if(n != "." && n != "..") names.push_back(n);
+    }
+    closedir(d);
+    for(const std::string& n : names) std::remove((path + "/" + n).c_str());
+  }
+  rmdir(path.c_str());
+}
+
+// what the parts of each kind depend on, beyond the meshes' files themselves
+inline std::string parts_options_text(const Collection_job& job, const std::string& kind)
+{
+  std::ostringstream os;
+  os.precision(17);
+  if(kind == "embed") {
+    for(const auto& e : job.entries) os << "mesh " << e.first << " " << e.second << "\n";
+    const hot_tools::Repair_options& r = job.repair;
+    os << "repair " << r.repair << " " << r.largest_component << " " << r.snap_landmarks << " " << r.max_hole_given << " " << r.max_hole << " "
+       << r.target_genus << " " << r.max_handle << "\ncone_orders";
+    for(int p : job.orders) os << " " << p;
+    os << "\norder " << job.order << "\nrefine " << (job.refine > 0 ? 1 : 0) << "\n";
+  } else if(kind == "refine")
+    os << "refine " << job.refine << "\n";
+  else
+    os << "all_pairs " << (job.all_pairs ? 1 : 0) << "\nrefine " << (job.refine > 0 ? 1 : 0) << "\n";
+  return os.str();
+}
+
+// The parts of `kind` (embed, refine, maps) in DIR/.parts were computed with this job's options
+// (DIR/.parts/<kind>.options, written by the first such job), or throws
+inline void check_parts_options(const Collection_job& job, const std::string& kind)
+{
+  const std::string path = job.parts() + "/" + kind + ".options", text = parts_options_text(job, kind);
+  std::string have;
+  if(hot_tools::read_file_contents(path, have)) {
+    if(have != text)
+      throw Failure{HOT::ERROR_WRONG_PARAMETER, job.parts() + " holds the " + kind + " parts of a collection run with other options or"
+                                                  " another manifest: run it with the same ones, or remove " + job.parts()};
+    return;
+  }
+  make_folder(job.dir);
+  make_folder(job.parts());
+  // (jobs running at once may write it together: each under a name of its own, then renamed)
+  static std::atomic<unsigned> count(0);
+  const std::string tmp = path + "." + std::to_string(getpid()) + "-" + std::to_string(count++) + ".tmp";
+  write_file_atomically(tmp, [&](std::ostream& os) { os << text; });
+  if(std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+}
+
+// whether a job's part is complete (its output was renamed into place before it)
+inline bool embedding_done(const Collection_job& job, std::size_t i)
+{
+  return regular_file_exists(job.mesh_part(i)) && regular_file_exists(job.refine > 0 ? job.embedded_path(i) : job.obj_path(i));
+}
+inline bool refinement_done(const Collection_job& job, std::size_t i)
+{
+  return regular_file_exists(job.refine_part(i)) && regular_file_exists(job.obj_path(i));
+}
+inline bool map_done(const Collection_job& job, std::size_t a, std::size_t b)
+{
+  return regular_file_exists(job.map_part(a, b)) && (!job.all_pairs || regular_file_exists(job.map_path(a, b)));
 }
 
 // the collection's orbifold, number of landmarks and cone order: mesh 0's type, and for sphere
@@ -231,6 +379,9 @@ inline Collection_order collection_order(const Collection_job& job)
 // "reversed 0|1", then its entry of the report). Returns its embedding time.
 inline double embed_collection_mesh(const Collection_job& job, const Collection_order& co, std::size_t i)
 {
+  check_parts_options(job, "embed");
+  if(embedding_done(job, i)) // (a job run again: done before)
+    return 0;
   Surface_mesh m;
   std::vector<SM_vertex> landmarks;
   Input in;
@@ -335,6 +486,10 @@ inline std::string with_corners(const std::string& text, const Stored_embedding&
 // is copied. Returns the refinement's time.
 inline double refine_collection_mesh(const Collection_job& job, std::size_t i)
 {
+  if(folder_exists(job.parts()))
+    check_parts_options(job, "refine");
+  if(refinement_done(job, i))
+    return 0;
   std::string text;
   if(!hot_tools::read_file_contents(job.embedded_path(i), text))
     throw Failure{HOT::ERROR_READ_FAILED, job.entries[i].first + ": mesh " + std::to_string(i) +
@@ -405,6 +560,14 @@ inline std::vector<Locator::Location> map_stored(const Stored_embedding& A, cons
 // coordinates (the locator's order), in the machine's binary doubles. Returns the map's time.
 inline double map_collection_pair(const Collection_job& job, std::size_t a, std::size_t b)
 {
+  if(folder_exists(job.parts()))
+    check_parts_options(job, "maps");
+  if(map_done(job, a, b)) {
+    double seconds = 0;
+    std::ifstream is(job.map_part(a, b), std::ios::binary);
+    is.read(reinterpret_cast<char*>(&seconds), sizeof(double));
+    return seconds;
+  }
   if(job.refine > 0) // (the refine stage's files, not a half-done stage's)
     for(std::size_t i : {a, b})
       read_refine_part(job, i);
@@ -558,15 +721,12 @@ inline hot_tools::Collection_report merge_collection(const Collection_job& job)
   Output_files files;
   files.write(job.dir + "/report.json", [&](std::ostream& os) { hot_tools::write_collection_report(os, r); });
   files.commit();
-  for(std::size_t i = 0; i < N; ++i) {
-    std::remove(job.mesh_part(i).c_str());
-    if(job.refine > 0) {
-      std::remove(job.refine_part(i).c_str());
-      std::remove(job.embedded_path(i).c_str());
-    }
-  }
-  for(const auto& p : cp.pairs) std::remove(job.map_part(p.first, p.second).c_str());
-  rmdir(job.parts().c_str());
+  // (renamed first: a merge killed while removing leaves no DIR/.parts that looks like a
+  // collection in progress; the next single-process run or merge removes the rest)
+  const std::string removing = job.parts() + ".removing";
+  remove_parts_folder(removing);
+  if(std::rename(job.parts().c_str(), removing.c_str()) == 0)
+    remove_parts_folder(removing);
   return r;
 }
 

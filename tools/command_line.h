@@ -16,8 +16,15 @@
 
 #include "io/prepared_input.h" // Repair_options
 
+#include <unistd.h> // isatty (Progress_line)
+
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
@@ -126,26 +133,46 @@ private:
   std::map<std::string, std::string> values_;
 };
 
-// Writes a file atomically: the content goes to FILE.tmp, renamed to FILE on success.
+// Writes a file atomically: the content goes to FILE.tmp, renamed to FILE on success. A failed
+// write (disk full, file size limit, unwritable folder) throws one line naming the file and the
+// system's reason, with FILE.tmp removed and FILE untouched: the stream's state is checked
+// after the last byte and after closing, before the rename. SIGXFSZ (a file size limit,
+// `ulimit -f`) is ignored so that such a write fails with EFBIG instead of killing the process.
+// A process killed while writing leaves at most FILE.tmp, never a truncated FILE.
 inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& writer)
 {
+  static const bool xfsz_ignored = (std::signal(SIGXFSZ, SIG_IGN), true);
+  (void)xfsz_ignored;
   const std::string tmp = path + ".tmp";
+  auto fail = [&](const char* what, int err) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(std::string(what) + " '" + path + "'" + (err != 0 ? std::string(": ") + std::strerror(err) : std::string()));
+  };
   {
-    std::ofstream out(tmp);
+    errno = 0;
+    std::ofstream out(tmp, std::ios::out | std::ios::trunc | std::ios::binary);
     if(!out)
-      throw std::runtime_error("cannot write '" + path + "'");
-    writer(out);
-    out.flush();
-    if(!out) {
+      fail("cannot write", errno);
+    errno = 0;
+    try {
+      writer(out);
+    } catch(...) {
       out.close();
       std::remove(tmp.c_str());
-      throw std::runtime_error("error while writing '" + path + "'");
+      throw;
     }
+    out.flush();
+    if(!out) {
+      const int err = errno;
+      out.close();
+      fail("error while writing", err);
+    }
+    out.close();
+    if(out.fail())
+      fail("error while writing", errno);
   }
-  if(std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "'");
-  }
+  if(std::rename(tmp.c_str(), path.c_str()) != 0)
+    fail("cannot write", errno);
 }
 
 // The output files of a command, each written atomically. Unless commit() is called, the
@@ -275,6 +302,82 @@ inline std::size_t minimum_landmarks(const std::vector<int>& orders)
 {
   return orders.empty() ? HOT::minimum_number_of_landmarks : 3;
 }
+
+// A long job's progress on stderr, 'JOB: PHASE NN%' (the library's phases through its
+// `progress` parameter, the program's own such as "read" and "write" at 0 and 100%): on a
+// terminal one line updated in place ('\r', at most every 0.1 s, cleared when the job ends);
+// otherwise, with --progress, one line per update (at most one per 0.5 s, and one at every
+// change of phase and at every 100%); otherwise nothing (stderr stays as without it). The
+// percentage is the fraction rounded down: 100% only at a phase's end.
+class Progress_line
+{
+public:
+  Progress_line(const std::string& job, bool flag)
+    : job_(job), terminal_(isatty(2) != 0), on_(terminal_ || flag)
+  {}
+  Progress_line(const Progress_line&) = delete;
+  Progress_line& operator=(const Progress_line&) = delete;
+  ~Progress_line() { clear(); }
+
+  bool on() const { return on_; }
+
+  void operator()(const std::string& phase, double fraction)
+  {
+    if(!on_)
+      return;
+    const int percent = static_cast<int>(std::floor(std::min(1.0, std::max(0.0, fraction)) * 100));
+    if(phase == phase_ && percent == percent_)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    const bool forced = phase != phase_ || percent == 100;
+    if(!forced && printed_ && now - last_ < std::chrono::milliseconds(terminal_ ? 100 : 500))
+      return;
+    phase_ = phase;
+    percent_ = percent;
+    last_ = now;
+    printed_ = true;
+    const std::string text = job_ + ": " + phase + " " + std::to_string(percent) + "%";
+    if(terminal_) {
+      std::fprintf(stderr, "\r%s%s", text.c_str(), std::string(text.size() < width_ ? width_ - text.size() : 0, ' ').c_str());
+      width_ = std::max(width_, text.size());
+    } else
+      std::fprintf(stderr, "%s\n", text.c_str());
+    std::fflush(stderr);
+  }
+  // a phase of the program's own, done in one step: 0% and 100%
+  void step(const std::string& phase) { (*this)(phase, 0.0); }
+  void done(const std::string& phase) { (*this)(phase, 1.0); }
+
+  // the library's `progress` parameter, the phases named "PREFIX PHASE" (none: empty function)
+  std::function<void(const char*, double)> callback(const std::string& prefix = std::string())
+  {
+    if(!on_)
+      return std::function<void(const char*, double)>();
+    return [this, prefix](const char* phase, double f) { (*this)(prefix.empty() ? std::string(phase) : prefix + " " + phase, f); };
+  }
+
+  // on a terminal, clears the line (before the job's own output on stdout or stderr)
+  void clear()
+  {
+    if(terminal_ && printed_ && width_ > 0) {
+      std::fprintf(stderr, "\r%s\r", std::string(width_, ' ').c_str());
+      std::fflush(stderr);
+      width_ = 0;
+    }
+    printed_ = false;
+    phase_.clear();
+    percent_ = -1;
+  }
+
+private:
+  std::string job_;
+  bool terminal_, on_;
+  bool printed_ = false;
+  std::string phase_;
+  int percent_ = -1;
+  std::size_t width_ = 0;
+  std::chrono::steady_clock::time_point last_;
+};
 
 } // namespace hot_cli
 

@@ -16,6 +16,7 @@
 #include "io/prepared_input.h"
 #include "io/reports.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@ struct Embed_job
   hot_tools::Repair_options repair;
   std::optional<std::string> cut_graph_path, cut_graph_out; // genus g >= 1: --cut-graph, --cut-graph-out
   std::vector<std::size_t> explicit_order; // --order I0,I1,...: the landmarks' positions in the order of the cut
+  std::function<void(const char*, double)> progress; // the library's progress reports (empty: none)
 };
 
 // the certified embedding of `m` with the job's options (the failure's reason otherwise):
@@ -48,12 +50,12 @@ HOT::Embedding_statistics embed_mesh(const Embed_job& job, TriangleMesh& m, cons
   const HOT::Landmark_order order = job.request.order == "tsp" ? HOT::Tsp_order : HOT::Given_order;
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     m, landmarks, uv,
-    HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(job.orders, HOT::parameters::chart_map(
+    HOT::parameters::progress(job.progress, HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(job.orders, HOT::parameters::chart_map(
       charts,
       HOT::parameters::recentring(
         job.recentre,
         HOT::parameters::embedding_statistics(
-          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type)))))))));
+          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type))))))))));
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
   return st;

@@ -42,16 +42,21 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
+#include <functional>
 #include <iostream>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 
@@ -73,7 +78,7 @@ const char* const usage_tile =
 const char* const usage_embed =
   "  hyperbolic_orbifold_tutte embed --mesh IN --cones CONES [--orbifold sphere|disk]\n"
   "      [--weights cotan|mvc|uniform] [--order given|tsp|I0,I1,...] --out OUT.obj [--svg PICTURE.svg]\n"
-  "      [--report REPORT.json] [--recentre] [--cone-orders P1,P2,...] [REPAIR]\n"
+  "      [--report REPORT.json] [--recentre] [--cone-orders P1,P2,...] [--progress] [REPAIR]\n"
   "      embeds the mesh into the hyperbolic orbifold whose cones are the landmarks CONES\n"
   "      (0-based vertex indices); OUT.obj holds the input vertices (v), one Poincare point\n"
   "      per cut-mesh vertex (vt) and the input faces (f v/vt); the result is certified\n"
@@ -88,12 +93,15 @@ const char* const usage_embed =
   "      landmarks) may be solved in a moved frame; the report then gives the frame.\n"
   "      A closed mesh of genus g >= 1 is detected and cut along a graph (2g shortest handle\n"
   "      loops and the paths to the landmarks); it needs 1 landmark for g = 1, none for g >= 2\n"
-  "      (CONES may be an empty file); the report gives \"genus\" and the \"cut_graph\".\n";
+  "      (CONES may be an empty file); the report gives \"genus\" and the \"cut_graph\".\n"
+  "      --progress: the progress of the phases on stderr, one line per update ('embed:\n"
+  "      optimization 45%': read, input, cut, initialization, optimization, certificate, write);\n"
+  "      on a terminal it is shown without --progress too, as one line updated in place\n";
 
 const char* const usage_map =
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
   "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off]\n"
-  "      [--report REPORT.json] [--cone-orders P1,P2,...] [--order auto|tsp|given] [--refine [N]] [REPAIR]\n"
+  "      [--report REPORT.json] [--cone-orders P1,P2,...] [--order auto|tsp|given] [--refine [N]] [--progress] [REPAIR]\n"
   "      maps every vertex of A onto B through the common orbifold (landmark i of CA to\n"
   "      landmark i of CB), both embedded in one landmark order: for sphere type (genus 0) by\n"
   "      default (auto) the tour of A or of B whose cut is the least longer than each mesh's own\n"
@@ -113,14 +121,15 @@ const char* const usage_map =
   "      each certified bijective; landmarks kept; genus 0, a source without charts): lowers the\n"
   "      symmetric Dirichlet energy (4 for an isometry up to scale); REPORT.json's \"refinement\"\n"
   "      gives its iterations, stop, energies, time and the \"distortion_before\" it\n"
-  "  hyperbolic_orbifold_tutte map --source-embedding A.obj --target-embedding B.obj --out MAP.txt [--report REPORT.json]\n"
+  "  hyperbolic_orbifold_tutte map --source-embedding A.obj --target-embedding B.obj --out MAP.txt [--report REPORT.json] [--progress]\n"
   "      the same map from two embeddings stored by embed or collection (no embedding again):\n"
   "      they must put the same landmarks at the same cones (embed B with --order set to A's\n"
-  "      \"landmark_positions_used\"); MAP.txt has one line per v line of A.obj; REPORT.json as map's\n";
+  "      \"landmark_positions_used\"); MAP.txt has one line per v line of A.obj; REPORT.json as map's\n"
+  "      --progress: the progress of the phases on stderr, as embed's ('map: source optimization 45%')\n";
 
 const char* const usage_collection =
   "  hyperbolic_orbifold_tutte collection --manifest LIST.txt --out DIR [--all-pairs] [--cone-orders P1,...] [--refine [N]] [REPAIR]\n"
-  "      [--order auto|tsp|given] [--stage embed|refine|maps|merge [--shard I/N]]\n"
+  "      [--order auto|tsp|given] [--stage embed|refine|maps|merge [--shard I/N]] [--progress]\n"
   "      embeds every mesh of LIST.txt (lines 'mesh_path cones_path') in one landmark order (as\n"
   "      map's --order, over all the meshes' tours; tsp: the first mesh's) and maps them onto\n"
   "      each other; writes DIR/<i>_<name>.obj, DIR/report.json (and DIR/<a>_to_<b>.map.txt).\n"
@@ -132,11 +141,15 @@ const char* const usage_collection =
   "      onto it, at most N iterations, default 100); the maps stay compositions through the one\n"
   "      orbifold (cycle consistent); report.json's \"refinement\" per mesh. As separate jobs,\n"
   "      --stage refine --shard I/N refines meshes I, I+N, ... between the embed and maps stages\n"
-  "      (--refine [N] given to every stage's job)\n";
+  "      (--refine [N] given to every stage's job)\n"
+  "      Killed and run again (the same command), the collection or a stage job resumes from\n"
+  "      DIR/.parts (what is done is skipped); DIR is locked while a collection or merge runs\n"
+  "      (the shards of a stage run together); files are renamed into place only when complete\n";
 
 const char* const usage_landmarks =
-  "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES [REPAIR]\n"
-  "      writes K well-spread landmarks of the mesh (vertices of the file, also with --repair)\n";
+  "  hyperbolic_orbifold_tutte landmarks --mesh IN --count K --out CONES [--progress] [REPAIR]\n"
+  "      writes K well-spread landmarks of the mesh (vertices of the file, also with --repair)\n"
+  "      --progress: the progress of the phases on stderr, as embed's\n";
 
 const char* const usage_cut =
   "  hyperbolic_orbifold_tutte cut --mesh IN --cones CONES [--order given|tsp] --out OUT.selection.txt\n"
@@ -147,7 +160,7 @@ const char* const usage_cut =
 
 const char* const usage_certify =
   "  hyperbolic_orbifold_tutte certify --mesh IN --embedding E.obj --cones CONES [--orbifold sphere|disk]\n"
-  "      [--cone-orders P1,P2,...] [--frame A_RE,A_IM,B_RE,B_IM] [--report REPORT.json]\n"
+  "      [--cone-orders P1,P2,...] [--frame A_RE,A_IM,B_RE,B_IM] [--report REPORT.json] [--progress]\n"
   "      checks that E.obj (v, vt and 'f v/vt v/vt v/vt' lines, from embed or any other program)\n"
   "      is a bijection of IN onto the orbifold whose cones are CONES (in any order), from the\n"
   "      file alone and independently of the solver: faces are IN's faces, points finite and in\n"
@@ -160,7 +173,8 @@ const char* const usage_certify =
   "      --frame: the frame of a recentred embedding (embed's report), z -> (az + b)/(conj(b) z + conj(a))\n"
   "      A closed mesh of genus g >= 1 (CONES may be empty for g >= 2): no tile; each seam's isometry\n"
   "      is read from its two copies (equal lengths, shared along the cut), angle sums 2 pi (2 pi / p\n"
-  "      at a cone) within 1e-6, area 2 pi (2g - 2 + sum(1 - 1/p)); the report gives \"genus\".\n";
+  "      at a cone) within 1e-6, area 2 pi (2g - 2 + sum(1 - 1/p)); the report gives \"genus\".\n"
+  "      --progress: the progress of the phases on stderr, as embed's\n";
 
 const char* const usage_repair =
   "  REPAIR (embed, map, collection, landmarks):\n"
@@ -293,6 +307,13 @@ std::vector<std::vector<std::size_t> > cut_graph_in_files(const HOT::Embedding_s
   return r;
 }
 
+// the flags and --progress
+std::set<std::string> with_progress_flag(std::set<std::string> flags)
+{
+  flags.insert("progress");
+  return flags;
+}
+
 // one line on stdout saying what --repair and --snap-landmarks changed
 void print_repair(const std::string& path, const Input& in)
 {
@@ -380,10 +401,11 @@ std::vector<std::size_t> parse_landmark_positions(const std::string& s, std::siz
   return perm;
 }
 
-Embed_job parse_embed_options(int argc, char** argv)
+Embed_job parse_embed_options(int argc, char** argv, bool& progress)
 {
   std::set<std::string> flags = repair_flags();
   flags.insert("recentre");
+  flags.insert("progress");
   const Options opt(argc, argv, 2, {"mesh", "cones", "orbifold", "weights", "order", "out", "svg", "report", "max-hole", "target-genus", "max-handle", "cone-orders",
                                        "cut-graph", "cut-graph-out"}, flags);
   Embed_job job;
@@ -415,6 +437,7 @@ Embed_job parse_embed_options(int argc, char** argv)
     job.cut_graph_path = opt.get("cut-graph");
   if(opt.has("cut-graph-out"))
     job.cut_graph_out = opt.get("cut-graph-out");
+  progress = opt.has("progress");
   return job;
 }
 
@@ -459,12 +482,18 @@ void write_embed_outputs(const Embed_job& job, const Surface_mesh& m, const UV_m
 int run_embed(int argc, char** argv)
 {
   hot_tools::timings(); // (HOT_TIMINGS: the phases' clock starts here)
-  Embed_job job = parse_embed_options(argc, argv);
+  bool progress_flag = false;
+  Embed_job job = parse_embed_options(argc, argv, progress_flag);
+  Progress_line progress("embed", progress_flag);
   Surface_mesh m;
   std::vector<SM_vertex> landmarks;
   Input in;
+  progress.step("read");
   const HOT::Orbifold_type type =
     read_mesh_and_landmarks(job.request.mesh_path, job.cones_path, job.required_type, job.repair, m, landmarks, in, minimum_landmarks(job.orders));
+  progress.done("read");
+  if(in.file.repaired || !in.snaps.empty())
+    progress.clear(); // (a terminal's line, before stdout)
   print_repair(job.request.mesh_path, in);
   job.request.type = type;
   if(job.request.order.find_first_of("0123456789") != std::string::npos) { // --order I0,I1,...: the landmarks in that order
@@ -498,6 +527,7 @@ int run_embed(int argc, char** argv)
     cut_graph = read_cut_graph_of(*job.cut_graph_path, m, in.file);
   }
   hot_tools::timings().phase("before the library");
+  job.progress = progress.callback();
   HOT::Embedding_statistics st = embed_mesh(job, m, landmarks, uv, charts, cut_graph);
   hot_tools::timings().phase("library (embedding)");
   hot_tools::timings().add(" setup (check, order, cut)", st.time_setup);
@@ -511,7 +541,10 @@ int run_embed(int argc, char** argv)
     job.request.cones = as_given;
     job.request.order = "explicit"; // (the report's "order", as the Python module's)
   }
+  progress.step("write");
   write_embed_outputs(job, m, uv, charts, landmarks, st, in);
+  progress.done("write");
+  progress.clear();
   std::cout << "embedded " << job.request.mesh_path << " (" << num_vertices(m) << " vertices, " << landmarks.size() << " cones, "
             << (genus > 0 ? "closed, genus " + std::to_string(genus) : std::string(type == HOT::Sphere_type ? "sphere" : "disk") + " type") << ") in "
             << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
@@ -537,9 +570,11 @@ struct Embedded
 };
 
 void read_and_check(const std::string& mesh_path, const std::string& cones_path, const hot_tools::Repair_options& repair, Embedded& e,
-                    std::size_t minimum = HOT::minimum_number_of_landmarks)
+                    std::size_t minimum = HOT::minimum_number_of_landmarks, Progress_line* progress = nullptr)
 {
   e.type = read_mesh_and_landmarks(mesh_path, cones_path, std::nullopt, repair, e.mesh, e.landmarks, e.in, minimum);
+  if(progress && (e.in.file.repaired || !e.in.snaps.empty()))
+    progress->clear(); // (a terminal's line, before stdout)
   print_repair(mesh_path, e.in);
 }
 
@@ -550,7 +585,7 @@ const hot_tools::Input_mesh* addressing(const Input& in)
 }
 
 void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const std::vector<int>& orders, const std::string& name,
-                    const std::vector<std::vector<SM_vertex> >& cut_graph = {})
+                    const std::vector<std::vector<SM_vertex> >& cut_graph = {}, Progress_line* progress = nullptr)
 {
   e.ordered.clear();
   std::vector<int> ordered_orders; // (empty: 2 for all)
@@ -570,7 +605,8 @@ void embed_in_order(Embedded& e, const std::vector<std::size_t>& order, const st
   e.stats = HOT::Embedding_statistics();
   const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(
     e.mesh, e.ordered, e.uv,
-    HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(ordered_orders, HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats))))));
+    HOT::parameters::progress(progress ? progress->callback(name) : std::function<void(const char*, double)>(),
+    HOT::parameters::cut_graph(cut_graph, HOT::parameters::cone_orders(ordered_orders, HOT::parameters::chart_map(e.charts, HOT::parameters::orbifold_type(e.type, HOT::parameters::embedding_statistics(&e.stats)))))));
   if(ec != HOT::OK)
     throw Failure{ec, name + ": " + e.stats.message};
 }
@@ -706,7 +742,8 @@ std::string order_origin(const HOT::Landmark_order_candidate& c)
 // were tried and why each failed. `refusals` gets one line per order refused.
 std::size_t embed_map_pair(Embedded& A, Embedded& B, const std::vector<HOT::Landmark_order_candidate>& candidates,
                            const std::vector<int>& orders, const std::vector<std::vector<SM_vertex> >& ga,
-                           const std::vector<std::vector<SM_vertex> >& gb, std::vector<std::string>& refusals)
+                           const std::vector<std::vector<SM_vertex> >& gb, std::vector<std::string>& refusals,
+                           Progress_line* progress = nullptr)
 {
   std::string tried;
   for(std::size_t c = 0; c < candidates.size(); ++c) {
@@ -714,8 +751,8 @@ std::size_t embed_map_pair(Embedded& A, Embedded& B, const std::vector<HOT::Land
     try {
       // (with a choice, the mesh whose tour it is not first: the more likely to refuse it)
       const bool target_first = candidates.size() > 1 && candidates[c].mesh == 0;
-      embed_in_order(target_first ? B : A, order, orders, target_first ? "target" : "source", target_first ? gb : ga);
-      embed_in_order(target_first ? A : B, order, orders, target_first ? "source" : "target", target_first ? ga : gb);
+      embed_in_order(target_first ? B : A, order, orders, target_first ? "target" : "source", target_first ? gb : ga, progress);
+      embed_in_order(target_first ? A : B, order, orders, target_first ? "source" : "target", target_first ? ga : gb, progress);
       return c;
     } catch(const Failure& f) {
       if(candidates.size() == 1 || !HOT::is_landmark_order_failure(f.code))
@@ -794,6 +831,7 @@ hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A, const 
 // the two files were embedded with the same landmarks in the same cone order
 int run_map_stored(const Options& opt)
 {
+  Progress_line progress("map", opt.has("progress"));
   for(const char* o : {"source", "source-cones", "target", "target-cones", "colors-out", "prepared-target", "max-hole", "target-genus", "max-handle", "cone-orders",
                        "source-cut-graph", "target-cut-graph", "repair", "largest-component", "snap-landmarks"})
     if(opt.has(o))
@@ -803,17 +841,23 @@ int run_map_stored(const Options& opt)
     throw Usage_error{"--source-embedding and --target-embedding go together"};
   const std::string out = opt.get("out");
   Stored_embedding A, B;
+  progress.step("read");
   read_stored_embedding(opt.get("source-embedding"), A);
   read_stored_embedding(opt.get("target-embedding"), B);
   check_stored_pair(A, B);
+  progress.done("read");
+  progress.step("map");
   const auto t0 = std::chrono::steady_clock::now();
   const Locator locB = stored_locator(B);
   const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.chart_isometries, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(A.vertex_line[i]) + " of the source could not be located on the target"};
+  progress.done("map");
+  progress.step("reliability");
   const auto t1 = std::chrono::steady_clock::now();
   const HOT::Map_reliability reliability = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
+  progress.done("reliability");
   hot_tools::Map_summary m;
   m.source_path = A.path;
   m.target_path = B.path;
@@ -830,14 +874,19 @@ int run_map_stored(const Options& opt)
   add_reliability_tests(m, reliability);
   m.seconds_map = std::chrono::duration<double>(t1 - t0).count();
   m.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  progress.step("distortion");
   const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
   m.distortion = HOT::map_distortion(A.mesh, B.mesh, locB, f);
   m.seconds_distortion = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
+  progress.done("distortion");
+  progress.step("write");
   Output_files files;
   files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, A.line_vertex); });
   if(opt.has("report"))
     files.write(opt.get("report"), [&](std::ostream& os) { hot_tools::write_map_report(os, m); });
   files.commit();
+  progress.done("write");
+  progress.clear();
   std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << A.path << " onto " << B.path << " (stored embeddings); wrote " << out
             << std::endl;
   if(!m.unreliable.empty())
@@ -852,7 +901,7 @@ int run_map(int argc, char** argv)
   const Options opt(argc, argv, 2,
                     {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole", "target-genus", "max-handle",
                      "cone-orders", "source-cut-graph", "target-cut-graph", "source-embedding", "target-embedding", "order"},
-                    repair_flags(), {"refine"});
+                    with_progress_flag(repair_flags()), {"refine"});
   if(opt.has("source-embedding") || opt.has("target-embedding")) {
     if(opt.has("refine"))
       throw Usage_error{"--refine refines a map computed from the meshes, not from stored embeddings"};
@@ -862,12 +911,18 @@ int run_map(int argc, char** argv)
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
   const std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
+  Progress_line progress("map", opt.has("progress"));
   Embedded A, B;
-  read_and_check(opt.get("source"), opt.get("source-cones"), repair, A, minimum_landmarks(orders));
-  read_and_check(opt.get("target"), opt.get("target-cones"), repair, B, minimum_landmarks(orders));
+  progress.step("read");
+  read_and_check(opt.get("source"), opt.get("source-cones"), repair, A, minimum_landmarks(orders), &progress);
+  read_and_check(opt.get("target"), opt.get("target-cones"), repair, B, minimum_landmarks(orders), &progress);
+  progress.clear(); // (match_genus_zero() may write on stdout)
   match_genus_zero(opt, repair, A, B, minimum_landmarks(orders));
+  progress.done("read");
   check_map_pair(A, B);
+  progress.step("landmark order");
   const std::vector<HOT::Landmark_order_candidate> candidates = map_cone_orders(parse_common_order(opt), A, B);
+  progress.done("landmark order");
   std::vector<std::vector<SM_vertex> > ga, gb; // genus g >= 1: the cut graphs
   if(genus_of(A) > 0) {
     for(std::size_t i : candidates[0].order) A.ordered.push_back(A.landmarks[i]);
@@ -875,7 +930,7 @@ int run_map(int argc, char** argv)
   } else if(opt.has("source-cut-graph") || opt.has("target-cut-graph"))
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the meshes have genus 0: a cut graph is for closed meshes of genus 1 or more"};
   std::vector<std::string> refusals;
-  const HOT::Landmark_order_candidate& chosen = candidates[embed_map_pair(A, B, candidates, orders, ga, gb, refusals)];
+  const HOT::Landmark_order_candidate& chosen = candidates[embed_map_pair(A, B, candidates, orders, ga, gb, refusals, &progress)];
   const std::vector<std::size_t>& order = chosen.order;
   if(genus_of(A) > 0)
     check_same_polygon(A, B);
@@ -883,16 +938,19 @@ int run_map(int argc, char** argv)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the landmarks run clockwise around one boundary and counterclockwise around the other: "
                                               "the correspondence would reverse orientation"};
   const int k = static_cast<int>(order.size());
+  progress.step("map");
   const auto t0 = std::chrono::steady_clock::now();
   const Locator locB = target_locator(B);
   std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target"};
+  progress.done("map");
   const auto t1 = std::chrono::steady_clock::now();
   HOT::Map_distortion distortion_before;
   HOT::Map_refinement_statistics refinement;
   if(refine > 0) { // (A's embedding moves: everything below reads the refined map)
+    progress.step("refine");
     if(!A.stats.charts.empty()) // (the library refuses the rest: genus 1 or more)
       throw Failure{HOT::ERROR_WRONG_PARAMETER, "--refine handles sources embedded without charts; the source is embedded partly in charts around cone images"};
     distortion_before = HOT::map_distortion(A.mesh, B.mesh, locB, f);
@@ -904,8 +962,11 @@ int run_map(int argc, char** argv)
     for(std::size_t i = 0; i < f.size(); ++i)
       if(!f[i].success)
         throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target after the refinement"};
+    progress.done("refine");
   }
+  progress.step("reliability");
   const HOT::Map_reliability reliability = HOT::map_reliability(A.mesh, A.uv, B.mesh, B.uv, locB, f);
+  progress.done("reliability");
   hot_tools::Map_summary summary = map_summary(opt, A, B, k, reliability);
   summary.images_in_filled_holes = images_in_filled_holes(A, B, f);
   add_reliability_tests(summary, reliability);
@@ -914,12 +975,15 @@ int run_map(int argc, char** argv)
   summary.orders_tried = refusals.size() + 1;
   summary.seconds_map = std::chrono::duration<double>(t1 - t0).count();
   summary.seconds_reliability = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  progress.step("distortion");
   const auto t2 = std::chrono::steady_clock::now(); // the per-face distortion (REPORT.json's "distortion")
   summary.distortion = HOT::map_distortion(A.mesh, B.mesh, locB, f);
   summary.seconds_distortion = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
+  progress.done("distortion");
   summary.refined = refine > 0;
   summary.refinement = refinement;
   summary.distortion_before = distortion_before;
+  progress.step("write");
   Output_files files;
   files.write(out, [&](std::ostream& os) { hot_tools::write_map(os, B.mesh, locB, f, addressing(A.in)); });
   if(opt.has("report"))
@@ -933,6 +997,8 @@ int run_map(int argc, char** argv)
     files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g, addressing(B.in)); });
   }
   files.commit();
+  progress.done("write");
+  progress.clear();
   std::cout << "landmark order:";
   for(std::size_t i : order) std::cout << " " << i;
   std::cout << " (" << order_origin(chosen);
@@ -1103,78 +1169,138 @@ std::pair<std::size_t, std::size_t> parse_shard(const Options& opt)
   return std::make_pair(i, n);
 }
 
+// runs job(k) for k in [0, n) in `threads` threads (the first failure is rethrown once all stop;
+// the others stop taking new work)
+void run_in_threads(std::size_t n, std::size_t threads, const std::function<void(std::size_t)>& job)
+{
+  std::atomic<std::size_t> next(0);
+  std::atomic<bool> failed(false);
+  std::exception_ptr first;
+  std::mutex m;
+  auto worker = [&] {
+    for(std::size_t k; !failed && (k = next++) < n;) {
+      try {
+        job(k);
+      } catch(...) {
+        std::lock_guard<std::mutex> g(m);
+        if(!first) first = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for(std::size_t t = 1; t < std::min(threads, n); ++t) pool.emplace_back(worker);
+  worker();
+  for(std::thread& t : pool) t.join();
+  if(first)
+    std::rethrow_exception(first);
+}
+
 // `collection --stage embed|refine|maps|merge [--shard I/N]`: the collection as separate jobs
 // (collection_jobs.h): the embed stage embeds meshes I, I + N, ...; the maps stage computes the
 // maps I, I + N, ... of the collection's list of pairs from the stored embeddings; the merge
-// writes report.json once both stages are done for every shard
-int run_collection_stage(const Collection_job& job, const std::string& stage, std::pair<std::size_t, std::size_t> shard)
+// writes report.json once both stages are done for every shard. A mesh or pair whose part is
+// already in DIR/.parts (a job run again) is skipped, with a line on stderr. `threads`: the
+// single-process run's (the stage's meshes or pairs in parallel); `summary`: its line on stdout
+int run_collection_stage(const Collection_job& job, const std::string& stage, std::pair<std::size_t, std::size_t> shard,
+                         std::size_t threads = 1, bool summary = true, std::ostream& log = std::cerr)
 {
-  std::size_t done = 0;
+  std::mutex out;
+  std::size_t done = 0, skipped = 0;
+  auto mine = [&](std::size_t n) {
+    std::vector<std::size_t> r;
+    for(std::size_t k = shard.first; k < n; k += shard.second) r.push_back(k);
+    return r;
+  };
   if(stage == "embed") {
-    const Collection_order co = collection_order(job);
-    for(std::size_t i = shard.first; i < job.size(); i += shard.second) {
-      const double t = embed_collection_mesh(job, co, i);
-      std::cerr << "  embedded " << job.entries[i].first << " (" << t << " s)" << std::endl;
-      ++done;
+    const std::vector<std::size_t> todo = mine(job.size());
+    // (the collection's order is computed, reading every mesh, only when some mesh is left)
+    std::optional<Collection_order> co;
+    for(std::size_t i : todo) {
+      if(embedding_done(job, i)) {
+        check_parts_options(job, "embed");
+        log << "  " << job.entries[i].first << ": embedded before (" << job.parts() << ")" << std::endl;
+        ++skipped;
+      } else if(!co)
+        co = collection_order(job);
     }
-    std::cout << "collection shard " << shard.first << "/" << shard.second << ": embedded " << done << " of " << job.size() << " meshes into "
-              << job.dir << std::endl;
+    run_in_threads(todo.size(), threads, [&](std::size_t k) {
+      const std::size_t i = todo[k];
+      if(embedding_done(job, i))
+        return;
+      const double t = embed_collection_mesh(job, *co, i);
+      std::lock_guard<std::mutex> g(out);
+      ++done;
+      log << "  embedded " << done << "/" << todo.size() - skipped << ": " << job.entries[i].first << " (" << t << " s)" << std::endl;
+    });
+    if(summary)
+      std::cout << "collection shard " << shard.first << "/" << shard.second << ": embedded " << done << " of " << job.size() << " meshes into "
+                << job.dir << (skipped > 0 ? " (" + std::to_string(skipped) + " embedded before)" : std::string()) << std::endl;
   } else if(stage == "refine") {
     if(job.refine <= 0)
       throw Usage_error{"--stage refine needs --refine [N] (in every stage's job)"};
-    for(std::size_t i = shard.first; i < job.size(); i += shard.second) {
+    const std::vector<std::size_t> todo = mine(job.size());
+    run_in_threads(todo.size(), threads, [&](std::size_t k) {
+      const std::size_t i = todo[k];
+      const bool before = refinement_done(job, i);
       const double t = refine_collection_mesh(job, i);
-      if(i > 0)
-        std::cerr << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << " (" << t << " s)" << std::endl;
+      std::lock_guard<std::mutex> g(out);
+      if(before) {
+        log << "  " << job.entries[i].first << ": refined before (" << job.parts() << ")" << std::endl;
+        ++skipped;
+        return;
+      }
+      if(i > 0) {
+        const HOT::Map_refinement_statistics st = read_refine_part(job, i);
+        log << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << ": " << st.iterations
+            << " certified iterations, symmetric Dirichlet energy " << st.energy_before << " -> " << st.energy_after << " (" << t << " s)" << std::endl;
+      }
       ++done;
-    }
-    std::cout << "collection shard " << shard.first << "/" << shard.second << ": refined " << done << " of " << job.size() << " meshes in "
-              << job.dir << std::endl;
+    });
+    if(summary)
+      std::cout << "collection shard " << shard.first << "/" << shard.second << ": refined " << done << " of " << job.size() << " meshes in "
+                << job.dir << (skipped > 0 ? " (" + std::to_string(skipped) + " refined before)" : std::string()) << std::endl;
   } else if(stage == "maps") {
     const Collection_pairs cp = collection_pairs(job.size(), job.all_pairs);
-    std::size_t mine = 0;
-    for(std::size_t p = shard.first; p < cp.pairs.size(); p += shard.second) ++mine;
-    for(std::size_t p = shard.first; p < cp.pairs.size(); p += shard.second) {
-      const double t = map_collection_pair(job, cp.pairs[p].first, cp.pairs[p].second);
-      ++done;
-      if(done == mine || done % std::max<std::size_t>(1, mine / 20) == 0)
-        std::cerr << "  mapped " << done << "/" << mine << " pairs (last: " << cp.pairs[p].first << " -> " << cp.pairs[p].second << ", " << t
-                  << " s)" << std::endl;
+    const std::vector<std::size_t> todo = mine(cp.pairs.size());
+    std::vector<std::size_t> left;
+    for(std::size_t p : todo) {
+      if(map_done(job, cp.pairs[p].first, cp.pairs[p].second)) {
+        check_parts_options(job, "maps");
+        ++skipped;
+      } else
+        left.push_back(p);
     }
-    std::cout << "collection shard " << shard.first << "/" << shard.second << ": mapped " << done << " of " << cp.pairs.size() << " pairs in "
-              << job.dir << std::endl;
+    if(skipped > 0)
+      log << "  " << skipped << " of " << todo.size() << " pairs mapped before (" << job.parts() << ")" << std::endl;
+    run_in_threads(left.size(), threads, [&](std::size_t k) {
+      const std::size_t p = left[k];
+      const double t = map_collection_pair(job, cp.pairs[p].first, cp.pairs[p].second);
+      std::lock_guard<std::mutex> g(out);
+      ++done;
+      if(done == left.size() || done % std::max<std::size_t>(1, left.size() / 20) == 0)
+        log << "  mapped " << done << "/" << left.size() << " pairs (last: " << cp.pairs[p].first << " -> " << cp.pairs[p].second << ", " << t
+                  << " s)" << std::endl;
+    });
+    if(summary)
+      std::cout << "collection shard " << shard.first << "/" << shard.second << ": mapped " << done << " of " << cp.pairs.size() << " pairs in "
+                << job.dir << (skipped > 0 ? " (" + std::to_string(skipped) + " mapped before)" : std::string()) << std::endl;
   } else if(stage == "merge") {
     if(shard.second != 1)
       throw Usage_error{"--stage merge runs once, without --shard"};
     const hot_tools::Collection_report r = merge_collection(job);
-    std::cout << "collection of " << job.size() << " meshes merged; " << r.triples << " triples checked, cycle consistency " << r.cycle
-              << "; wrote " << job.dir << "/report.json" << std::endl;
+    if(summary)
+      std::cout << "collection of " << job.size() << " meshes merged; " << r.triples << " triples checked, cycle consistency " << r.cycle
+                << "; wrote " << job.dir << "/report.json" << std::endl;
   } else
     throw Usage_error{"--stage must be embed, refine, maps or merge, got '" + stage + "'"};
   return EXIT_SUCCESS;
 }
 
-int run_collection(int argc, char** argv)
+// The single-process collection in memory (Orbifold_collection: its embeddings tried in the
+// other meshes' tours when one refuses the first), its files written at the end
+int run_collection_in_memory(const Collection_job& job)
 {
-  std::set<std::string> flags = repair_flags();
-  flags.insert("all-pairs");
-  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "target-genus", "max-handle", "cone-orders", "stage", "shard", "order"}, flags,
-                    {"refine"});
-  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
-  Collection_job job;
-  job.manifest_path = opt.get("manifest");
-  job.dir = opt.get("out");
-  job.all_pairs = opt.has("all-pairs");
-  job.set_repair(parse_repair_options(opt));
-  job.orders = parse_cone_orders(opt);
-  job.order = parse_common_order(opt);
-  job.refine = refine;
-  const std::pair<std::size_t, std::size_t> shard = parse_shard(opt);
-  if(opt.has("shard") && !opt.has("stage"))
-    throw Usage_error{"--shard needs --stage embed, refine or maps (then --stage merge once)"};
-  job.entries = read_manifest(job.manifest_path);
-  if(opt.has("stage"))
-    return run_collection_stage(job, opt.get("stage"), shard);
   Collection coll;
   coll.set_cone_orders(job.orders);
   coll.set_landmark_order_choice(job.order == "given" ? Collection::Given_landmark_order
@@ -1182,8 +1308,8 @@ int run_collection(int argc, char** argv)
   std::vector<hot_tools::Input_mesh> inputs;
   const HOT::Orbifold_type type = read_collection(job.entries, job.repair, coll, inputs, minimum_landmarks(job.orders));
   embed_collection(job.entries, coll);
-  if(refine > 0) { // every mesh's embedding fitted to mesh 0's metric; the maps through the one orbifold
-    const HOT::Error_code ec = coll.refine(refine, 0);
+  if(job.refine > 0) { // every mesh's embedding fitted to mesh 0's metric; the maps through the one orbifold
+    const HOT::Error_code ec = coll.refine(job.refine, 0);
     if(ec != HOT::OK)
       throw Failure{ec, "--refine: " + coll.message()};
     for(std::size_t i = 1; i < job.size(); ++i) {
@@ -1205,6 +1331,110 @@ int run_collection(int argc, char** argv)
   std::cout << "collection of " << job.size() << " meshes embedded" << (job.all_pairs ? " and mapped pairwise" : "") << "; "
             << maps.triples << " triples checked, cycle consistency " << maps.cycle << "; wrote " << job.dir << std::endl;
   return EXIT_SUCCESS;
+}
+
+// The single-process collection (no --stage): resumable. It holds DIR's lock exclusively and
+// runs the separate jobs' stages in this process (the meshes and pairs of a stage in threads),
+// each embedding, refinement and map checkpointed in DIR/.parts as it ends; run again after a
+// kill, it skips what is there and gives the files of an uninterrupted run. A finished
+// collection (DIR/report.json, no DIR/.parts) run again is computed again, with a note on
+// stderr. When an embedding job fails (e.g. a mesh refuses the first tour), the collection runs
+// in memory instead (Orbifold_collection tries the other meshes' tours), as before: then it
+// writes its files only at the end. A data failure of a new run removes the files it wrote; an
+// I/O failure (disk full, unwritable folder) keeps the complete parts for a rerun.
+int run_collection_resumable(const Collection_job& job)
+{
+  const bool existed = folder_exists(job.dir);
+  Collection_lock lock(job.dir, true, true);
+  remove_parts_folder(job.parts() + ".removing"); // (a merge killed while removing the parts)
+  const bool resuming = folder_exists(job.parts());
+  std::ostringstream embed_log; // (on stderr once the embed stage is done: a failure is one line)
+  if(resuming)
+    embed_log << "  resuming the collection in " << job.dir << " from " << job.parts() << std::endl;
+  else if(regular_file_exists(job.dir + "/report.json"))
+    embed_log << "  note: " << job.dir << " holds a finished collection: computing it again" << std::endl;
+  // what a failed new run removes: the files it wrote
+  std::vector<std::string> outputs;
+  for(std::size_t i = 0; i < job.size(); ++i) outputs.push_back(job.obj_path(i));
+  if(job.all_pairs)
+    for(std::size_t a = 0; a < job.size(); ++a)
+      for(std::size_t b = 0; b < job.size(); ++b)
+        if(a != b) outputs.push_back(job.map_path(a, b));
+  std::vector<std::string> new_files;
+  for(const std::string& f : outputs)
+    if(!regular_file_exists(f)) new_files.push_back(f);
+  auto remove_written = [&] {
+    remove_parts_folder(job.parts());
+    for(const std::string& f : new_files) std::remove(f.c_str());
+    if(!existed) rmdir(job.dir.c_str());
+  };
+  const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  const std::pair<std::size_t, std::size_t> all(0, 1);
+  try {
+    run_collection_stage(job, "embed", all, threads, false, embed_log);
+  } catch(const Failure&) { // (as before: in memory, the other tours tried; its own message)
+    remove_parts_folder(job.parts());
+    for(const std::string& f : new_files) std::remove(f.c_str());
+    try {
+      return run_collection_in_memory(job);
+    } catch(const Failure&) {
+      if(!existed) rmdir(job.dir.c_str());
+      throw;
+    }
+  }
+  std::cerr << embed_log.str() << std::flush;
+  hot_tools::Collection_report r;
+  try {
+    if(job.refine > 0)
+      run_collection_stage(job, "refine", all, threads, false);
+    run_collection_stage(job, "maps", all, threads, false);
+    r = merge_collection(job);
+  } catch(const Failure&) {
+    if(!resuming)
+      remove_written();
+    throw;
+  }
+  std::cout << "landmark order:";
+  for(std::size_t i : r.order) std::cout << " " << i;
+  std::cout << " (" << (r.order_from == "given" ? std::string("the given order") : "the tour of " + r.order_from) << ")" << std::endl;
+  std::cout << "collection of " << job.size() << " meshes embedded" << (job.all_pairs ? " and mapped pairwise" : "") << "; " << r.triples
+            << " triples checked, cycle consistency " << r.cycle << "; wrote " << job.dir << std::endl;
+  return EXIT_SUCCESS;
+}
+
+int run_collection(int argc, char** argv)
+{
+  std::set<std::string> flags = repair_flags();
+  flags.insert("all-pairs");
+  flags.insert("progress"); // (accepted: the collection's per-mesh lines on stderr are its progress, always written)
+  const Options opt(argc, argv, 2, {"manifest", "out", "max-hole", "target-genus", "max-handle", "cone-orders", "stage", "shard", "order"}, flags,
+                    {"refine"});
+  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
+  Collection_job job;
+  job.manifest_path = opt.get("manifest");
+  job.dir = opt.get("out");
+  job.all_pairs = opt.has("all-pairs");
+  job.set_repair(parse_repair_options(opt));
+  job.orders = parse_cone_orders(opt);
+  job.order = parse_common_order(opt);
+  job.refine = refine;
+  const std::pair<std::size_t, std::size_t> shard = parse_shard(opt);
+  if(opt.has("shard") && !opt.has("stage"))
+    throw Usage_error{"--shard needs --stage embed, refine or maps (then --stage merge once)"};
+  job.entries = read_manifest(job.manifest_path);
+  if(opt.has("stage")) {
+    const std::string stage = opt.get("stage");
+    if(stage != "embed" && stage != "refine" && stage != "maps" && stage != "merge")
+      throw Usage_error{"--stage must be embed, refine, maps or merge, got '" + stage + "'"};
+    if(stage == "merge" && shard.second != 1)
+      throw Usage_error{"--stage merge runs once, without --shard"};
+    // shards of a stage share DIR; the merge has it alone
+    Collection_lock lock(job.dir, stage == "merge", stage == "embed");
+    if(stage == "merge")
+      remove_parts_folder(job.parts() + ".removing");
+    return run_collection_stage(job, stage, shard);
+  }
+  return run_collection_resumable(job);
 }
 
 // With --repair the landmarks are vertices of the input file: a landmark that falls on a vertex
@@ -1243,25 +1473,35 @@ std::vector<SM_vertex> input_vertices_only(const Surface_mesh& m, const hot_tool
 
 int run_landmarks(int argc, char** argv)
 {
-  const Options opt(argc, argv, 2, {"mesh", "count", "out", "max-hole", "target-genus", "max-handle"}, repair_flags());
+  const Options opt(argc, argv, 2, {"mesh", "count", "out", "max-hole", "target-genus", "max-handle"}, with_progress_flag(repair_flags()));
   const std::string mesh_path = opt.get("mesh"), out = opt.get("out");
   const long k = opt.get_int("count", 1, 100000);
   const hot_tools::Repair_options repair = parse_repair_options(opt);
+  Progress_line progress("landmarks", opt.has("progress"));
   Surface_mesh m;
   Input in;
+  progress.step("read");
   require(hot_tools::read_input_mesh(mesh_path, std::nullopt, repair, m, in.file));
+  progress.done("read");
+  if(in.file.repaired)
+    progress.clear(); // (a terminal's line, before stdout)
   print_repair(mesh_path, in);
   if(static_cast<std::size_t>(k) > num_vertices(m))
     throw Usage_error{"--count is larger than the number of vertices (" + std::to_string(num_vertices(m)) + ")"};
+  progress.step("select");
   std::vector<SM_vertex> lm = HOT::select_landmarks(m, static_cast<std::size_t>(k));
   if(lm.size() != static_cast<std::size_t>(k))
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "the boundary has fewer than " + std::to_string(k) + " vertices"};
   if(in.file.repaired)
     lm = input_vertices_only(m, in.file, lm);
+  progress.done("select");
+  progress.step("write");
   write_file_atomically(out, [&](std::ostream& os) {
     for(std::size_t i : file_indices(lm, in.file))
       os << i << "\n";
   });
+  progress.done("write");
+  progress.clear();
   std::cout << "wrote " << k << " landmarks of " << mesh_path << " to " << out << std::endl;
   return EXIT_SUCCESS;
 }

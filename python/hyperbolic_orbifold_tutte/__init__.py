@@ -13,7 +13,9 @@ writers, the same numbers.
     e.uv                                            # (m, 3, 2) Poincare points per corner
     e.report["certificate"]["bijective"]            # the report of `embed --report`
     e.write_obj("bear.obj")                         # the bytes of `embed --out`
-    e2 = hot.embed(V2, F2, lm2, order=e.landmark_order)
+    r = hot.map_meshes(V, F, lm, V2, F2, lm2)       # `map`: both embedded in one order, A onto B
+    images = hot.surface_points(r["faces"], r["bary"], V2, F2)  # where vertex i of A goes on B
+    e2 = hot.embed(V2, F2, lm2, order=e.landmark_order)  # (or in two steps)
     faces, bary = hot.map(e, e2)                    # as `map`'s MAP.txt
     d = hot.map_distortion(V, F, hot.surface_points(faces, bary, V2, F2))  # per-face distortion
     hot.collection("list.txt", "out", all_pairs=True, client=None)  # or a dask.distributed.Client
@@ -24,6 +26,9 @@ hot.InputError (also a ValueError) when the input or a parameter is wrong, a
 hot.ComputationError (also a RuntimeError) when the input was accepted but no result could be
 computed, certified or written; hot.error_classes gives the class of every code. Type stubs
 (__init__.pyi, _core.pyi, py.typed) come with the package, for mypy and editors.
+Array inputs may be any array-like (numpy arrays of any numeric dtype and memory layout,
+lists, tuples): C-contiguous float64 vertices and int64 indices are read in place, anything
+else is converted once; wrong shapes, non-numeric data or non-integer indices raise InputError.
 The computations release the GIL: embeddings of several meshes run in parallel in threads
 (concurrent.futures, Dask's threaded scheduler).
 """
@@ -31,7 +36,7 @@ The computations release the GIL: embeddings of several meshes run in parallel i
 import numpy as _np
 
 from ._core import (ComputationError, Embedding, Error, InputError, embed, error_classes, error_codes, map, map_distortion,
-                    read_mesh, select_landmarks)
+                    map_meshes, read_mesh, select_landmarks)
 from .collection import collection
 
 __all__ = [
@@ -45,6 +50,7 @@ __all__ = [
     "error_classes",
     "error_codes",
     "map",
+    "map_meshes",
     "read_mesh",
     "select_landmarks",
     "transfer",
@@ -55,6 +61,18 @@ __all__ = [
 # ---------------------------------------------------------------------------------------
 # maps (map() itself is in the C++ core)
 # ---------------------------------------------------------------------------------------
+
+def _as_array(a, what):
+    """`a` (any array-like) as a numpy array (no copy if it is one); InputError if numpy cannot
+    make a numeric array of it (a ragged list, strings)"""
+    try:
+        r = _np.asarray(a)
+    except (ValueError, TypeError) as e:
+        raise InputError("transfer: %s is not an array of numbers (%s)" % (what, e), "ERROR_WRONG_PARAMETER") from None
+    if r.dtype.kind not in "biuf":
+        raise InputError("transfer: %s must hold numbers, got dtype %s" % (what, r.dtype), "ERROR_WRONG_PARAMETER")
+    return r
+
 
 def transfer(faces, bary, F_b, values_b):
     """transfer(faces, bary, F_b, values_b) -> values on the source's vertices
@@ -67,12 +85,21 @@ def transfer(faces, bary, F_b, values_b):
     (mB, 3); values_b: array (nB,) or (nB, k) (a scalar or a vector per vertex of B,
     e.g. B's vertex positions VB, which gives the image points of the map).
     Returns a float array of shape (n,) or (n, k). Vectorised numpy; no loop in Python.
-    Raises InputError (code ERROR_WRONG_PARAMETER) on inconsistent shapes or indices.
+    Any array-like is accepted (lists, float32, int32, Fortran order: read through
+    numpy.asarray). Raises InputError (code ERROR_WRONG_PARAMETER) on inconsistent shapes or
+    indices, non-numeric data or non-integer indices.
+
+    Example:
+        >>> faces, bary = hot.map(a, b)
+        >>> colours_on_a = hot.transfer(faces, bary, FB, colours_on_b)  # (nA, 3) from (nB, 3)
     """
-    faces = _np.asarray(faces)
-    bary = _np.asarray(bary, dtype=_np.float64)
-    F_b = _np.asarray(F_b)
-    values_b = _np.asarray(values_b)
+    faces = _as_array(faces, "faces")
+    bary = _as_array(bary, "bary")
+    F_b = _as_array(F_b, "F_b")
+    values_b = _as_array(values_b, "values_b")
+    if not _np.issubdtype(bary.dtype, _np.number) or _np.issubdtype(bary.dtype, _np.complexfloating):
+        raise InputError("transfer: bary must hold real numbers, got %s" % bary.dtype, "ERROR_WRONG_PARAMETER")
+    bary = bary.astype(_np.float64, copy=False)
     if faces.ndim != 1 or bary.shape != (faces.shape[0], 3):
         raise InputError("transfer: faces must have shape (n,) and bary (n, 3), got %s and %s"
                     % (faces.shape, bary.shape), "ERROR_WRONG_PARAMETER")
@@ -102,5 +129,9 @@ def surface_points(faces, bary, V_b, F_b):
 
     The points of the target surface B where map() sends the source's vertices:
     transfer(faces, bary, F_b, V_b).
+
+    Example:
+        >>> r = hot.map_meshes(VA, FA, la, VB, FB, lb)
+        >>> images = hot.surface_points(r["faces"], r["bary"], VB, FB)  # (nA, 3)
     """
     return transfer(faces, bary, F_b, V_b)

@@ -14,6 +14,7 @@ from ._core import error_classes as error_classes
 from ._core import error_codes as error_codes
 from ._core import map as map
 from ._core import map_distortion as map_distortion
+from ._core import map_meshes as map_meshes
 from ._core import read_mesh as read_mesh
 from ._core import select_landmarks as select_landmarks
 from .collection import collection as collection
@@ -29,6 +30,7 @@ __all__ = [
     "error_classes",
     "error_codes",
     "map",
+    "map_meshes",
     "read_mesh",
     "select_landmarks",
     "transfer",

@@ -116,6 +116,22 @@ def map(source: Embedding, target: Embedding, *, unreliable: Literal[True],
 def map(source: Embedding, target: Embedding, *, unreliable: bool = False, refine: int = 0
         ) -> tuple[NDArray[np.int64], NDArray[np.float64]] | tuple[NDArray[np.int64], NDArray[np.float64], NDArray[np.int64]]: ...
 
+# map_meshes()'s result: map()'s arrays, the two embeddings and the landmark order used
+class _MeshMap(TypedDict):
+    faces: NDArray[np.int64]
+    bary: NDArray[np.float64]
+    unreliable: NDArray[np.int64] | None
+    source: Embedding
+    target: Embedding
+    landmark_order: NDArray[np.int64]
+    landmark_order_from: Literal["source", "target", "given"]
+    orders_tried: int
+    refused: list[str]
+
+def map_meshes(VA: ArrayLike, FA: ArrayLike, landmarks_a: _Indices, VB: ArrayLike, FB: ArrayLike, landmarks_b: _Indices, *,
+               orbifold: _Orbifold = "auto", weights: _Weights = "cotan", order: Literal["auto", "tsp", "given"] | _Indices = "auto",
+               cone_orders: _Indices | None = None, unreliable: bool = False, refine: int = 0) -> _MeshMap: ...
+
 class _DistortionSummary(TypedDict):
     p50: float
     p90: float

@@ -24,17 +24,31 @@ def _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, larges
 
 
 # The tasks (top-level functions: a Dask worker imports them by name). The map tasks take the
-# results of the embedding tasks of their two meshes only to run after them.
+# results of the embedding tasks of their two meshes only to run after them. A task run again
+# (Dask retries it when it failed, or when its worker died) skips a mesh or pair whose part is
+# complete in out_dir/.parts, and rewrites one left half-done (every file is renamed into place
+# only when complete).
+
+def _test_delay():
+    """a test-only hook: HOT_COLLECTION_TEST_DELAY seconds of sleep before each task (to kill a
+    worker while tasks run)"""
+    delay = float(_os.environ.get("HOT_COLLECTION_TEST_DELAY", "0") or 0)
+    if delay > 0:
+        _time.sleep(delay)
+
 
 def _embed_task(i, orbifold, landmarks, order, options):
+    _test_delay()
     return _core.collection_embed(i, orbifold, landmarks, order, **options)
 
 
 def _refine_task(i, options, *after):
+    _test_delay()
     return _core.collection_refine(i, **options)
 
 
 def _map_task(a, b, options, *after):
+    _test_delay()
     return _core.collection_map(a, b, **options)
 
 
@@ -94,19 +108,27 @@ def _drain(futures, done):
         raise
 
 
+# how many times Dask runs a task again after it raised (a task whose worker died is rescheduled
+# by Dask itself, up to its distributed.scheduler.allowed-failures, then fails with KilledWorker)
+_RETRIES = 2
+
+
 def _run_on_dask(plan, options, client, progress):
     import distributed
     token = _uuid.uuid4().hex[:8]
     order = (plan["orbifold"], plan["landmarks"], list(plan["order"]))
-    embeds = [client.submit(_embed_task, i, *order, options, key="hot-embed-%d-%s" % (i, token), pure=False)
+    embeds = [client.submit(_embed_task, i, *order, options, key="hot-embed-%d-%s" % (i, token), pure=False,
+                          retries=_RETRIES)
               for i in range(len(plan["meshes"]))]
     ready = embeds  # (what a map waits for: its meshes' embeddings, or their refinements)
     refines = []
     if options["refine"] > 0:
-        refines = [client.submit(_refine_task, i, options, embeds[0], embeds[i], key="hot-refine-%d-%s" % (i, token), pure=False)
+        refines = [client.submit(_refine_task, i, options, embeds[0], embeds[i], key="hot-refine-%d-%s" % (i, token), pure=False,
+                                 retries=_RETRIES)
                    for i in range(len(plan["meshes"]))]
         ready = refines
-    maps = [client.submit(_map_task, a, b, options, ready[a], ready[b], key="hot-map-%d-%d-%s" % (a, b, token), pure=False)
+    maps = [client.submit(_map_task, a, b, options, ready[a], ready[b], key="hot-map-%d-%d-%s" % (a, b, token), pure=False,
+                          retries=_RETRIES)
             for a, b in plan["pairs"]]
     what = {f.key: ("embed", i) for i, f in enumerate(embeds)}
     what.update({f.key: ("refine", i) for i, f in enumerate(refines)})
@@ -121,7 +143,13 @@ def _run_on_dask(plan, options, client, progress):
                 progress.refinement_done(x, seconds)
             else:
                 progress.map_done(x[0], x[1], seconds)
-        return client.submit(_merge_task, options, *maps, key="hot-merge-" + token, pure=False).result()
+        return client.submit(_merge_task, options, *maps, key="hot-merge-" + token, pure=False,
+                             retries=_RETRIES).result()
+    except distributed.KilledWorker as e:
+        client.cancel(embeds + refines + maps)
+        kind, x = what.get(getattr(e, "task", None) or (e.args[0] if e.args else None), ("task", "?"))
+        raise RuntimeError("the Dask workers running the %s task of %s died too often: %s (out_dir/.parts keeps the finished"
+                           " parts: run the collection again to resume)" % (kind, x, e)) from e
     except BaseException:
         client.cancel(embeds + refines + maps)
         raise
@@ -155,23 +183,51 @@ def collection(manifest, out_dir, all_pairs=False, client=None, cone_orders=None
     none), one task per mesh after the embeddings; the maps stay compositions through the one
     orbifold (cycle consistent). progress: a line on stderr per mesh embedded (and refined) and
     every 5% of the maps. A failure raises hot.Error (the first one, naming the mesh), and the
-    files this call wrote are removed.
+    files this call wrote are removed. Faults: every file is renamed into place only when
+    complete, and each task's part in out_dir/.parts marks it done, so a call interrupted (the
+    process killed) and made again with the same arguments resumes: it skips what is done, keeps
+    the parts if it fails again, and gives the files of an uninterrupted call. On Dask, a task
+    whose worker dies is run again on another (retries=2 for tasks that raise); a task whose
+    workers die too often raises RuntimeError naming it. out_dir is locked for the call (flock):
+    another collection into it raises RuntimeError.
     """
     options = _options(manifest, out_dir, all_pairs, cone_orders, repair, max_hole, largest_component, snap_landmarks, refine)
     plan = _core.collection_plan(**options)
     out = options["out_dir"]
     before = set(_os.listdir(out)) if _os.path.isdir(out) else None
+    resuming = _os.path.isdir(_os.path.join(out, ".parts"))
     report = _Progress(progress, plan["meshes"], plan["pairs"])
+    _os.makedirs(out, exist_ok=True)
+    lock = _lock_folder(out)
     try:
-        if client is None:
-            _run_in_threads(plan, options, threads, report)
-        else:
-            _run_on_dask(plan, options, client, report)
-    except BaseException:
-        _remove_new_files(out, before)
-        raise
+        try:
+            if client is None:
+                _run_in_threads(plan, options, threads, report)
+            else:
+                _run_on_dask(plan, options, client, report)
+        except BaseException:
+            if not resuming:
+                _remove_new_files(out, before)
+            raise
+    finally:
+        _os.close(lock)
     with open(_os.path.join(out, "report.json")) as f:
         return _json.load(f)
+
+
+def _lock_folder(out):
+    """out's lock, as the command line's collection takes it (flock on the folder itself,
+    exclusive; released when the process ends, killed or not): a second collection into the same
+    folder, or a command-line run or stage job, refuses while this one runs"""
+    import fcntl
+    fd = _os.open(out, _os.O_RDONLY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        _os.close(fd)
+        raise RuntimeError("'%s' is in use by another collection run (it holds its lock): wait for it to end, or use another"
+                           " out_dir" % out) from None
+    return fd
 
 
 def _remove_new_files(out, before):

@@ -12,6 +12,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
@@ -34,24 +35,35 @@ namespace hot_python {
 // embed
 // ---------------------------------------------------------------------------------------
 
+namespace {
+
+// the first step of compute_embedding(): `e`'s mesh built from (V, F) and checked, its type,
+// genus and landmarks (checked as read_and_check_landmarks() checks a landmark file's indices)
+void read_mesh_and_landmarks(const double* V, std::size_t n, const std::int64_t* F, std::size_t m, std::size_t k,
+                             const std::vector<std::size_t>& ids, const Embed_options& opt, Embedding& e)
+{
+  Surface_mesh& mesh = e.mesh;
+  HOT::Mesh_info info;
+  mesh_from_arrays(V, n, F, m, k, opt.type, mesh, info);
+  e.type = info.type;
+  e.genus = e.type == HOT::Sphere_type ? HOT::internal::closed_mesh_genus(mesh) : 0;
+  for(int p : opt.cone_orders)
+    if(p < 2 || p > 1000000)
+      fail(HOT::ERROR_WRONG_PARAMETER, "cone_orders must be integers from 2 to 1000000 (one per landmark, e.g. [2, 3, 7])");
+  const std::size_t minimum =
+    HOT::minimum_number_of_landmarks_of(mesh, e.type, hot_cli::minimum_landmarks(opt.cone_orders));
+  require(HOT::check_landmarks(mesh, ids, e.type, e.landmarks, minimum));
+  e.landmark_ids = ids;
+}
+
+} // namespace
+
 Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64_t* F, std::size_t m, std::size_t k,
                                 const std::vector<std::size_t>& ids, const Embed_options& opt)
 {
   auto e = std::make_shared<Embedding>();
   Surface_mesh& mesh = e->mesh;
-  HOT::Mesh_info info;
-  mesh_from_arrays(V, n, F, m, k, opt.type, mesh, info);
-  e->type = info.type;
-  e->genus = e->type == HOT::Sphere_type ? HOT::internal::closed_mesh_genus(mesh) : 0;
-
-  // the landmarks, as read_and_check_landmarks() checks a landmark file's indices
-  for(int p : opt.cone_orders)
-    if(p < 2 || p > 1000000)
-      fail(HOT::ERROR_WRONG_PARAMETER, "cone_orders must be integers from 2 to 1000000 (one per landmark, e.g. [2, 3, 7])");
-  const std::size_t minimum =
-    HOT::minimum_number_of_landmarks_of(mesh, e->type, hot_cli::minimum_landmarks(opt.cone_orders));
-  require(HOT::check_landmarks(mesh, ids, e->type, e->landmarks, minimum));
-  e->landmark_ids = ids;
+  read_mesh_and_landmarks(V, n, F, m, k, ids, opt, *e);
 
   // the order: the type's default, the library's tour, as given, or explicit
   hot_cli::Embed_job job;
@@ -144,17 +156,9 @@ Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64
 
 namespace {
 
-Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, const std::string& weights,
-                    py::handle order, py::handle cone_orders, bool recentre, py::handle cut_graph, const std::string& name)
+// embed()'s and map_meshes()' `order` and `cone_orders` into `opt`
+void parse_order_options(py::handle order, py::handle cone_orders, Embed_options& opt)
 {
-  const Double_array Va = vertex_array(V);
-  const Index_array Fa = face_array(F);
-  const std::vector<std::size_t> ids = index_list(landmarks, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
-  Embed_options opt;
-  opt.type = parse_orbifold(orbifold);
-  opt.weights = weights;
-  opt.recentre = recentre;
-  opt.name = name;
   if(py::isinstance<py::str>(order)) {
     opt.order = order.cast<std::string>();
     if(opt.order != "auto" && opt.order != "tsp" && opt.order != "given")
@@ -167,6 +171,20 @@ Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std:
   if(!cone_orders.is_none())
     for(std::int64_t p : int_list(cone_orders, "cone_orders"))
       opt.cone_orders.push_back(p < 2 || p > 1000000 ? 0 : static_cast<int>(p)); // (0: refused below)
+}
+
+Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, const std::string& weights,
+                    py::handle order, py::handle cone_orders, bool recentre, py::handle cut_graph, const std::string& name)
+{
+  const Double_array Va = vertex_array(V);
+  const Index_array Fa = face_array(F);
+  const std::vector<std::size_t> ids = index_list(landmarks, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
+  Embed_options opt;
+  opt.type = parse_orbifold(orbifold);
+  opt.weights = weights;
+  opt.recentre = recentre;
+  opt.name = name;
+  parse_order_options(order, cone_orders, opt);
   if(!cut_graph.is_none()) {
     opt.has_cut_graph = true;
     for(py::handle path : cut_graph)
@@ -319,8 +337,11 @@ with the given landmarks at the orbifold's cones, as the command line's `embed` 
 same reader checks, the same call of the library: the same numbers, bit for bit), and
 returns an Embedding. The computation releases the GIL (threads run in parallel).
 
-V: (n, 3) real array (float64 C-contiguous is read in place; others are converted).
-F: (m, 3) integer array of vertex indices (int64 C-contiguous is read in place).
+V: (n, 3) real array; F: (m, 3) integer array of vertex indices. Any array-like: a C-
+  contiguous float64 V and int64 F are read in place (no copy); anything else (float32 or
+  integer V, int32 F, Fortran order, strided views, lists, tuples) is converted once. A
+  wrong shape, non-numeric data, a real-valued F (even of whole numbers) or a NaN
+  coordinate raises InputError.
 landmarks: vertex indices (a sequence or 1-D integer array): on a closed genus-0 mesh at
   least 5 (3 with cone_orders), genus 1 at least 1, genus 2 or more any number (also
   none); on a disk at least 5 boundary vertices, in boundary order.
@@ -340,7 +361,12 @@ cut_graph: genus g >= 1: the graph to cut along (vertex paths, e.g. another embe
 name: the report's "mesh" field.
 
 Every failure (bad input, too few or duplicate landmarks, a non-manifold mesh, no
-certified result, ...) raises Error with the library's message.)doc");
+certified result, ...) raises Error with the library's message.
+
+Example:
+    >>> V, F = hot.read_mesh("bear.off")
+    >>> e = hot.embed(V, F, hot.select_landmarks(V, F, 7))
+    >>> e.uv.shape, e.report["certificate"]["bijective"]   # ((m, 3, 2), True))doc");
 }
 
 // ---------------------------------------------------------------------------------------
@@ -494,10 +520,214 @@ py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable, i
   return py::make_tuple(f, b, owning_array(std::move(flagged), {u}));
 }
 
+// the landmark orders map_meshes() tries in turn, best first, as the command line's map chooses
+// them (map_cone_orders() of tools/hyperbolic_orbifold_tutte.cpp, from the library's
+// compute_landmark_distances() and rank_landmark_tours()): sphere type of genus 0 with "auto"
+// the source's and the target's tours ranked (the source's on ties), with "tsp" the source's
+// tour alone; "given", the disk type and genus g >= 1 the given order; an explicit order alone
+// (mesh npos: neither mesh's tour)
+std::vector<HOT::Landmark_order_candidate> map_meshes_orders(const Embed_options& opt, const Embedding& A, const Embedding& B)
+{
+  HOT::Landmark_order_candidate given;
+  given.mesh = std::size_t(-1);
+  given.longest_ratio = 1;
+  if(opt.order == "explicit") {
+    given.order = opt.explicit_order; // (checked by compute_embedding())
+    return {given};
+  }
+  for(std::size_t i = 0; i < A.landmarks.size(); ++i) given.order.push_back(i);
+  if(A.type != HOT::Sphere_type || A.genus != 0 || opt.order == "given")
+    return {given};
+  std::vector<std::vector<std::vector<double> > > D(1, HOT::compute_landmark_distances(A.mesh, A.landmarks, get(CGAL::vertex_point, A.mesh)));
+  if(opt.order != "tsp")
+    D.push_back(HOT::compute_landmark_distances(B.mesh, B.landmarks, get(CGAL::vertex_point, B.mesh)));
+  const std::vector<HOT::Landmark_order_candidate> r = HOT::rank_landmark_tours(D);
+  if(r.empty())
+    fail(HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the " +
+                                  std::string(HOT::internal::is_finite_distance_matrix(D[0]) ? "target" : "source"));
+  return r;
+}
+
+struct Mesh_map
+{
+  Embedding_ptr A, B;
+  HOT::Landmark_order_candidate chosen;
+  std::vector<std::string> refusals;
+  std::vector<std::int64_t> faces, flagged;
+  std::vector<double> bary;
+};
+
+// map_meshes() without Python: the command line's run_map() on arrays (the order choice, the
+// embeddings in that order, the next order when one is refused for a reason the order may cause,
+// the map)
+void compute_mesh_map(const Double_array& VA, const Index_array& FA, const std::vector<std::size_t>& ida, const Double_array& VB,
+                      const Index_array& FB, const std::vector<std::size_t>& idb, const Embed_options& opt, bool unreliable, int refine,
+                      Mesh_map& r)
+{
+  const auto rows = [](const auto& a) { return static_cast<std::size_t>(a.shape(0)); };
+  const auto cols = [](const auto& a) { return static_cast<std::size_t>(a.shape(1)); };
+  Embedding a0, b0; // the meshes and landmarks, read and checked (for the order choice)
+  try {
+    read_mesh_and_landmarks(VA.data(), rows(VA), FA.data(), rows(FA), cols(FA), ida, opt, a0);
+  } catch(Hot_error& e) {
+    e.message = "the source (VA, FA, landmarks_a): " + e.message;
+    throw;
+  }
+  try {
+    read_mesh_and_landmarks(VB.data(), rows(VB), FB.data(), rows(FB), cols(FB), idb, opt, b0);
+  } catch(Hot_error& e) {
+    e.message = "the target (VB, FB, landmarks_b): " + e.message;
+    throw;
+  }
+  // (the command line's check_map_pair(), before the order)
+  if(a0.type != b0.type)
+    fail(HOT::ERROR_WRONG_TOPOLOGY, "the source is " + std::string(a0.type == HOT::Sphere_type ? "closed" : "a disk") +
+                                      " but the target is " + (b0.type == HOT::Sphere_type ? "closed" : "a disk"));
+  if(ida.size() != idb.size())
+    fail(HOT::ERROR_WRONG_PARAMETER, "the source has " + std::to_string(ida.size()) + " landmarks and the target " + std::to_string(idb.size()) +
+                                       " (landmark i of the source corresponds to landmark i of the target)");
+  if(a0.genus != b0.genus)
+    fail(HOT::ERROR_WRONG_TOPOLOGY, "the source has genus " + std::to_string(a0.genus) + " and the target genus " + std::to_string(b0.genus));
+  // genus g >= 1: the target is cut along the source's cut graph, which needs the same faces
+  // (the command line's map_cut_graphs() without cut graph files)
+  const bool genus_cut = a0.genus > 0;
+  if(genus_cut && (rows(VA) != rows(VB) || rows(FA) != rows(FB) || cols(FA) != cols(FB) ||
+                   !std::equal(FA.data(), FA.data() + FA.size(), FB.data())))
+    fail(HOT::ERROR_WRONG_PARAMETER, "the meshes have genus " + std::to_string(a0.genus) +
+                                       " and not the same faces: a map between them depends on corresponding cut graphs;"
+                                       " embed both with corresponding cut_graph= and call map()");
+  const std::vector<HOT::Landmark_order_candidate> candidates = map_meshes_orders(opt, a0, b0);
+  for(std::size_t c = 0; c < candidates.size(); ++c) {
+    Embed_options o = opt;
+    o.order = "explicit";
+    o.explicit_order = candidates[c].order;
+    const char* embedding = "source"; // (the one being embedded)
+    try {
+      const auto embed_a = [&] {
+        embedding = "source";
+        r.A = compute_embedding(VA.data(), rows(VA), FA.data(), rows(FA), cols(FA), ida, o);
+      };
+      const auto embed_b = [&] {
+        embedding = "target";
+        Embed_options ob = o;
+        if(genus_cut) {
+          ob.has_cut_graph = true;
+          ob.cut_graph = r.A->stats.cut_graph;
+        }
+        r.B = compute_embedding(VB.data(), rows(VB), FB.data(), rows(FB), cols(FB), idb, ob);
+      };
+      // (with a choice, the mesh whose tour it is not first: the more likely to refuse it)
+      if(candidates.size() > 1 && candidates[c].mesh == 0) {
+        embed_b();
+        embed_a();
+      } else {
+        embed_a();
+        embed_b();
+      }
+      r.chosen = candidates[c];
+      break;
+    } catch(const Hot_error& f) {
+      if(candidates.size() == 1 || !HOT::is_landmark_order_failure(f.code))
+        throw;
+      const std::string origin = candidates[c].mesh == 0 ? "the source's tour" : candidates[c].mesh == 1 ? "the target's tour" : "the given order";
+      std::string list;
+      for(std::size_t i : candidates[c].order) list += (list.empty() ? "" : " ") + std::to_string(i);
+      r.refusals.push_back(origin + " (" + list + ") was refused by the " + std::string(embedding) + ": " + f.message);
+      r.A.reset();
+      r.B.reset();
+      if(c + 1 == candidates.size()) {
+        std::string why;
+        for(const std::string& x : r.refusals) why += (why.empty() ? "" : "; ") + x;
+        fail(f.code, "no landmark order works for both meshes (" + std::to_string(candidates.size()) + " tried): " + why);
+      }
+    }
+  }
+  map_embeddings(*r.A, *r.B, r.faces, r.bary, unreliable ? &r.flagged : nullptr, refine);
+}
+
+py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::handle VB, py::handle FB, py::handle landmarks_b,
+                    const std::string& orbifold, const std::string& weights, py::handle order, py::handle cone_orders, bool unreliable,
+                    int refine)
+{
+  const Double_array Va = vertex_array(VA, "VA"), Vb = vertex_array(VB, "VB");
+  const Index_array Fa = face_array(FA, "FA"), Fb = face_array(FB, "FB");
+  const std::vector<std::size_t> ida = index_list(landmarks_a, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
+  const std::vector<std::size_t> idb = index_list(landmarks_b, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
+  Embed_options opt;
+  opt.type = parse_orbifold(orbifold);
+  opt.weights = weights;
+  parse_order_options(order, cone_orders, opt);
+  if(refine < 0)
+    fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
+  Mesh_map r;
+  {
+    py::gil_scoped_release release;
+    compute_mesh_map(Va, Fa, ida, Vb, Fb, idb, opt, unreliable, refine, r);
+  }
+  const py::ssize_t n = static_cast<py::ssize_t>(r.faces.size()), u = static_cast<py::ssize_t>(r.flagged.size());
+  py::dict d;
+  d["faces"] = owning_array(std::move(r.faces), {n});
+  d["bary"] = owning_array(std::move(r.bary), {n, 3});
+  d["unreliable"] = unreliable ? py::object(owning_array(std::move(r.flagged), {u})) : py::object(py::none());
+  d["source"] = r.A;
+  d["target"] = r.B;
+  d["landmark_order"] = int64_array(r.A->order);
+  d["landmark_order_from"] = r.chosen.mesh == 0 ? "source" : r.chosen.mesh == 1 ? "target" : "given";
+  d["orders_tried"] = r.refusals.size() + 1;
+  py::list refused;
+  for(const std::string& x : r.refusals) refused.append(x);
+  d["refused"] = refused;
+  return d;
+}
+
 } // namespace
 
 void register_maps(py::module_& m)
 {
+  m.def("map_meshes", &map_meshes, py::arg("VA"), py::arg("FA"), py::arg("landmarks_a"), py::arg("VB"), py::arg("FB"), py::arg("landmarks_b"),
+        py::kw_only(), py::arg("orbifold") = "auto", py::arg("weights") = "cotan", py::arg("order") = "auto",
+        py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0,
+        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0) -> dict
+
+Maps mesh A = (VA, FA) onto mesh B = (VB, FB) in one call, as the command line's `map`
+does: landmark i of landmarks_a corresponds to landmark i of landmarks_b; both meshes are
+embedded in one landmark order chosen as `map --order auto` chooses it, then A is mapped
+onto B (map()). Releases the GIL.
+
+VA, VB: (n, 3) real arrays; FA, FB: (m, 3) integer arrays; landmarks_a, landmarks_b:
+  vertex indices, as many on both. Any array-like is accepted (see embed()).
+orbifold, weights, cone_orders: as embed()'s, for both meshes (cone_orders[i] is the
+  order of the cone of landmark i of both).
+order: "auto" (sphere type of genus 0: the source's landmark tour or the target's, the one
+  whose cut is the least longer than each mesh's own tour on the mesh where it is the most
+  so (rank_landmark_tours(), the source's on ties); if a mesh refuses it (the cut, the
+  solver or the certificate fails), the other one; the disk type and genus g >= 1: the
+  given order), "tsp" (the source's tour only), "given" (the order of the landmarks), or
+  a sequence of landmark positions (a permutation, as embed()'s order).
+unreliable, refine: as map()'s.
+
+Returns a dict (the map() result and how it was made):
+  "faces", "bary": map()'s result (int64 (nA,), float64 (nA, 3)): vertex i of A goes to
+      bary[i] @ VB[FB[faces[i]]] (surface_points(faces, bary, VB, FB));
+  "unreliable": with unreliable=True, map()'s third array; else None;
+  "source", "target": the two Embedding objects (each certified);
+  "landmark_order": the order used (int64 array of landmark positions, the embeddings'
+      landmark_order); "landmark_order_from": "source", "target" (whose tour it is) or
+      "given"; "orders_tried": 1, or 2 when the first order was refused; "refused": the
+      refusals' messages (a list of str, empty when the first order was taken).
+The same numbers as the two-step call embed(VA, FA, landmarks_a, order=o),
+embed(VB, FB, landmarks_b, order=o), map() with o = the returned landmark_order.
+Genus g >= 1: B must have A's faces (a deformed copy): it is cut along A's cut graph.
+
+Bad input (arrays, landmarks, meshes of different types, genera or numbers of landmarks)
+raises InputError, prefixed by "the source" or "the target" for a mesh's own checks; an
+embedding or map that cannot be computed, ComputationError.
+
+Example:
+    >>> r = hot.map_meshes(VA, FA, la, VB, FB, lb)
+    >>> images = hot.surface_points(r["faces"], r["bary"], VB, FB)  # (nA, 3) points of B
+    >>> r["landmark_order_from"], r["source"].landmark_order)doc");
+
   m.def("map", &map, py::arg("source"), py::arg("target"), py::kw_only(), py::arg("unreliable") = false, py::arg("refine") = 0,
         R"doc(map(source, target, *, unreliable=False, refine=0) -> (faces, bary) or (faces, bary, unreliable_vertices)
 
@@ -510,9 +740,9 @@ line's MAP.txt. The point of B is bary[i] @ VB[FB[faces[i]]] (see transfer()).
 
 Both embeddings must be of one orbifold with corresponding cones: the same type, genus,
 number of landmarks, cone orders and cone order (landmark_order). The command line's map
-uses the source's landmark tour for both meshes; here embed the target with
-order=source.landmark_order (and, for genus g >= 1 on a deformed copy,
-cut_graph=source.cut_graph). Anything else raises Error saying what differs. Releases
+chooses one landmark order for both meshes; map_meshes() does the same from the arrays in
+one call. Here embed the target with order=source.landmark_order (and, for genus g >= 1 on
+a deformed copy, cut_graph=source.cut_graph). Anything else raises Error saying what differs. Releases
 the GIL.
 
 unreliable=True also returns the vertices of A whose images the map cannot resolve (int64

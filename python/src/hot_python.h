@@ -13,7 +13,8 @@
 //
 // Areas and their files:
 //   register_errors, register_io (read_mesh, select_landmarks)      module.cpp
-//   register_embedding (embed, Embedding), register_maps (map)      embedding.cpp
+//   register_embedding (embed, Embedding), register_maps (map,      embedding.cpp
+//     map_meshes: the CLI's map on arrays, its landmark order choice)
 //   register_collection (the jobs of collection())                  collection.cpp
 //   register_distortion (map_distortion)                            distortion.cpp
 // compute_embedding() and map_embeddings() (embedding.cpp) are the embed and map of the module
@@ -114,12 +115,20 @@ py::array owning_array(std::vector<T>&& v, std::vector<py::ssize_t> shape)
   return py::array(py::dtype::of<T>(), std::move(shape), p->data(), owner);
 }
 
+// Every array input of the module is read by these, once (`what` names it in messages):
+// `obj` is any array-like (a numpy array of any numeric dtype and memory layout, a list, a
+// tuple). A C-contiguous float64 (vertices) or int64 (indices) array is read in place (no
+// copy); anything else is converted once (float32, integers, Fortran order, strided views,
+// lists). Wrong shapes, non-numeric data, ragged lists and, for indices, a dtype that is not
+// an integer one (a float array, even of whole numbers) fail with ERROR_WRONG_PARAMETER
+// (InputError). NaN coordinates are refused by the mesh's checks (mesh_from_arrays()).
+
 // `obj` as a C-contiguous float64 array of shape (n, 3): read in place when it is one already
 // (no copy), converted otherwise
-Double_array vertex_array(py::handle obj);
-// `obj` as a C-contiguous int64 array of shape (m, k): integers only (read in place when
-// already C-contiguous int64)
-Index_array face_array(py::handle obj);
+Double_array vertex_array(py::handle obj, const char* what = "V");
+// `obj` as a C-contiguous int64 array of shape (m, k): an integer dtype only, read
+// in place when already C-contiguous int64
+Index_array face_array(py::handle obj, const char* what = "F");
 // `obj` (a sequence or 1-D array of integers, possibly empty) as integers; `what` names it in
 // messages ("cone_orders")
 std::vector<std::int64_t> int_list(py::handle obj, const char* what);

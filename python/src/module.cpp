@@ -239,9 +239,18 @@ void register_errors(py::module_& m)
 
 namespace {
 
-py::array as_numpy_array(py::handle obj)
+// `obj` (any array-like: a numpy array of any dtype and memory layout, a list, a tuple) as a
+// numpy array, without a copy when it is one already; what numpy cannot make an array of (a
+// ragged list, ...) is an InputError naming `what`
+py::array as_numpy_array(py::handle obj, const char* what)
 {
-  return py::module_::import("numpy").attr("asarray")(obj);
+  try {
+    return py::module_::import("numpy").attr("asarray")(obj);
+  } catch(py::error_already_set& e) {
+    if(!e.matches(PyExc_ValueError) && !e.matches(PyExc_TypeError))
+      throw;
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " is not an array of numbers (" + std::string(py::str(e.value())) + ")");
+  }
 }
 
 std::string shape_of(const py::array& a)
@@ -259,51 +268,62 @@ char kind_of(const py::array& a)
   return a.dtype().kind();
 }
 
-} // namespace
-
-Double_array vertex_array(py::handle obj)
+std::string dtype_of(const py::array& a)
 {
-  const py::array a = as_numpy_array(obj);
-  if(a.ndim() != 2 || a.shape(1) != 3)
-    fail(HOT::ERROR_WRONG_PARAMETER, "V must be an array of shape (n, 3) (one row x y z per vertex), got shape " + shape_of(a));
+  return std::string(py::str(a.dtype()));
+}
+
+// `a` as C-contiguous int64: an integer array of any width or byte order (read in place when
+// it is C-contiguous int64 already, converted otherwise); a real array is refused even when its
+// values are whole numbers (faces and landmarks are indices: 2.5 or NaN is a mistake upstream,
+// and a silent truncation would hide it)
+Index_array integer_array(const py::array& a, const std::string& what, const char* holds)
+{
   const char kind = kind_of(a);
-  if(kind != 'f' && kind != 'i' && kind != 'u')
-    fail(HOT::ERROR_WRONG_PARAMETER, std::string("V must hold real numbers, got dtype '") + std::string(py::str(a.dtype())) + "'");
-  // (no copy when `a` is a C-contiguous float64 array already: ensure() returns it)
-  Double_array d = Double_array::ensure(a);
+  if(kind != 'i' && kind != 'u' && a.size() > 0)
+    fail(HOT::ERROR_WRONG_PARAMETER, what + " must hold " + holds + ", got dtype '" + dtype_of(a) + "'" +
+                                       (kind == 'f' ? " (convert with .astype(np.int64) if the values are whole numbers)" : ""));
+  Index_array d = Index_array::ensure(a);
   if(!d)
-    fail(HOT::ERROR_WRONG_PARAMETER, "V could not be converted to float64");
+    fail(HOT::ERROR_WRONG_PARAMETER, what + " could not be converted to int64");
   return d;
 }
 
-Index_array face_array(py::handle obj)
+} // namespace
+
+Double_array vertex_array(py::handle obj, const char* what)
 {
-  const py::array a = as_numpy_array(obj);
-  if(a.ndim() != 2)
-    fail(HOT::ERROR_WRONG_PARAMETER, "F must be an array of shape (m, 3) (one row of vertex indices per face), got shape " + shape_of(a));
+  const py::array a = as_numpy_array(obj, what);
+  if(a.ndim() != 2 || a.shape(1) != 3)
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " must be an array of shape (n, 3) (one row x y z per vertex), got shape " + shape_of(a));
   const char kind = kind_of(a);
-  if(kind != 'i' && kind != 'u' && a.size() > 0)
-    fail(HOT::ERROR_WRONG_PARAMETER, std::string("F must hold integer vertex indices, got dtype '") + std::string(py::str(a.dtype())) + "'");
-  Index_array d = Index_array::ensure(a);
+  if(kind != 'f' && kind != 'i' && kind != 'u')
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " must hold real numbers, got dtype '" + dtype_of(a) + "'");
+  // (no copy when `a` is a C-contiguous float64 array already: ensure() returns it; else one
+  // converted copy: float32, integers, Fortran order, strides)
+  Double_array d = Double_array::ensure(a);
   if(!d)
-    fail(HOT::ERROR_WRONG_PARAMETER, "F could not be converted to int64");
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " could not be converted to float64");
   return d;
+}
+
+Index_array face_array(py::handle obj, const char* what)
+{
+  const py::array a = as_numpy_array(obj, what);
+  if(a.ndim() != 2)
+    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " must be an array of shape (m, 3) (one row of vertex indices per face), got shape " + shape_of(a));
+  return integer_array(a, what, "integer vertex indices");
 }
 
 std::vector<std::int64_t> int_list(py::handle obj, const char* what)
 {
-  const py::array a = as_numpy_array(obj);
+  const py::array a = as_numpy_array(obj, what);
   std::vector<std::int64_t> r;
   if(a.size() == 0)
     return r;
   if(a.ndim() != 1)
     fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " must be a sequence of integers (one dimension), got shape " + shape_of(a));
-  const char kind = kind_of(a);
-  if(kind != 'i' && kind != 'u')
-    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " must hold integers, got dtype '" + std::string(py::str(a.dtype())) + "'");
-  const Index_array d = Index_array::ensure(a);
-  if(!d)
-    fail(HOT::ERROR_WRONG_PARAMETER, std::string(what) + " could not be converted to int64");
+  const Index_array d = integer_array(a, what, "integers");
   r.assign(d.data(), d.data() + d.size());
   return r;
 }
@@ -505,7 +525,11 @@ repair: prepares the mesh first as the command line's --repair does (merges
   mesh's, in its own vertex order; with return_file_index=True a third array gives,
   for every vertex of V, its number in the command line's files (the file's vertex,
   or a number after them for a vertex the repair added). A clean mesh is returned as
-  without repair.)doc");
+  without repair.
+
+Example:
+    >>> V, F = hot.read_mesh("bear.off")           # (n, 3) float64, (m, 3) int64
+    >>> V, F = hot.read_mesh("scan.ply", repair=True, largest_component=True))doc");
 
   m.def("select_landmarks", &select_landmarks, py::arg("V"), py::arg("F"), py::arg("k"),
         R"doc(select_landmarks(V, F, k)
@@ -516,8 +540,13 @@ mesh gets farthest-point samples on graph distance; a mesh with a boundary gets 
 vertices of its longest boundary loop spaced evenly by arc length, in boundary order
 (usable as disk-type corners).
 
-The mesh is built and checked as `embed` builds it; errors raise Error (also when k
-is larger than the number of vertices, or than the boundary's).)doc");
+The mesh is built and checked as `embed` builds it (V and F: any array-like, as embed()
+reads them); errors raise Error (also when k is larger than the number of vertices, or
+than the boundary's).
+
+Example:
+    >>> lm = hot.select_landmarks(V, F, 7)          # int64 vertex indices
+    >>> e = hot.embed(V, F, lm))doc");
 }
 
 } // namespace hot_python

@@ -115,6 +115,8 @@ public:
   typedef typename boost::graph_traits<Triangle_mesh>::edge_descriptor TM_edge_descriptor;
   /// user edge weights: a positive number per edge of the underlying mesh
   typedef std::function<double(const TM_edge_descriptor&)> Edge_weight_function;
+  /// a progress report: the phase's name and the fraction of it done, see `set_progress()`
+  typedef std::function<void(const char* phase, double fraction)> Progress_function;
 
   /// \param type the orbifold's topology
   /// \param weights the edge weights
@@ -167,6 +169,17 @@ public:
   /// `Weight_type`; each must be positive and finite (else `ERROR_WRONG_PARAMETER`).
   /// An empty function restores the `Weight_type`.
   void set_edge_weights(const Edge_weight_function& w) { settings_.user_weights = w; }
+  /// calls `f(phase, fraction)` during `parameterize()` (default: none), from the calling
+  /// thread, for the phases `"initialization"` (the flat problem, its weights and the Euclidean
+  /// Tutte initialisation), `"optimization"` (Newton) and `"certificate"` (the certificate and
+  /// the mends where it fails), in this order. Each phase is told 0 when it starts and 1 when
+  /// it ends; in between, `"optimization"` is told after every accepted Newton step the
+  /// relative gradient norm's progress from its start value \f$g_0\f$ towards the tolerance
+  /// \f$t\f$ on a log scale, \f$\log(g_0/g)/\log(g_0/t)\f$ clamped to \f$[0,1]\f$ and never less
+  /// than before (so the fractions of a phase never decrease). A phase that fails (an error
+  /// returned) is not told 1 and no later phase is told. The report only reads the state:
+  /// the result is the same, to the bit, with or without it. An empty function: none.
+  void set_progress(const Progress_function& f) { settings_.progress = f; }
   /// allows the result to be written in a moved frame (default `false`). A part of the mesh
   /// far from every landmark (a long protrusion) shrinks exponentially in the embedding, by
   /// a factor e per radius of a tube's length: past about 33 radii its triangles are below

@@ -23,6 +23,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -104,6 +105,15 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     \cgalParamDefault{`false`} \cgalParamNEnd
   \cgalParamNBegin{embedding_statistics} \cgalParamDescription{an `Embedding_statistics*` filled on return}
     \cgalParamDefault{none} \cgalParamNEnd
+  \cgalParamNBegin{progress} \cgalParamDescription{a callable `void(const char* phase, double fraction)`
+    (stored as a `std::function`), called from the calling thread with the progress of the phases
+    `"input"` (the checks and the landmark order), `"cut"` (the cut through the landmarks and the seam mesh),
+    `"initialization"`, `"optimization"` and `"certificate"` (`Hyperbolic_orbifold_Tutte_parameterizer_3::set_progress()`),
+    in this order: each phase is told 0 when it starts and 1 when it ends, `"optimization"` also after every
+    accepted Newton step (the gradient norm's progress towards the tolerance on a log scale); the fractions
+    of a phase never decrease. A failure ends the reports (its phase is not told 1). Same result, to the
+    bit, with or without it}
+    \cgalParamDefault{none} \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \return `OK`, or the specific reason of the failure (see `Error_code`); details in
@@ -133,6 +143,14 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   const auto t0 = Clock::now();
 
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, tm));
+  std::function<void(const char*, double)> progress; // (empty: no report)
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::progress_t>::value)
+    progress = get_parameter(np, internal_np::progress);
+  auto tell = [&progress](const char* phase, double fraction) {
+    if(progress)
+      progress(phase, fraction);
+  };
+  tell("input", 0.0);
 
   // 1. prepare: the orbifold type and the mesh's checks; the landmarks and their order
   const std::vector<int> orders = choose_parameter(get_parameter(np, internal_np::cone_orders), std::vector<int>());
@@ -156,6 +174,10 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
       for(std::size_t i : st.landmark_order)
         ordered_orders.push_back(orders[i]);
   }
+  if(r) {
+    tell("input", 1.0);
+    tell("cut", 0.0);
+  }
   // 2. cut: the seam mesh (genus g >= 1: along the given cut graph, or one computed here)
   std::vector<std::vector<vertex_descriptor> > cut_paths =
     choose_parameter(get_parameter(np, internal_np::cut_graph), std::vector<std::vector<vertex_descriptor> >());
@@ -168,6 +190,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   if(!r)
     return fail(r.code, r.message);
   const double time_cut = std::chrono::duration<double>(Clock::now() - t0).count();
+  tell("cut", 1.0);
 
   // 3. solve, certify and mend (the parameterizer runs the pipeline's solve stage)
   typedef Hyperbolic_orbifold_Tutte_parameterizer_3<Mesh> Parameterizer;
@@ -181,6 +204,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
                                                          static_cast<std::size_t>(internal::default_multigrid_from)));
   parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
   parameterizer.set_cone_orders(ordered_orders);
+  parameterizer.set_progress(progress);
   if(genus > 0) // the tile's corner 0: where the border runs along the cut graph's first edge
     parameterizer.set_cut_graph_start(cut_paths[0][0], cut_paths[0][1]);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {

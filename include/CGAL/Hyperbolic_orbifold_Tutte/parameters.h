@@ -50,6 +50,7 @@ enum target_genus_t { target_genus };
 enum maximum_handle_length_t { maximum_handle_length };
 enum multigrid_threshold_t { multigrid_threshold };
 enum refine_t { refine };
+enum progress_t { progress };
 } // namespace internal_np
 
 namespace parameters {
@@ -147,6 +148,11 @@ CGAL_HOT_NAMED_PARAMETER(target_genus)
 CGAL_HOT_NAMED_PARAMETER(maximum_handle_length)
 /// `int`: for `refine_orbifold_map()`, the largest number of refinement iterations (default 100)
 CGAL_HOT_NAMED_PARAMETER(refine)
+/// a callable `void(const char* phase, double fraction)` (stored as a `std::function`): for
+/// `hyperbolic_orbifold_Tutte_embedding()`, told the progress of the phases "input", "cut",
+/// "initialization", "optimization" and "certificate", in this order, from the calling thread
+/// (see `Hyperbolic_orbifold_Tutte_parameterizer_3::set_progress()`; default: none)
+CGAL_HOT_NAMED_PARAMETER(progress)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 

@@ -50,6 +50,9 @@ struct Embedding_settings
   bool charts = false;              // a part converging onto cone images may be written in charts
   std::pair<int, int> cut_graph_start{-1, -1}; // genus g >= 1: the cut graph's first edge (base indices), or none
   std::function<double(const TM_edge_descriptor&)> user_weights; // empty: `weights`
+  // told the progress of the phases "initialization", "optimization" and "certificate" (see
+  // Hyperbolic_orbifold_Tutte_parameterizer_3::set_progress()); empty: none
+  std::function<void(const char*, double)> progress;
 };
 
 template <class SeamMesh, class Tile>
@@ -73,6 +76,7 @@ public:
   // (in the frame `st.frame`). On failure `st.message` says why.
   Error_code run()
   {
+    tell("initialization", 0.0);
     const auto t0 = Clock::now();
     Error_code ec = set_up();
     if(ec != OK)
@@ -85,10 +89,18 @@ public:
     st_.shared_factorization = interior_.connection != nullptr;
     if(ec != OK)
       return fail(ec, "the Euclidean Tutte initialisation failed");
+    tell("initialization", 1.0);
+    tell("optimization", 0.0);
     const auto t2 = Clock::now();
-    ec = minimize_energy(P_, x_, settings_.solver, st_, &interior_); // (its part of the statistics)
+    Solver_options solver = settings_.solver;
+    if(settings_.progress)
+      solver.progress = [this](double f) { tell("optimization", f); };
+    ec = minimize_energy(P_, x_, solver, st_, &interior_); // (its part of the statistics)
     st_.time_optimization = seconds_since(t2);
+    tell("optimization", 1.0);
+    tell("certificate", 0.0);
     const bool recentring_tried = certify_and_mend(ec == OK);
+    tell("certificate", 1.0);
     return verdict(ec, recentring_tried);
   }
 
@@ -108,6 +120,12 @@ private:
   typedef std::chrono::steady_clock Clock;
 
   static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+  void tell(const char* phase, double fraction) const
+  {
+    if(settings_.progress)
+      settings_.progress(phase, fraction);
+  }
 
   Error_code fail(Error_code ec, const std::string& msg)
   {

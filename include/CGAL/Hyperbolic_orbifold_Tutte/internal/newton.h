@@ -182,6 +182,23 @@ private:
     gnorm_ = st_.initial_gradient_norm;
     grel_ = ev().hyperbolic_gradient_norm(x_, g_, true);
     best_grel_ = grel_;
+    grel_start_ = grel_;
+  }
+
+  // Solver_options::progress: log(start/now) / log(start/tolerance), clamped to [0, 1], never
+  // below what was told before (the imbalance need not fall at every step); not while polishing
+  void tell_progress()
+  {
+    if(!opt_.progress || polishing_)
+      return;
+    double f = 1.0;
+    if(grel_start_ > tolerance_ && tolerance_ > 0 && grel_ > tolerance_)
+      f = grel_ < grel_start_ ? std::log(grel_start_ / grel_) / std::log(grel_start_ / tolerance_) : 0.0;
+    f = std::min(1.0, std::max(f, progress_told_));
+    if(!(f >= 0)) // (NaN)
+      f = progress_told_;
+    progress_told_ = f;
+    opt_.progress(f);
   }
 
   // gradient, and the Hessian the phase needs
@@ -448,6 +465,7 @@ private:
       std::cerr << "  step " << it + 1 << (phase_ == Model ? " (preconditioned gradient)" : phase_ == Exact ? " (Newton)" : " (projected Newton)")
                 << ": E = " << E_ << "  |grad|/|grad0| = " << gnorm_ / g0_ << "  force imbalance " << grel_ << "  step " << alpha
                 << "  cg " << st_.cg_iterations << std::endl;
+    tell_progress();
     // a gradient step the line search had to shorten: the embedding has moved far from where
     // the preconditioner was factored (seam rotations, long edges): factor it anew, at most
     // a few times; when gradient steps keep being slow, Newton takes over
@@ -505,6 +523,7 @@ private:
   Phase phase_ = Exact;
   bool polishing_ = false, stagnated_ = false;
   double tolerance_ = 0, E_ = 0, g0_ = 1, gnorm_ = 0, grel_ = 0, best_grel_ = 0;
+  double grel_start_ = 0, progress_told_ = 0; // (Solver_options::progress)
   int polish_start_ = 0, stalls_ = 0, last_cg_ = 0, slow_steps_ = 0, refactorings_ = 0, since_best_ = 0;
 };
 

@@ -23,6 +23,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/interior_laplacian.h>
 
 #include <complex>
+#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -58,6 +59,10 @@ struct Solver_options
   // where it solved by multigrid, see Interior_laplacian::multigrid_from)
   Eigen::Index multigrid_from = default_multigrid_from;
   bool verbose = false;
+  // told after every accepted Newton step the progress of the solve in [0, 1], non-decreasing:
+  // the relative gradient norm's way from the start towards the tolerance on a log scale
+  // (none while polishing); only reads the solver's state
+  std::function<void(double)> progress;
 };
 
 // Minimises the energy (see Newton_minimizer, newton.h), from x, in place. `interior`: the
