@@ -3,6 +3,8 @@
 """Helpers of the Python module's tests: the command-line program, awk scripts, and readers
 of its files written here (not by the module), as outside references."""
 
+import os
+import re
 import subprocess
 
 import numpy as np
@@ -125,3 +127,42 @@ def write_off(path, V, F):
         for t in F:
             f.write("%d %s\n" % (len(t), " ".join(str(int(i)) for i in t)))
     return path
+
+
+def without_times(text):
+    """a report.json's text with its times replaced by T"""
+    return re.sub(r'"(embedding_seconds|map_seconds|seconds|seconds_certificate)": [0-9.e+-]+', r'"\1": T', text)
+
+
+def assert_same_files(cli_dir, dir2):
+    """the same file names and bytes as the command line's folder (report.json apart from its times)"""
+    names = sorted(os.listdir(cli_dir))
+    assert names == sorted(os.listdir(dir2)), "other files than the command line's"
+    for name in names:
+        a = open(os.path.join(cli_dir, name), "rb").read()
+        b = open(os.path.join(dir2, name), "rb").read()
+        if name == "report.json":
+            assert without_times(a.decode()) == without_times(b.decode()), "report.json differs beyond its times"
+        else:
+            assert a == b, "%s differs from the command line's" % name
+
+
+def make_hands(d, meshes, cli):
+    """hand.off and three smooth deformations of it (same triangulation, same 9 landmarks) in
+    folder d, their manifest d/list.txt, and the command line's collection of them with all
+    pairs in d/cli; returns (manifest, number of vertices)"""
+    V, F = read_off(os.path.join(meshes, "hand.off"))
+    x, y, z = V[:, 0], V[:, 1], V[:, 2]
+    shapes = {
+        "a": V,
+        "b": np.stack([x + 0.1 * np.sin(3 * y), y, 1.2 * z], axis=1),
+        "c": np.stack([0.9 * x, y + 0.05 * np.cos(4 * 0.9 * x), z], axis=1),
+        "e": np.stack([x, 1.1 * y, z + 0.05 * np.sin(2 * x)], axis=1),
+    }
+    for name, W in shapes.items():
+        write_off(d / ("hand_%s.off" % name), W, F)
+    run_cli(cli, "landmarks", "--mesh", d / "hand_a.off", "--count", 9, "--out", d / "cones.txt")
+    manifest = d / "list.txt"
+    manifest.write_text("".join("hand_%s.off cones.txt\n" % n for n in shapes))
+    run_cli(cli, "collection", "--manifest", manifest, "--out", d / "cli", "--all-pairs")
+    return manifest, len(V)

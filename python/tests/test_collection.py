@@ -5,52 +5,20 @@ the command line's `collection`, byte for byte (report.json apart from its times
 
 import json
 import os
-import re
 
-import numpy as np
 import pytest
 
 import hyperbolic_orbifold_tutte as hot
-from hot_testing import read_off, run_cli, write_off
+from hot_testing import assert_same_files, make_hands, run_cli
 
 
 @pytest.fixture(scope="module")
 def hands(tmp_path_factory, meshes, cli):
-    """hand.off and three smooth deformations of it (same triangulation, same 9 landmarks), and
-    the command line's collection of them with all pairs"""
+    """hot_testing.make_hands(), and the command line's refined collection of the same shapes"""
     d = tmp_path_factory.mktemp("hands")
-    V, F = read_off(os.path.join(meshes, "hand.off"))
-    x, y, z = V[:, 0], V[:, 1], V[:, 2]
-    shapes = {
-        "a": V,
-        "b": np.stack([x + 0.1 * np.sin(3 * y), y, 1.2 * z], axis=1),
-        "c": np.stack([0.9 * x, y + 0.05 * np.cos(4 * 0.9 * x), z], axis=1),
-        "e": np.stack([x, 1.1 * y, z + 0.05 * np.sin(2 * x)], axis=1),
-    }
-    for name, W in shapes.items():
-        write_off(d / ("hand_%s.off" % name), W, F)
-    run_cli(cli, "landmarks", "--mesh", d / "hand_a.off", "--count", 9, "--out", d / "cones.txt")
-    manifest = d / "list.txt"
-    manifest.write_text("".join("hand_%s.off cones.txt\n" % n for n in shapes))
-    run_cli(cli, "collection", "--manifest", manifest, "--out", d / "cli", "--all-pairs")
+    manifest, n_vertices = make_hands(d, meshes, cli)
     run_cli(cli, "collection", "--manifest", manifest, "--out", d / "cli_refined", "--all-pairs", "--refine", 10)
-    return d, manifest, len(V)
-
-
-def without_times(text):
-    return re.sub(r'"(embedding_seconds|map_seconds|seconds|seconds_certificate)": [0-9.e+-]+', r'"\1": T', text)
-
-
-def assert_same_files(cli_dir, dir2):
-    names = sorted(os.listdir(cli_dir))
-    assert names == sorted(os.listdir(dir2)), "other files than the command line's"
-    for name in names:
-        a = open(os.path.join(cli_dir, name), "rb").read()
-        b = open(os.path.join(dir2, name), "rb").read()
-        if name == "report.json":
-            assert without_times(a.decode()) == without_times(b.decode()), "report.json differs beyond its times"
-        else:
-            assert a == b, "%s differs from the command line's" % name
+    return d, manifest, n_vertices
 
 
 def check_report(report, out, n_vertices):
