@@ -15,10 +15,10 @@
 // Run by scripts/benchmark.sh.
 
 #include "bench_common.h"
-#include "generated_meshes.h" // (test/: the meshes the test suite checks)
+#include "generated_meshes.h" // (generators/: the meshes the test suite checks)
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
-#include <io/polygon_soup_to_mesh.h>
+#include <hot_app/io/polygon_soup_to_mesh.h>
 
 #include <cmath>
 #include <cstdio>

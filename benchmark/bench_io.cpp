@@ -2,14 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Times the command-line tool's file input and output against CGAL's:
-//  1. parsing: our readers (tools/io/read_polygon_soup.h: the file read into memory, parsed
+//  1. parsing: our readers (application/hot_app/io/read_polygon_soup.h: the file read into memory, parsed
 //     into a polygon soup) against CGAL::IO::read_polygon_soup() on the same mesh as OFF, OBJ
 //     and PLY (ASCII; the OBJ and PLY copies are written by CGAL with 17 digits, the OFF is
 //     the given file), MB/s of the file and the ratio, with a check that both give the same
 //     points and faces;
 //  2. reading a mesh: our read_mesh() (parse, validate the soup, build the Surface_mesh in
 //     linear time) against CGAL::IO::read_polygon_mesh() (what CGAL's orbifold example does);
-//  3. writing the embedding OBJ (tools/io/embedding_obj.h: std::to_chars, blocks of lines
+//  3. writing the embedding OBJ (application/hot_app/io/embedding_obj.h: std::to_chars, blocks of lines
 //     formatted in parallel) against the former std::ostream writer (test/reference_embedding_obj.h),
 //     MB/s, with a check that the bytes are the same; the uv map is synthetic (a point of the
 //     disk per corner, distinct points on a fifth of the faces: seams).
@@ -20,10 +20,10 @@
 // Run by scripts/benchmark.sh; nothing is asserted here (test_input_checks checks the results).
 
 #include "generated_blob.h"
-#include "reference_embedding_obj.h" // (test/)
+#include "reference_embedding_obj.h" // (generators/)
 
-#include <io/embedding_obj.h>
-#include <io/read_and_check.h>
+#include <hot_app/io/embedding_obj.h>
+#include <hot_app/io/read_and_check.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>

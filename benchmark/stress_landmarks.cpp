@@ -38,7 +38,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 
-#include <io/read_and_check.h>
+#include <hot_app/io/read_and_check.h>
 
 #include <algorithm>
 #include <chrono>

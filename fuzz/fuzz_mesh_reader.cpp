@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // libFuzzer target for the mesh and landmark readers and the input checks, through the
-// calls the command-line program makes before embedding (tools/hyperbolic_orbifold_tutte.cpp:
+// calls the command-line program makes before embedding (tools/jobs/, application/hot_app/io/:
 // read_and_check_mesh(), read_and_check_landmarks(), and for `landmarks`, select_landmarks()),
 // on the same mesh type (Surface_mesh of Epick points). Built and run by scripts/fuzz.sh.
 //
@@ -28,8 +28,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 
-#include <io/read_and_check.h>
-#include <io/prepared_input.h>
+#include <hot_app/io/read_and_check.h>
+#include <hot_app/io/prepared_input.h>
 
 #include <cstdint>
 #include <cstdio>

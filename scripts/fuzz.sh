@@ -56,7 +56,7 @@ fi
 # --- build (again when the target or a header is newer than the binary) ---------------
 bin="$build/fuzz_mesh_reader"
 src="$root/fuzz/fuzz_mesh_reader.cpp"
-if [ ! -x "$bin" ] || [ -n "$(find "$src" "$root/include" "$root/tools/io" -newer "$bin" -print -quit)" ]; then
+if [ ! -x "$bin" ] || [ -n "$(find "$src" "$root/include" "$root/application" -newer "$bin" -print -quit)" ]; then
   echo "fuzz.sh: building $bin with $cxx"
   nice "$cxx" -std=c++17 -O1 -g -fno-omit-frame-pointer \
     -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \

@@ -22,6 +22,8 @@ PACKAGES=(
   python3-dask python3-distributed          # collections on a Dask cluster
   python3-pytest     # the Python tests
   python3-mypy       # the type stubs checked against the examples (python/tests/test_stubs_and_errors.py)
+  libjs-three        # three.js (r111), copied into every folder the view job writes (offline, no CDN)
+  chromium           # headless Chromium: the view tests open the page and run its WebGL self-test (label viewer)
 )
 
 missing=()

@@ -20,8 +20,8 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
-#include "io/embedding_obj.h"
-#include "io/embedding_obj_reader.h"
+#include "hot_app/io/embedding_obj.h"
+#include "hot_app/io/embedding_obj_reader.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -664,7 +664,7 @@ TEST_CASE(orders_of_2_given_change_nothing)
 
 // The bear's embedding with the points nearest one of its cut's end cones written in a chart
 // centred at the cone's tile corner, as embed writes a protrusion ending at a landmark
-// (tools/io/embedding_obj.h): chart = translation_to_origin(corner), the cone at the origin
+// (application/hot_app/io/embedding_obj.h): chart = translation_to_origin(corner), the cone at the origin
 // exactly, each charted point's vt its chart point's tile point. It is the same map (moved by
 // rounding), so it must stay certified; `cone_point` receives the cone's point.
 HOT::Corner_embedding bear_in_a_chart(const Embedded& e, std::size_t& cone_point, int& corner, std::size_t& charted)

@@ -1,7 +1,7 @@
 // Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Tests of the input checks (check_input.h) and the tool's readers (tools/io/):
+// Tests of the input checks (check_input.h) and the tool's readers (application/hot_app/io/):
 // a corpus of hostile files is written into a temporary directory, and every case
 // must give its exact Error_code and a one-line message, never a crash or a hang.
 // Real meshes come from Debian's libcgal-demo (`--data DIR` with DIR/meshes/*.off).
@@ -19,9 +19,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 
-#include <io/read_and_check.h>
-#include <io/embedding_obj.h>
-#include <io/text_buffer.h>
+#include <hot_app/io/read_and_check.h>
+#include <hot_app/io/embedding_obj.h>
+#include <hot_app/io/text_buffer.h>
 
 #include "reference_embedding_obj.h"
 
@@ -1210,7 +1210,7 @@ std::vector<double> number_writer_values()
 
 TEST_CASE(number_writer)
 {
-  // write_double() (tools/io/text_buffer.h: its exact 128-bit fast path, else std::to_chars)
+  // write_double() (application/hot_app/io/text_buffer.h: its exact 128-bit fast path, else std::to_chars)
   // gives the bytes of printf("%.17g") and of an std::ostream with precision 17 (the former
   // writer's), and strtod and our reader read the same double back
   const std::vector<double> values = number_writer_values();
@@ -1661,6 +1661,52 @@ TEST_CASE(fuzz_regressions)
   SM sm;
   CHECK_RESULT(hot_tools::read_mesh(tmp_dir() + "/fuzz_gocad_int_min.ts", sm), HOT::OK, "");
   CHECK(num_vertices(sm) == 3 && num_faces(sm) == 1);
+}
+
+TEST_CASE(landmark_and_cone_order_checks)
+{
+  // check_cone_orders() (landmark_checks.h), the check of every entry point, in its order:
+  // the number, the orders of at least 2, then (with a signature) hyperbolicity
+  HOT::Cone_order_check c;
+  CHECK(HOT::check_cone_orders(std::vector<int>{2, 3, 7}, 3, &c) == HOT::OK && c.problem == HOT::No_cone_order_problem &&
+        c.message.empty());
+  CHECK(HOT::check_cone_orders(std::vector<int>{2, 3}, 3, &c) == HOT::ERROR_WRONG_PARAMETER &&
+        c.problem == HOT::Wrong_number_of_cone_orders);
+  CHECK_MSG(c.message == "2 cone orders are given for 3 landmarks (one per landmark is needed)", c.message);
+  CHECK(HOT::check_cone_orders(std::vector<int>{2, 1, 0}, 3, &c) == HOT::ERROR_WRONG_PARAMETER &&
+        c.problem == HOT::Cone_order_below_two && c.index == 1);
+  CHECK_MSG(c.message == "the cone orders (2,1,0) must be integers of at least 2 (a cone of order p has angle 2 pi / p)", c.message);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature(HOT::Sphere_type, {2, 3, 7}), 3) == HOT::OK);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature(HOT::Sphere_type, {2, 3, 6}), 3, &c) == HOT::ERROR_NOT_HYPERBOLIC &&
+        c.problem == HOT::Cone_orders_not_hyperbolic);
+  CHECK_MSG(c.message == "the orbifold with cones of orders (2,3,6) is not hyperbolic: the sum of 1 - 1/p over its cones is 2, "
+                         "it must exceed 2 (e.g. (2,3,7), (2,2,2,3), or 5 cones of order 2)", c.message);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature::sphere(4), 4) == HOT::ERROR_NOT_HYPERBOLIC);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature::sphere(5), 5) == HOT::OK);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature::disk(4), 4) == HOT::ERROR_NOT_HYPERBOLIC);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature::disk(5), 5) == HOT::OK);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature(HOT::Disk_type, {3, 3}), 2) == HOT::OK); // (not built: make_orbifold_tile() says)
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature(1, std::vector<int>()), 0, &c) == HOT::ERROR_NOT_HYPERBOLIC);
+  CHECK_MSG(c.message == "the orbifold of genus 1 with 0 cones is not hyperbolic (genus 1 needs at least one cone)", c.message);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature(1, std::vector<int>{2}), 1) == HOT::OK);
+  CHECK(HOT::check_cone_orders(HOT::Orbifold_signature(2, std::vector<int>()), 0) == HOT::OK);
+  // the landmarks the orbifolds need at least
+  CHECK(HOT::minimum_number_of_landmarks_for(HOT::Sphere_type, 0, false) == 5 &&
+        HOT::minimum_number_of_landmarks_for(HOT::Sphere_type, 0, true) == 3 &&
+        HOT::minimum_number_of_landmarks_for(HOT::Sphere_type, 1, false) == 1 &&
+        HOT::minimum_number_of_landmarks_for(HOT::Sphere_type, 2, false) == 0 &&
+        HOT::minimum_number_of_landmarks_for(HOT::Disk_type, 0, true) == 5);
+  // the genus (genus.h): a tetrahedron (genus 0), a disk (not closed: -1)
+  SM tet;
+  const auto v0 = tet.add_vertex(Point(0, 0, 0)), v1 = tet.add_vertex(Point(1, 0, 0)), v2 = tet.add_vertex(Point(0, 1, 0));
+  tet.add_face(v0, v2, v1);
+  CHECK(HOT::euler_characteristic(tet) == 1 && HOT::closed_mesh_genus(tet) == -1 && HOT::genus_of_surface(1, 1) == 0);
+  const auto v3 = tet.add_vertex(Point(0, 0, 1));
+  tet.add_face(v0, v1, v3);
+  tet.add_face(v1, v2, v3);
+  tet.add_face(v2, v0, v3);
+  CHECK(HOT::euler_characteristic(tet) == 2 && HOT::closed_mesh_genus(tet) == 0);
+  CHECK(HOT::genus_of_surface(0, 0) == 1 && HOT::genus_of_surface(-2, 0) == 2 && HOT::genus_of_surface(-1, 1) == 1);
 }
 
 HOT_TEST_MAIN

@@ -5,16 +5,17 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COMMAND_LINE_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_COMMAND_LINE_H
 
-// The command-line program's conventions: its options, its two kinds of errors and its
-// output files. main() ends the program with status 2 on a Usage_error, 3 on a Failure (the
-// data: an Error_code and a one-line reason), 1 on any other exception (files), each with
-// one line on stderr; output files are written to a temporary name and renamed only when
-// complete, and a failed command removes those it already wrote (Output_files).
+// The command-line program's conventions: its options (Options, the parsers of shared
+// options), its usage errors and its progress line. main() ends the program with status 2 on
+// a Usage_error, 3 on a Failure (the data: an Error_code and a one-line reason, the
+// application layer's hot_app/job_support.h, as are the output files written atomically), 1 on
+// any other exception (files), each with one line on stderr.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
 
-#include "io/prepared_input.h" // Repair_options
+#include "hot_app/io/prepared_input.h" // Repair_options
+#include "hot_app/job_support.h" // Failure, require(), Output_files, minimum_landmarks()
 
 #include <unistd.h> // isatty (Progress_line)
 
@@ -44,12 +45,6 @@ struct Usage_error
   std::string message;
 };
 
-struct Failure
-{
-  HOT::Error_code code;
-  std::string message;
-};
-
 // `JOB --help` (or -h): the job's usage on stdout, exit 0 (thrown by Options, caught by main())
 struct Help_request
 {
@@ -65,13 +60,6 @@ inline bool help_requested(int argc, char** argv, int first)
       return true;
   }
   return false;
-}
-
-// throws a failed check's reason
-inline void require(const HOT::Status& r)
-{
-  if(!r)
-    throw Failure{r.code, r.message};
 }
 
 // --name value options, and --flag options without value (listed in `flags`); --help or -h,
@@ -133,71 +121,6 @@ private:
   std::map<std::string, std::string> values_;
 };
 
-// Writes a file atomically: the content goes to FILE.tmp, renamed to FILE on success. A failed
-// write (disk full, file size limit, unwritable folder) throws one line naming the file and the
-// system's reason, with FILE.tmp removed and FILE untouched: the stream's state is checked
-// after the last byte and after closing, before the rename. SIGXFSZ (a file size limit,
-// `ulimit -f`) is ignored so that such a write fails with EFBIG instead of killing the process.
-// A process killed while writing leaves at most FILE.tmp, never a truncated FILE.
-inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& writer)
-{
-  static const bool xfsz_ignored = (std::signal(SIGXFSZ, SIG_IGN), true);
-  (void)xfsz_ignored;
-  const std::string tmp = path + ".tmp";
-  auto fail = [&](const char* what, int err) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(std::string(what) + " '" + path + "'" + (err != 0 ? std::string(": ") + std::strerror(err) : std::string()));
-  };
-  {
-    errno = 0;
-    std::ofstream out(tmp, std::ios::out | std::ios::trunc | std::ios::binary);
-    if(!out)
-      fail("cannot write", errno);
-    errno = 0;
-    try {
-      writer(out);
-    } catch(...) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw;
-    }
-    out.flush();
-    if(!out) {
-      const int err = errno;
-      out.close();
-      fail("error while writing", err);
-    }
-    out.close();
-    if(out.fail())
-      fail("error while writing", errno);
-  }
-  if(std::rename(tmp.c_str(), path.c_str()) != 0)
-    fail("cannot write", errno);
-}
-
-// The output files of a command, each written atomically. Unless commit() is called, the
-// destructor removes those already written: a command that fails leaves no output file.
-class Output_files
-{
-public:
-  Output_files() = default;
-  Output_files(const Output_files&) = delete;
-  Output_files& operator=(const Output_files&) = delete;
-  ~Output_files()
-  {
-    for(const std::string& f : written_)
-      std::remove(f.c_str());
-  }
-  void write(const std::string& path, const std::function<void(std::ostream&)>& writer)
-  {
-    write_file_atomically(path, writer);
-    written_.push_back(path);
-  }
-  void commit() { written_.clear(); }
-
-private:
-  std::vector<std::string> written_;
-};
 
 inline HOT::Orbifold_type parse_orbifold(const std::string& s)
 {
@@ -295,12 +218,6 @@ inline std::vector<int> parse_cone_orders(const Options& opt)
     pos = comma + 1;
   }
   return orders;
-}
-
-// the fewest landmarks a landmark file may hold: 5, or 3 with cone orders
-inline std::size_t minimum_landmarks(const std::vector<int>& orders)
-{
-  return orders.empty() ? HOT::minimum_number_of_landmarks : 3;
 }
 
 // A long job's progress on stderr, 'JOB: PHASE NN%' (the library's phases through its

@@ -15,10 +15,13 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_type.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Mesh_preparation.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/prepare_mesh_for_embedding.h>

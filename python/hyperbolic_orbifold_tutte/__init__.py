@@ -36,7 +36,7 @@ The computations release the GIL: embeddings of several meshes run in parallel i
 import numpy as _np
 
 from ._core import (ComputationError, Embedding, Error, InputError, embed, error_classes, error_codes, map, map_distortion,
-                    map_meshes, read_mesh, select_landmarks)
+                    map_meshes, read_mesh, select_landmarks, view)
 from .collection import collection
 
 __all__ = [
@@ -55,6 +55,7 @@ __all__ = [
     "select_landmarks",
     "transfer",
     "surface_points",
+    "view",
 ]
 
 

@@ -17,6 +17,7 @@ from ._core import map_distortion as map_distortion
 from ._core import map_meshes as map_meshes
 from ._core import read_mesh as read_mesh
 from ._core import select_landmarks as select_landmarks
+from ._core import view as view
 from .collection import collection as collection
 
 __all__ = [
@@ -35,6 +36,7 @@ __all__ = [
     "select_landmarks",
     "transfer",
     "surface_points",
+    "view",
 ]
 
 # faces (n,) and bary (n, 3): map()'s result; values_b (nB,) or (nB, k) -> (n,) or (n, k)

@@ -6,7 +6,7 @@ The parameter names and defaults are those of the pybind11 definitions (py::arg)
 python/tests/test_stubs_and_errors.py checks them against the built module."""
 
 import os
-from typing import Any, Literal, Sequence, TypedDict, Union, overload
+from typing import Any, Callable, Literal, Sequence, TypedDict, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -100,7 +100,8 @@ class Embedding:
 
 def embed(V: ArrayLike, F: ArrayLike, landmarks: _Indices, *, orbifold: _Orbifold = "auto", weights: _Weights = "cotan",
           order: Literal["auto", "tsp", "given"] | _Indices = "auto", cone_orders: _Indices | None = None,
-          recentre: bool = False, cut_graph: Sequence[_Indices] | None = None, name: str = "") -> Embedding: ...
+          recentre: bool = False, cut_graph: Sequence[_Indices] | None = None, name: str = "",
+          progress: Callable[[str, float], object] | None = None) -> Embedding: ...
 
 # ---------------------------------------------------------------------------------------
 # maps
@@ -130,7 +131,8 @@ class _MeshMap(TypedDict):
 
 def map_meshes(VA: ArrayLike, FA: ArrayLike, landmarks_a: _Indices, VB: ArrayLike, FB: ArrayLike, landmarks_b: _Indices, *,
                orbifold: _Orbifold = "auto", weights: _Weights = "cotan", order: Literal["auto", "tsp", "given"] | _Indices = "auto",
-               cone_orders: _Indices | None = None, unreliable: bool = False, refine: int = 0) -> _MeshMap: ...
+               cone_orders: _Indices | None = None, unreliable: bool = False, refine: int = 0,
+               progress: Callable[[str, float], object] | None = None) -> _MeshMap: ...
 
 class _DistortionSummary(TypedDict):
     p50: float
@@ -157,6 +159,12 @@ class _MapDistortion(TypedDict):
     image_area: float
 
 def map_distortion(V: ArrayLike, F: ArrayLike, images: ArrayLike) -> _MapDistortion: ...
+
+# ---------------------------------------------------------------------------------------
+# the viewer (view.cpp): the folder of the command line's view job
+# ---------------------------------------------------------------------------------------
+
+def view(obj: Embedding | _MeshMap | Sequence[Embedding], out_dir: _Path) -> None: ...
 
 # ---------------------------------------------------------------------------------------
 # the jobs of collection() (hyperbolic_orbifold_tutte/collection.py runs them)

@@ -2,14 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
-// register_collection: the jobs of a collection (tools/collection_jobs.h, those of the
+// register_collection: the jobs of a collection (application/hot_app/collection_stages.h, those of the
 // command line's `collection --stage ...`) as functions of `_core`, which the package's
 // collection() runs in order, in threads or as tasks of a Dask cluster
 // (hyperbolic_orbifold_tutte/collection.py). Each releases the GIL while it computes.
 
 #include "hot_python.h"
 
-#include "collection_jobs.h"
+#include "hot_app/collection_stages.h"
 
 #include <optional>
 #include <string>
@@ -53,7 +53,7 @@ hot_cli::Collection_job make_job(const std::string& manifest, const std::string&
   return job;
 }
 
-// runs f with the GIL released; the command line's failures become Hot_error
+// runs f with the GIL released; the jobs' failures become Hot_error
 template <class F>
 auto run_job(F&& f) -> decltype(f())
 {
@@ -62,8 +62,6 @@ auto run_job(F&& f) -> decltype(f())
     return f();
   } catch(const hot_cli::Failure& e) {
     throw Hot_error{e.code, e.message};
-  } catch(const hot_cli::Usage_error& e) {
-    throw Hot_error{HOT::ERROR_WRONG_PARAMETER, e.message};
   } catch(const std::runtime_error& e) { // (files: a folder that cannot be created, ...)
     throw Hot_error{HOT::ERROR_WRITE_FAILED, e.what()};
   }

@@ -85,7 +85,11 @@ void register_distortion(py::module_& m)
     "\"distortion\"); the symmetric Dirichlet density s1^2 + s2^2 + 1/s1^2 + 1/s2^2 of the\n"
     "singular values scaled to the total areas (symmetric_dirichlet, its summary, and\n"
     "symmetric_dirichlet_energy, its area-weighted mean: 4 for an isometry up to scale); the counts\n"
-    "of degenerate faces (inf where an image face is flat).");
+    "of degenerate faces (inf where an image face is flat).\n\n"
+    "Example:\n"
+    "    >>> m = hot.map_meshes(VA, FA, la, VB, FB, lb)\n"
+    "    >>> d = hot.map_distortion(VA, FA, hot.surface_points(m[\"faces\"], m[\"bary\"], VB, FB))\n"
+    "    >>> d[\"conformal_summary\"][\"p99\"], d[\"symmetric_dirichlet_energy\"]   # 1 and 4 for an isometry");
 }
 
 } // namespace hot_python

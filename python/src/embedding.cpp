@@ -4,9 +4,9 @@
 //
 // The Python extension's embeddings (embed, the class Embedding) and maps (map): the
 // command line's `embed` and `map` on arrays. The embedding is computed by the command
-// line's own call (hot_cli::embed_mesh(), tools/embed_job.h) on a mesh built as its reader
+// line's own call (hot_cli::embed_mesh(), application/hot_app/embed_job.h) on a mesh built as its reader
 // builds it, so the numbers are the command line's, bit for bit; the OBJ file and the report
-// are written by its writers (tools/io).
+// are written by its writers (application/hot_app/io).
 
 #include "hot_python.h"
 
@@ -17,11 +17,12 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 
-#include "command_line.h"
-#include "embed_job.h"
-#include "io/embedding_obj.h"
-#include "io/map_files.h"
-#include "io/reports.h"
+#include "hot_app/embed_job.h"
+#include "hot_app/job_support.h"
+#include "hot_app/map_order.h"
+#include "hot_app/io/embedding_obj.h"
+#include "hot_app/io/map_files.h"
+#include "hot_app/io/reports.h"
 
 #include <algorithm>
 #include <array>
@@ -46,7 +47,7 @@ void read_mesh_and_landmarks(const double* V, std::size_t n, const std::int64_t*
   HOT::Mesh_info info;
   mesh_from_arrays(V, n, F, m, k, opt.type, mesh, info);
   e.type = info.type;
-  e.genus = e.type == HOT::Sphere_type ? HOT::internal::closed_mesh_genus(mesh) : 0;
+  e.genus = e.type == HOT::Sphere_type ? HOT::closed_mesh_genus(mesh) : 0;
   for(int p : opt.cone_orders)
     if(p < 2 || p > 1000000)
       fail(HOT::ERROR_WRONG_PARAMETER, "cone_orders must be integers from 2 to 1000000 (one per landmark, e.g. [2, 3, 7])");
@@ -123,6 +124,7 @@ Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64
   else if(opt.weights == "uniform") job.weights = HOT::Uniform;
   else fail(HOT::ERROR_WRONG_PARAMETER, "weights must be 'cotan', 'mvc' or 'uniform', got '" + opt.weights + "'");
   job.recentre = opt.recentre;
+  job.progress = opt.progress;
 
   e->uv = mesh.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
   e->charts = mesh.add_property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> >("h:chart").first;
@@ -154,6 +156,38 @@ Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64
   return e;
 }
 
+Progress_relay::Progress_relay(py::handle f) : f_(py::reinterpret_borrow<py::object>(f))
+{
+  if(!f_.is_none() && !PyCallable_Check(f_.ptr()))
+    fail(HOT::ERROR_WRONG_PARAMETER, "progress must be None or a callable progress(phase, fraction)");
+}
+
+std::function<void(const char*, double)> Progress_relay::callback(const std::string& prefix)
+{
+  if(f_.is_none())
+    return {};
+  return [this, prefix](const char* phase, double fraction) {
+    if(failed_)
+      return;
+    py::gil_scoped_acquire gil;
+    try {
+      f_(prefix + phase, fraction);
+    } catch(py::error_already_set& e) {
+      failed_ = true;
+      error_ = std::make_unique<py::error_already_set>(std::move(e));
+    }
+  };
+}
+
+void Progress_relay::rethrow()
+{
+  if(!error_)
+    return;
+  py::error_already_set e = std::move(*error_);
+  error_.reset();
+  throw e;
+}
+
 namespace {
 
 // embed()'s and map_meshes()' `order` and `cone_orders` into `opt`
@@ -174,8 +208,10 @@ void parse_order_options(py::handle order, py::handle cone_orders, Embed_options
 }
 
 Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, const std::string& weights,
-                    py::handle order, py::handle cone_orders, bool recentre, py::handle cut_graph, const std::string& name)
+                    py::handle order, py::handle cone_orders, bool recentre, py::handle cut_graph, const std::string& name,
+                    py::handle progress)
 {
+  Progress_relay relay(progress);
   const Double_array Va = vertex_array(V);
   const Index_array Fa = face_array(F);
   const std::vector<std::size_t> ids = index_list(landmarks, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
@@ -190,12 +226,17 @@ Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std:
     for(py::handle path : cut_graph)
       opt.cut_graph.push_back(index_list(path, "cut graph vertex", HOT::ERROR_LANDMARK_OUT_OF_RANGE));
   }
+  opt.progress = relay.callback();
   Embedding_ptr e;
-  {
+  try {
     py::gil_scoped_release release;
     e = compute_embedding(Va.data(), static_cast<std::size_t>(Va.shape(0)), Fa.data(), static_cast<std::size_t>(Fa.shape(0)),
                           static_cast<std::size_t>(Fa.shape(1)), ids, opt);
+  } catch(...) {
+    relay.rethrow(); // (the callable's exception first: it came first)
+    throw;
   }
+  relay.rethrow();
   return e;
 }
 
@@ -317,7 +358,11 @@ embed a deformed copy of the mesh (the same faces) along the corresponding graph
 Writes the embedding as the command line's `embed --out` writes OUT.obj (the same writer,
 the same bytes): v = the vertices, vt = one Poincare point per cut-mesh vertex, f v/vt = the
 faces in order, and the charts around cone images as comment lines when there are some.
-The file is written to path.tmp and renamed when complete. Errors raise Error.)doc")
+The file is written to path.tmp and renamed when complete. Errors raise Error.
+
+Example:
+    >>> e = hot.embed(V, F, hot.select_landmarks(V, F, 7))
+    >>> e.write_obj("bear_embedding.obj")   # then: hyperbolic_orbifold_tutte certify ...)doc")
     .def("__repr__", [](const Embedding& e) {
       std::ostringstream os;
       os << "<hyperbolic_orbifold_tutte.Embedding: " << num_vertices(e.mesh) << " vertices, " << num_faces(e.mesh) << " faces, "
@@ -329,8 +374,8 @@ The file is written to path.tmp and renamed when complete. Errors raise Error.)d
 
   m.def("embed", &embed, py::arg("V"), py::arg("F"), py::arg("landmarks"), py::kw_only(), py::arg("orbifold") = "auto",
         py::arg("weights") = "cotan", py::arg("order") = "auto", py::arg("cone_orders") = py::none(), py::arg("recentre") = false,
-        py::arg("cut_graph") = py::none(), py::arg("name") = "",
-        R"doc(embed(V, F, landmarks, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, recentre=False, cut_graph=None, name="")
+        py::arg("cut_graph") = py::none(), py::arg("name") = "", py::arg("progress") = py::none(),
+        R"doc(embed(V, F, landmarks, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, recentre=False, cut_graph=None, name="", progress=None)
 
 Computes the certified hyperbolic orbifold Tutte embedding of the triangle mesh (V, F)
 with the given landmarks at the orbifold's cones, as the command line's `embed` does (the
@@ -359,6 +404,13 @@ recentre: allows a part too squeezed for double in the tile to be solved in a mo
 cut_graph: genus g >= 1: the graph to cut along (vertex paths, e.g. another embedding's
   cut_graph on a deformed copy); default: computed.
 name: the report's "mesh" field.
+progress: None, or a callable progress(phase, fraction) told the phases "input", "cut",
+  "initialization", "optimization" and "certificate" in that order, each from 0.0 to 1.0
+  (the optimization's fraction after each Newton step: the gradient norm's progress towards
+  the tolerance on a log scale), from the calling thread, the GIL held; the command line's
+  --progress lines. An exception it raises is raised by embed() when the embedding has ended
+  (the computation is not interrupted; the later reports are not passed on). The result is
+  the same, bit for bit, with or without it.
 
 Every failure (bad input, too few or duplicate landmarks, a non-manifold mesh, no
 certified result, ...) raises Error with the library's message.
@@ -366,7 +418,8 @@ certified result, ...) raises Error with the library's message.
 Example:
     >>> V, F = hot.read_mesh("bear.off")
     >>> e = hot.embed(V, F, hot.select_landmarks(V, F, 7))
-    >>> e.uv.shape, e.report["certificate"]["bijective"]   # ((m, 3, 2), True))doc");
+    >>> e.uv.shape, e.report["certificate"]["bijective"]   # ((m, 3, 2), True)
+    >>> e = hot.embed(V, F, lm, progress=lambda phase, f: print(phase, round(100 * f), "%")))doc");
 }
 
 // ---------------------------------------------------------------------------------------
@@ -520,32 +573,23 @@ py::tuple map(const Embedding_ptr& A, const Embedding_ptr& B, bool unreliable, i
   return py::make_tuple(f, b, owning_array(std::move(flagged), {u}));
 }
 
-// the landmark orders map_meshes() tries in turn, best first, as the command line's map chooses
-// them (map_cone_orders() of tools/hyperbolic_orbifold_tutte.cpp, from the library's
-// compute_landmark_distances() and rank_landmark_tours()): sphere type of genus 0 with "auto"
-// the source's and the target's tours ranked (the source's on ties), with "tsp" the source's
-// tour alone; "given", the disk type and genus g >= 1 the given order; an explicit order alone
-// (mesh npos: neither mesh's tour)
+// the landmark orders map_meshes() tries in turn, best first: the command line's map's choice
+// (map_landmark_orders(), application/hot_app/map_order.h); an explicit order alone (mesh npos:
+// neither mesh's tour)
 std::vector<HOT::Landmark_order_candidate> map_meshes_orders(const Embed_options& opt, const Embedding& A, const Embedding& B)
 {
-  HOT::Landmark_order_candidate given;
-  given.mesh = std::size_t(-1);
-  given.longest_ratio = 1;
   if(opt.order == "explicit") {
+    HOT::Landmark_order_candidate given;
+    given.mesh = std::size_t(-1);
+    given.longest_ratio = 1;
     given.order = opt.explicit_order; // (checked by compute_embedding())
     return {given};
   }
-  for(std::size_t i = 0; i < A.landmarks.size(); ++i) given.order.push_back(i);
-  if(A.type != HOT::Sphere_type || A.genus != 0 || opt.order == "given")
-    return {given};
-  std::vector<std::vector<std::vector<double> > > D(1, HOT::compute_landmark_distances(A.mesh, A.landmarks, get(CGAL::vertex_point, A.mesh)));
-  if(opt.order != "tsp")
-    D.push_back(HOT::compute_landmark_distances(B.mesh, B.landmarks, get(CGAL::vertex_point, B.mesh)));
-  const std::vector<HOT::Landmark_order_candidate> r = HOT::rank_landmark_tours(D);
-  if(r.empty())
-    fail(HOT::ERROR_CUT_FAILED, "the landmark tour could not be computed on the " +
-                                  std::string(HOT::internal::is_finite_distance_matrix(D[0]) ? "target" : "source"));
-  return r;
+  try {
+    return hot_cli::map_landmark_orders(opt.order, A.type, A.genus, A.mesh, A.landmarks, B.mesh, B.landmarks);
+  } catch(const hot_cli::Failure& f) {
+    fail(f.code, f.message);
+  }
 }
 
 struct Mesh_map
@@ -556,6 +600,14 @@ struct Mesh_map
   std::vector<std::int64_t> faces, flagged;
   std::vector<double> bary;
 };
+
+// `progress` with `who` put before every phase's name (empty stays empty)
+std::function<void(const char*, double)> told_as(const char* who, const std::function<void(const char*, double)>& progress)
+{
+  if(!progress)
+    return progress;
+  return [who, progress](const char* phase, double fraction) { progress((std::string(who) + phase).c_str(), fraction); };
+}
 
 // map_meshes() without Python: the command line's run_map() on arrays (the order choice, the
 // embeddings in that order, the next order when one is refused for a reason the order may cause,
@@ -597,58 +649,53 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, const std::
                                        " and not the same faces: a map between them depends on corresponding cut graphs;"
                                        " embed both with corresponding cut_graph= and call map()");
   const std::vector<HOT::Landmark_order_candidate> candidates = map_meshes_orders(opt, a0, b0);
-  for(std::size_t c = 0; c < candidates.size(); ++c) {
-    Embed_options o = opt;
-    o.order = "explicit";
-    o.explicit_order = candidates[c].order;
-    const char* embedding = "source"; // (the one being embedded)
-    try {
+  const char* embedding = "source"; // (the one being embedded)
+  HOT::Error_code code = HOT::OK;
+  std::string message;
+  const std::size_t c = hot_cli::embed_in_first_accepted_order<Hot_error>(
+    candidates,
+    [&](const HOT::Landmark_order_candidate& candidate, bool target_first) {
+      r.A.reset();
+      r.B.reset();
+      Embed_options o = opt;
+      o.order = "explicit";
+      o.explicit_order = candidate.order;
       const auto embed_a = [&] {
         embedding = "source";
-        r.A = compute_embedding(VA.data(), rows(VA), FA.data(), rows(FA), cols(FA), ida, o);
+        Embed_options oa = o;
+        oa.progress = told_as("source: ", opt.progress);
+        r.A = compute_embedding(VA.data(), rows(VA), FA.data(), rows(FA), cols(FA), ida, oa);
       };
       const auto embed_b = [&] {
         embedding = "target";
         Embed_options ob = o;
+        ob.progress = told_as("target: ", opt.progress);
         if(genus_cut) {
           ob.has_cut_graph = true;
           ob.cut_graph = r.A->stats.cut_graph;
         }
         r.B = compute_embedding(VB.data(), rows(VB), FB.data(), rows(FB), cols(FB), idb, ob);
       };
-      // (with a choice, the mesh whose tour it is not first: the more likely to refuse it)
-      if(candidates.size() > 1 && candidates[c].mesh == 0) {
+      if(target_first) {
         embed_b();
         embed_a();
       } else {
         embed_a();
         embed_b();
       }
-      r.chosen = candidates[c];
-      break;
-    } catch(const Hot_error& f) {
-      if(candidates.size() == 1 || !HOT::is_landmark_order_failure(f.code))
-        throw;
-      const std::string origin = candidates[c].mesh == 0 ? "the source's tour" : candidates[c].mesh == 1 ? "the target's tour" : "the given order";
-      std::string list;
-      for(std::size_t i : candidates[c].order) list += (list.empty() ? "" : " ") + std::to_string(i);
-      r.refusals.push_back(origin + " (" + list + ") was refused by the " + std::string(embedding) + ": " + f.message);
-      r.A.reset();
-      r.B.reset();
-      if(c + 1 == candidates.size()) {
-        std::string why;
-        for(const std::string& x : r.refusals) why += (why.empty() ? "" : "; ") + x;
-        fail(f.code, "no landmark order works for both meshes (" + std::to_string(candidates.size()) + " tried): " + why);
-      }
-    }
-  }
+    },
+    [&](const Hot_error& f) { return std::string(embedding) + ": " + f.message; }, r.refusals, code, message);
+  if(c == std::size_t(-1))
+    fail(code, message);
+  r.chosen = candidates[c];
   map_embeddings(*r.A, *r.B, r.faces, r.bary, unreliable ? &r.flagged : nullptr, refine);
 }
 
 py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::handle VB, py::handle FB, py::handle landmarks_b,
                     const std::string& orbifold, const std::string& weights, py::handle order, py::handle cone_orders, bool unreliable,
-                    int refine)
+                    int refine, py::handle progress)
 {
+  Progress_relay relay(progress);
   const Double_array Va = vertex_array(VA, "VA"), Vb = vertex_array(VB, "VB");
   const Index_array Fa = face_array(FA, "FA"), Fb = face_array(FB, "FB");
   const std::vector<std::size_t> ida = index_list(landmarks_a, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
@@ -659,11 +706,16 @@ py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::ha
   parse_order_options(order, cone_orders, opt);
   if(refine < 0)
     fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
+  opt.progress = relay.callback();
   Mesh_map r;
-  {
+  try {
     py::gil_scoped_release release;
     compute_mesh_map(Va, Fa, ida, Vb, Fb, idb, opt, unreliable, refine, r);
+  } catch(...) {
+    relay.rethrow();
+    throw;
   }
+  relay.rethrow();
   const py::ssize_t n = static_cast<py::ssize_t>(r.faces.size()), u = static_cast<py::ssize_t>(r.flagged.size());
   py::dict d;
   d["faces"] = owning_array(std::move(r.faces), {n});
@@ -686,8 +738,8 @@ void register_maps(py::module_& m)
 {
   m.def("map_meshes", &map_meshes, py::arg("VA"), py::arg("FA"), py::arg("landmarks_a"), py::arg("VB"), py::arg("FB"), py::arg("landmarks_b"),
         py::kw_only(), py::arg("orbifold") = "auto", py::arg("weights") = "cotan", py::arg("order") = "auto",
-        py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0,
-        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0) -> dict
+        py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0, py::arg("progress") = py::none(),
+        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0, progress=None) -> dict
 
 Maps mesh A = (VA, FA) onto mesh B = (VB, FB) in one call, as the command line's `map`
 does: landmark i of landmarks_a corresponds to landmark i of landmarks_b; both meshes are
@@ -705,6 +757,8 @@ order: "auto" (sphere type of genus 0: the source's landmark tour or the target'
   given order), "tsp" (the source's tour only), "given" (the order of the landmarks), or
   a sequence of landmark positions (a permutation, as embed()'s order).
 unreliable, refine: as map()'s.
+progress: as embed()'s, the phases of the two embeddings named "source: PHASE" and
+  "target: PHASE" (a mesh embedded again in another order tells its phases again).
 
 Returns a dict (the map() result and how it was made):
   "faces", "bary": map()'s result (int64 (nA,), float64 (nA, 3)): vertex i of A goes to
@@ -754,9 +808,13 @@ refine=N (N >= 1) refines the map towards an isometry first, as the command line
 map --refine N does (refine_orbifold_map(): at most N certified iterations lowering the
 symmetric Dirichlet energy; landmarks kept, every iterate certified bijective), on a copy
 of the source's corners: `source` itself is unchanged. Genus 0 and a source embedded
-without charts only (else Error). Example:
-    faces, bary = hot.map(a, b, refine=100)
-    images = np.einsum("ij,ijk->ik", bary, VB[FB[faces]]))doc");
+without charts only (else Error).
+
+Example:
+    >>> a = hot.embed(VA, FA, la)
+    >>> b = hot.embed(VB, FB, lb, order=a.landmark_order)
+    >>> faces, bary = hot.map(a, b, refine=100)
+    >>> images = np.einsum("ij,ijk->ik", bary, VB[FB[faces]]))doc");
 }
 
 } // namespace hot_python

@@ -17,6 +17,7 @@
 //     map_meshes: the CLI's map on arrays, its landmark order choice)
 //   register_collection (the jobs of collection())                  collection.cpp
 //   register_distortion (map_distortion)                            distortion.cpp
+//   register_view (view: the command line's view job's folder)      view.cpp
 // compute_embedding() and map_embeddings() (embedding.cpp) are the embed and map of the module
 // without Python, for those areas to reuse (an Embedding_ptr is the Python class Embedding).
 
@@ -30,9 +31,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 
-#include "cli_types.h"
-#include "io/prepared_input.h"
-#include "io/reports.h"
+#include "hot_app/job_input.h"
+#include "hot_app/io/prepared_input.h"
+#include "hot_app/io/reports.h"
 
 #include <pybind11/eval.h>
 #include <pybind11/numpy.h>
@@ -41,6 +42,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -52,7 +54,7 @@ namespace hot_python {
 namespace py = pybind11;
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 
-// (the command line's mesh types)
+// (the jobs' mesh types, application/hot_app/job_input.h)
 using hot_cli::Kernel;
 using hot_cli::Surface_mesh;
 using hot_cli::SM_vertex;
@@ -187,6 +189,27 @@ struct Embed_options
   bool has_cut_graph = false;
   std::vector<std::vector<std::size_t> > cut_graph; // vertex paths (genus g >= 1)
   std::string name;                       // the report's "mesh"
+  std::function<void(const char*, double)> progress; // the library's progress reports (empty: none)
+};
+
+// A Python callable progress(phase: str, fraction: float) told the library's progress reports
+// from a computation that runs without the GIL: the GIL is taken for each call; an exception the
+// callable raises is kept, the later reports are not passed on, and rethrow() raises it when the
+// computation has ended (the computation itself is not interrupted).
+class Progress_relay
+{
+public:
+  explicit Progress_relay(py::handle f);
+  // the callback to give the library (empty when the callable is None); `prefix` is put before
+  // every phase's name (e.g. "source: ")
+  std::function<void(const char*, double)> callback(const std::string& prefix = std::string());
+  // with the GIL: raises the callable's exception, if it raised one
+  void rethrow();
+
+private:
+  py::object f_;
+  bool failed_ = false;
+  std::unique_ptr<py::error_already_set> error_;
 };
 
 // Computes the embedding of the mesh (V, F) (n x 3, m x k arrays) with the landmarks `ids`
@@ -218,6 +241,7 @@ void register_embedding(py::module_& m);
 void register_maps(py::module_& m);
 void register_collection(py::module_& m);
 void register_distortion(py::module_& m);
+void register_view(py::module_& m);       // view.cpp: view() (the command line's view job)
 
 } // namespace hot_python
 

@@ -10,10 +10,10 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/select_landmarks.h>
 
-#include "io/polygon_soup.h"
-#include "io/polygon_soup_to_mesh.h"
-#include "io/prepared_input.h"
-#include "io/read_and_check.h"
+#include "hot_app/io/polygon_soup.h"
+#include "hot_app/io/polygon_soup_to_mesh.h"
+#include "hot_app/io/prepared_input.h"
+#include "hot_app/io/read_and_check.h"
 
 #include <array>
 #include <sstream>
@@ -564,4 +564,5 @@ PYBIND11_MODULE(_core, m)
   hot_python::register_maps(m);
   hot_python::register_collection(m);
   hot_python::register_distortion(m);
+  hot_python::register_view(m);
 }

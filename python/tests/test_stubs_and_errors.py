@@ -16,6 +16,7 @@ import importlib.util
 import inspect
 import os
 import pickle
+import re
 import subprocess
 import sys
 
@@ -283,6 +284,22 @@ def test_stubbed_signatures_are_the_runtime_ones(stubs):
     for name in ("Error",):
         init = [n for n in core.classes[name].body if isinstance(n, ast.FunctionDef) and n.name == "__init__"]
         check_overloads("_core.pyi: %s.__init__" % name, inspect_signature(getattr(hot, name).__init__), [stub_signature(n) for n in init])
+
+
+def test_help_shows_an_example_of_every_public_function():
+    # help(hot.f) ends with an "Example:" block whose >>> lines call f (the issue: "help() on
+    # every function shows its parameters and an example"); the parameters are the first line,
+    # checked above
+    public = [getattr(hot, n) for n in hot.__all__]
+    funcs = [(f.__name__, f) for f in public if callable(f) and not inspect.isclass(f)]
+    funcs += [("write_obj", hot.Embedding.write_obj)]
+    assert len(funcs) >= 9, [n for n, _ in funcs]
+    for name, func in funcs:
+        doc = func.__doc__ or ""
+        assert "\nExample:" in doc or "\n    Example:" in doc, "%s: no Example: in its docstring" % name
+        calls = [line for line in doc.split("Example:", 1)[1].splitlines()
+                 if line.strip().startswith(">>>") and re.search(r"(^|[^A-Za-z0-9_])%s\(" % re.escape(name), line)]
+        assert calls, "%s: its example does not call it" % name
 
 
 def test_the_signature_check_can_fail():

@@ -10,6 +10,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cones_along_seam.h>
@@ -247,19 +249,16 @@ public:
     st = Embedding_statistics();
     const int k = static_cast<int>(landmarks.size());
     Tile tile;
-    const long long genus = type_ == Sphere_type ? internal::closed_mesh_genus(mesh.mesh()) : 0;
+    const long long genus = type_ == Sphere_type ? closed_mesh_genus(mesh.mesh()) : 0;
     if(genus > 0) { // a surface of genus g >= 1: the tile is the polygon of the cut graph (the seams)
       const std::vector<int> orders = orders_.empty() ? std::vector<int>(k, 2) : orders_;
-      if(static_cast<int>(orders.size()) != k) {
-        st.message = std::to_string(orders.size()) + " cone orders are given for " + std::to_string(k) +
-                     " landmarks (one per landmark is needed)";
+      Cone_order_check check; // (whether the orbifold is hyperbolic: cut_graph_tile())
+      if(check_cone_orders(orders, static_cast<std::size_t>(k), &check) != OK) {
+        st.message = check.problem == Cone_order_below_two
+                       ? "the cone orders must be integers of at least 2 (a cone of order p has angle 2 pi / p)"
+                       : check.message;
         return ERROR_WRONG_PARAMETER;
       }
-      for(int p : orders)
-        if(p < 2) {
-          st.message = "the cone orders must be integers of at least 2 (a cone of order p has angle 2 pi / p)";
-          return ERROR_WRONG_PARAMETER;
-        }
       internal::Cut_polygon poly;
       std::pair<int, int> start(-1, -1);
       if(has_start_) {

@@ -7,7 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_type.h>
 
 #include <cstddef>
 #include <sstream>

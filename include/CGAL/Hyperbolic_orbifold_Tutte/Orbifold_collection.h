@@ -8,6 +8,8 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
@@ -402,10 +404,7 @@ private:
     std::mutex mutex_;
   };
 
-  static double seconds_since(const Clock::time_point& t0)
-  {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-  }
+  static double seconds_since(const Clock::time_point& t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
   // f(i) for i in [0, n), in parallel with Parallel_tag and TBB
   template <class F>
@@ -477,9 +476,9 @@ private:
   Error_code compute_orders(std::vector<Order_attempt>& candidates)
   {
     const std::size_t N = items_.size(), k = items_[0].landmarks.size();
-    if(!orders_.empty() && orders_.size() != k) {
-      message_ = std::to_string(orders_.size()) + " cone orders are given for " + std::to_string(k) +
-                 " landmarks (one per landmark is needed)";
+    Cone_order_check check; // (here their number; the orders themselves: the embeddings' tiles)
+    if(!orders_.empty() && check_cone_orders(orders_, k, &check) != OK && check.problem == Wrong_number_of_cone_orders) {
+      message_ = check.message;
       return ERROR_WRONG_PARAMETER;
     }
     Order_attempt given{std::vector<std::size_t>(k), N, 1., OK, std::string()};
@@ -537,7 +536,7 @@ private:
     std::vector<Error_code> codes(N, OK);
     const std::vector<int> cut_orders = ordered_orders(); // (empty: all 2)
     for(std::size_t i = 0; i < N && type_ == Sphere_type; ++i) {
-      const long long genus = internal::closed_mesh_genus(*items_[i].mesh);
+      const long long genus = closed_mesh_genus(*items_[i].mesh);
       if(genus > 0) { // (its tile depends on its cut graph, which the collection does not match yet)
         message_ = "mesh " + std::to_string(i) + " has genus " + std::to_string(genus) +
                    ": collections of closed meshes of genus 1 or more are not built yet; map them in pairs along"

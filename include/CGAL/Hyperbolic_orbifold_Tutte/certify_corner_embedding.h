@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_checks.h>
@@ -31,6 +32,117 @@
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
+
+namespace internal {
+namespace corner_certificate {
+
+// certify_corner_embedding(): the cones' orders as given (`orders`, empty: all 2) for `k`
+// cones on a surface of genus `genus` (check_cone_orders(), in the certifier's words), and
+// whether they are `mixed` (one is not 2)
+inline Status check_orders_of_cones(const std::vector<int>& orders, int k, int genus, bool& mixed)
+{
+  Cone_order_check check;
+  if(!orders.empty() && check_cone_orders(orders, static_cast<std::size_t>(k), &check) != OK)
+    return Status::failure(ERROR_WRONG_PARAMETER,
+                           check.problem == Wrong_number_of_cone_orders
+                             ? std::to_string(orders.size()) + " cone orders are given for " + std::to_string(k) +
+                                 " cones (one per cone is needed)"
+                             : "cone " + std::to_string(check.index) + " is given the order " + std::to_string(orders[check.index]) +
+                                 ": orders are integers of at least 2 (cone angle 2 pi / order)");
+  mixed = false;
+  for(int p : orders)
+    mixed = mixed || p != 2;
+  if(genus > 0 && check_cone_orders(Orbifold_signature(genus, orders.empty() ? std::vector<int>(k, 2) : orders),
+                                    static_cast<std::size_t>(k)) == ERROR_NOT_HYPERBOLIC)
+    return Status::failure(ERROR_NOT_HYPERBOLIC, "a closed surface of genus 1 needs at least one cone to be hyperbolic, " +
+                                                 std::to_string(k) + " given");
+  if(k < 5 && !mixed && genus == 0)
+    return Status::failure(ERROR_TOO_FEW_LANDMARKS, "the orbifold needs at least 5 cones, " + std::to_string(k) + " given");
+  return Status();
+}
+
+// certify_corner_embedding(): the cones' vertices (dense indices), which vertices are cones
+// and which are on the border; a cone given twice, or off the boundary of a disk, refused
+template <class TriangleMesh>
+Status index_cones(const Indexed_mesh<TriangleMesh>& M,
+                   const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& cones,
+                   Orbifold_type type, std::vector<std::size_t>& cone_index, std::vector<char>& is_cone,
+                   std::vector<char>& on_border)
+{
+  const int k = static_cast<int>(cones.size());
+  is_cone.assign(M.number_of_vertices(), 0);
+  on_border.assign(M.number_of_vertices(), 0);
+  for(std::size_t v : M.border_loop)
+    on_border[v] = 1;
+  for(int i = 0; i < k; ++i) {
+    const std::size_t v = M.index(cones[i]);
+    if(is_cone[v])
+      return Status::failure(ERROR_DUPLICATE_LANDMARK, "vertex " + std::to_string(v) + " is given twice as a cone");
+    if(type == Disk_type && !on_border[v])
+      return Status::failure(ERROR_LANDMARK_NOT_ON_BORDER, "cone " + std::to_string(i) + " (vertex " + std::to_string(v) +
+                                                             ") is not on the boundary: a disk's cones are corners of its boundary");
+    is_cone[v] = 1;
+    cone_index.push_back(v);
+  }
+  return Status();
+}
+
+// certify_corner_embedding(): the embedding's arrays (every face's points exist) and its
+// charts' arrays (as many as the charts and the points, every point's chart exists)
+inline Status check_embedding_arrays(const Corner_embedding& embedding)
+{
+  if(embedding.face_points.size() != embedding.face_vertices.size())
+    return Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.face_vertices.size()) +
+                                                        " faces but points for " + std::to_string(embedding.face_points.size()));
+  for(std::size_t e = 0; e < embedding.number_of_faces(); ++e)
+    for(int c = 0; c < 3; ++c)
+      if(embedding.face_points[e][c] >= embedding.points.size())
+        return Status::failure(ERROR_WRONG_PARAMETER, "corner " + std::to_string(c) + " of face " + std::to_string(e) +
+                                                            " refers to point " + std::to_string(embedding.face_points[e][c]) +
+                                                            ", but the embedding has " + std::to_string(embedding.points.size()));
+
+  // the charts' arrays
+  if(embedding.has_charts() || !embedding.point_charts.empty()) {
+    if(!embedding.has_charts())
+      return Status::failure(ERROR_WRONG_PARAMETER, "the embedding has points in charts but no chart");
+    if(embedding.chart_corners.size() != embedding.charts.size())
+      return Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.charts.size()) +
+                                                          " charts but corners for " + std::to_string(embedding.chart_corners.size()));
+    if(embedding.point_charts.size() != embedding.points.size() || embedding.chart_points.size() != embedding.points.size())
+      return Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.points.size()) +
+                                                          " points but charts for " + std::to_string(embedding.point_charts.size()) +
+                                                          " and chart points for " + std::to_string(embedding.chart_points.size()));
+    for(std::size_t p = 0; p < embedding.points.size(); ++p)
+      if(embedding.point_charts[p] < -1 || embedding.point_charts[p] >= static_cast<int>(embedding.charts.size()))
+        return Status::failure(ERROR_WRONG_PARAMETER, "point " + std::to_string(p) + " is in chart " +
+                                                            std::to_string(embedding.point_charts[p]) + ", but the embedding has " +
+                                                            std::to_string(embedding.charts.size()) + " charts");
+  }
+
+  return Status();
+}
+
+// certify_corner_embedding(): the certificate's sizes and tolerances, before its checks
+template <class TriangleMesh>
+void start_certificate(const Indexed_mesh<TriangleMesh>& M, const Corner_embedding& embedding, Orbifold_type type, int k,
+                       double expected_area, Corner_embedding_certificate& certificate)
+{
+  certificate.type = type;
+  certificate.number_of_cones = k;
+  certificate.number_of_faces = embedding.number_of_faces();
+  certificate.number_of_vertices = M.number_of_vertices();
+  certificate.number_of_points = embedding.points.size();
+  certificate.number_of_border_vertices = M.border_loop.size();
+  certificate.expected_area = expected_area;
+  certificate.absolute_tolerance = absolute_tolerance;
+  certificate.relative_tolerance = relative_tolerance;
+  certificate.cone_order.assign(k, -1);
+  certificate.cone_orders.assign(k, 0);
+  certificate.measured_cone_orders.assign(k, std::numeric_limits<double>::quiet_NaN());
+}
+
+} // namespace corner_certificate
+} // namespace internal
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
@@ -237,36 +349,14 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
   const std::vector<int> orders = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cone_orders),
                                                                      std::vector<int>());
   bool mixed = false;
-  if(!orders.empty()) {
-    if(static_cast<int>(orders.size()) != k)
-      return fail(Status::failure(ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " +
-                                                         std::to_string(k) + " cones (one per cone is needed)"));
-    for(int i = 0; i < k; ++i) {
-      if(orders[i] < 2)
-        return fail(Status::failure(ERROR_WRONG_PARAMETER, "cone " + std::to_string(i) + " is given the order " + std::to_string(orders[i]) +
-                                                           ": orders are integers of at least 2 (cone angle 2 pi / order)"));
-      mixed = mixed || orders[i] != 2;
-    }
-  }
-  if(genus > 0 && !Orbifold_signature(genus, orders.empty() ? std::vector<int>(k, 2) : orders).is_hyperbolic())
-    return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "a closed surface of genus 1 needs at least one cone to be hyperbolic, " +
-                                                      std::to_string(k) + " given"));
-  if(k < 5 && !mixed && genus == 0)
-    return fail(Status::failure(ERROR_TOO_FEW_LANDMARKS, "the orbifold needs at least 5 cones, " + std::to_string(k) + " given"));
+  const Status orders_checked = cc::check_orders_of_cones(orders, k, genus, mixed);
+  if(!orders_checked)
+    return fail(orders_checked);
   std::vector<std::size_t> cone_index;
-  std::vector<char> is_cone(M.number_of_vertices(), 0), on_border(M.number_of_vertices(), 0);
-  for(std::size_t v : M.border_loop)
-    on_border[v] = 1;
-  for(int i = 0; i < k; ++i) {
-    const std::size_t v = M.index(cones[i]);
-    if(is_cone[v])
-      return fail(Status::failure(ERROR_DUPLICATE_LANDMARK, "vertex " + std::to_string(v) + " is given twice as a cone"));
-    if(type == Disk_type && !on_border[v])
-      return fail(Status::failure(ERROR_LANDMARK_NOT_ON_BORDER, "cone " + std::to_string(i) + " (vertex " + std::to_string(v) +
-                                                                 ") is not on the boundary: a disk's cones are corners of its boundary"));
-    is_cone[v] = 1;
-    cone_index.push_back(v);
-  }
+  std::vector<char> is_cone, on_border;
+  const Status cone_vertices = cc::index_cones(M, cones, type, cone_index, is_cone, on_border);
+  if(!cone_vertices)
+    return fail(cone_vertices);
   Tile tile;
   if(genus > 0) {
     // no tile: the checks do without one (certify_closed_genus())
@@ -290,34 +380,10 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
       tile = tile.transformed(frame);
   }
 
-  // the embedding's arrays
-  if(embedding.face_points.size() != embedding.face_vertices.size())
-    return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.face_vertices.size()) +
-                                                        " faces but points for " + std::to_string(embedding.face_points.size())));
-  for(std::size_t e = 0; e < embedding.number_of_faces(); ++e)
-    for(int c = 0; c < 3; ++c)
-      if(embedding.face_points[e][c] >= embedding.points.size())
-        return fail(Status::failure(ERROR_WRONG_PARAMETER, "corner " + std::to_string(c) + " of face " + std::to_string(e) +
-                                                            " refers to point " + std::to_string(embedding.face_points[e][c]) +
-                                                            ", but the embedding has " + std::to_string(embedding.points.size())));
-
-  // the charts' arrays
-  if(embedding.has_charts() || !embedding.point_charts.empty()) {
-    if(!embedding.has_charts())
-      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has points in charts but no chart"));
-    if(embedding.chart_corners.size() != embedding.charts.size())
-      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.charts.size()) +
-                                                          " charts but corners for " + std::to_string(embedding.chart_corners.size())));
-    if(embedding.point_charts.size() != embedding.points.size() || embedding.chart_points.size() != embedding.points.size())
-      return fail(Status::failure(ERROR_WRONG_PARAMETER, "the embedding has " + std::to_string(embedding.points.size()) +
-                                                          " points but charts for " + std::to_string(embedding.point_charts.size()) +
-                                                          " and chart points for " + std::to_string(embedding.chart_points.size())));
-    for(std::size_t p = 0; p < embedding.points.size(); ++p)
-      if(embedding.point_charts[p] < -1 || embedding.point_charts[p] >= static_cast<int>(embedding.charts.size()))
-        return fail(Status::failure(ERROR_WRONG_PARAMETER, "point " + std::to_string(p) + " is in chart " +
-                                                            std::to_string(embedding.point_charts[p]) + ", but the embedding has " +
-                                                            std::to_string(embedding.charts.size()) + " charts"));
-  }
+  // the embedding's arrays, and its charts' arrays
+  const Status arrays = cc::check_embedding_arrays(embedding);
+  if(!arrays)
+    return fail(arrays);
 
   if(genus > 0) {
     if(embedding.has_charts())
@@ -327,18 +393,7 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     return OK;
   }
 
-  certificate.type = type;
-  certificate.number_of_cones = k;
-  certificate.number_of_faces = embedding.number_of_faces();
-  certificate.number_of_vertices = M.number_of_vertices();
-  certificate.number_of_points = embedding.points.size();
-  certificate.number_of_border_vertices = M.border_loop.size();
-  certificate.expected_area = tile.area();
-  certificate.absolute_tolerance = cc::absolute_tolerance;
-  certificate.relative_tolerance = cc::relative_tolerance;
-  certificate.cone_order.assign(k, -1);
-  certificate.cone_orders.assign(k, 0);
-  certificate.measured_cone_orders.assign(k, std::numeric_limits<double>::quiet_NaN());
+  cc::start_certificate(M, embedding, type, k, tile.area(), certificate);
 
   cc::Certification<TriangleMesh> S(M, embedding, tile, certificate);
   S.is_cone = is_cone;

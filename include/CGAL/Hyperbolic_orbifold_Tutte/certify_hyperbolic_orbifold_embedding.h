@@ -9,6 +9,8 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_chart_solve.h>
@@ -31,6 +33,81 @@
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
+
+namespace internal {
+
+// certify_hyperbolic_orbifold_embedding(): the tile of `type` with `k` cones of orders
+// `orders` (empty: all 2), moved by the frame; none on a surface of genus g >= 1 (the polygon
+// of the cut graph, built once the cut is recovered)
+template <class NamedParameters>
+Status tile_to_certify(Orbifold_type type, int k, const std::vector<int>& orders, long long genus,
+                       const NamedParameters& np, Orbifold_tile<>& tile)
+{
+  if(genus > 0) {
+    if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value)
+      return Status::failure(ERROR_WRONG_PARAMETER, "a frame is for recentred embeddings, which surfaces of genus 1 or more do not have");
+    Cone_order_check check; // (here their number; the orders themselves: the cut graph's tile)
+    if(!orders.empty() && check_cone_orders(orders, static_cast<std::size_t>(k), &check) != OK &&
+       check.problem == Wrong_number_of_cone_orders)
+      return Status::failure(ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " +
+                                                      std::to_string(k) + " landmarks");
+  } else if(!orders.empty()) {
+    const Status s = tile_of_cone_orders(type, orders, k, tile, Poincare_disk_traits_2<>());
+    if(!s)
+      return s;
+  } else if(make_orbifold_tile(type, k, tile) != OK)
+    return Status::failure(k < 5 ? ERROR_TOO_FEW_LANDMARKS : ERROR_NOT_HYPERBOLIC);
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value) {
+    const Hyperbolic_isometry_2<double> frame = CGAL::parameters::get_parameter(np, internal_np::frame);
+    if(!frame.is_orientation_preserving())
+      return Status::failure(ERROR_WRONG_PARAMETER, "the frame must be an orientation-preserving isometry");
+    tile = tile.transformed(frame); // a recentred embedding fills the moved tile
+  }
+  return Status();
+}
+
+// the seams of a corner map: the edges whose two sides disagree on a shared corner (or, in a
+// chart, on the chart point)
+template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters, class Mesh>
+void add_seams_of_corner_map(const TriangleMesh& tm, HalfedgeUVMap uvmap, const NamedParameters& np, Mesh& mesh)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  for(edge_descriptor e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm), o = opposite(h, tm);
+    if(is_border(h, tm) || is_border(o, tm))
+      continue;
+    // corner of target(h) in face(h) vs in face(o); corner of source(h) likewise
+    bool differ = get(uvmap, h) != get(uvmap, prev(o, tm)) || get(uvmap, prev(h, tm)) != get(uvmap, o);
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value) {
+      // (in a chart, two copies of a vertex may have one rounded tile point: their chart points differ)
+      const auto cm = CGAL::parameters::get_parameter(np, internal_np::chart_map);
+      auto other = [&](halfedge_descriptor a, halfedge_descriptor b) {
+        const auto ca = get(cm, a), cb = get(cm, b);
+        return ca.chart != cb.chart || (ca.chart >= 0 && ca.point != cb.point);
+      };
+      differ = differ || other(h, prev(o, tm)) || other(prev(h, tm), o);
+    }
+    if(differ)
+      mesh.add_seam(source(h, tm), target(h, tm));
+  }
+}
+
+// the first cut-mesh vertex (position in `cut_vertices`) of each halfedge of the mesh, or -1
+template <class HalfedgeIndex, class CutVertices>
+std::vector<int> cut_vertex_of_halfedges(const HalfedgeIndex& hindex, const CutVertices& cut_vertices, int n)
+{
+  std::vector<int> index_of(hindex.size(), -1);
+  for(int i = 0; i < n; ++i) {
+    const std::size_t k = hindex(cut_vertices[i].hd.tmhd);
+    if(k != hindex.npos && index_of[k] < 0)
+      index_of[k] = i;
+  }
+  return index_of;
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
@@ -82,7 +159,6 @@ Error_code certify_hyperbolic_orbifold_embedding(
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
@@ -104,47 +180,16 @@ Error_code certify_hyperbolic_orbifold_embedding(
   Orbifold_tile<> tile;
   const std::vector<int> orders =
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cone_orders), std::vector<int>());
-  const long long genus = type == Sphere_type ? internal::closed_mesh_genus(tm) : 0;
-  if(genus > 0) { // (the tile is the polygon of the cut graph, built once the cut is recovered)
-    if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value)
-      return fail(ERROR_WRONG_PARAMETER, "a frame is for recentred embeddings, which surfaces of genus 1 or more do not have");
-    if(!orders.empty() && static_cast<int>(orders.size()) != k)
-      return fail(ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " + std::to_string(k) + " landmarks");
-  } else if(!orders.empty()) {
-    const Status s = internal::tile_of_cone_orders(type, orders, k, tile, Poincare_disk_traits_2<>());
-    if(!s)
-      return fail(s.code, s.message);
-  } else if(make_orbifold_tile(type, k, tile) != OK)
-    return fail(k < 5 ? ERROR_TOO_FEW_LANDMARKS : ERROR_NOT_HYPERBOLIC, "");
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::frame_t>::value) {
-    const Hyperbolic_isometry_2<double> frame = CGAL::parameters::get_parameter(np, internal_np::frame);
-    if(!frame.is_orientation_preserving())
-      return fail(ERROR_WRONG_PARAMETER, "the frame must be an orientation-preserving isometry");
-    tile = tile.transformed(frame); // a recentred embedding fills the moved tile
-  }
+  const long long genus = type == Sphere_type ? closed_mesh_genus(tm) : 0;
+  const Status t = internal::tile_to_certify(type, k, orders, genus, np, tile);
+  if(!t)
+    return fail(t.code, t.message);
 
   // the cut: edges whose two sides disagree on a shared corner
   internal::Seam_mesh_storage<TriangleMesh> seams(tm);
   typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
   Mesh& mesh = seams.mesh;
-  for(edge_descriptor e : edges(tm)) {
-    const halfedge_descriptor h = halfedge(e, tm), o = opposite(h, tm);
-    if(is_border(h, tm) || is_border(o, tm))
-      continue;
-    // corner of target(h) in face(h) vs in face(o); corner of source(h) likewise
-    bool differ = get(uvmap, h) != get(uvmap, prev(o, tm)) || get(uvmap, prev(h, tm)) != get(uvmap, o);
-    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value) {
-      // (in a chart, two copies of a vertex may have one rounded tile point: their chart points differ)
-      const auto cm = CGAL::parameters::get_parameter(np, internal_np::chart_map);
-      auto other = [&](halfedge_descriptor a, halfedge_descriptor b) {
-        const auto ca = get(cm, a), cb = get(cm, b);
-        return ca.chart != cb.chart || (ca.chart >= 0 && ca.point != cb.point);
-      };
-      differ = differ || other(h, prev(o, tm)) || other(prev(h, tm), o);
-    }
-    if(differ)
-      mesh.add_seam(source(h, tm), target(h, tm));
-  }
+  internal::add_seams_of_corner_map(tm, uvmap, np, mesh);
   typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
   if(!seams.border_halfedge(bhd))
     return fail(ERROR_CUT_FAILED, "the map has no cut: a closed mesh must be cut open through the landmarks");
@@ -177,12 +222,7 @@ Error_code certify_hyperbolic_orbifold_embedding(
 
   // the point of each cut-mesh vertex, from any of its corners (they agree off the cut)
   const internal::Dense_index<halfedge_descriptor> hindex(halfedges(tm));
-  std::vector<int> index_of(hindex.size(), -1);
-  for(int i = 0; i < P.n; ++i) {
-    const std::size_t k = hindex(cut_vertices[i].hd.tmhd);
-    if(k != hindex.npos && index_of[k] < 0)
-      index_of[k] = i;
-  }
+  const std::vector<int> index_of = internal::cut_vertex_of_halfedges(hindex, cut_vertices, P.n);
   std::vector<std::complex<double> > uv(P.n, std::complex<double>(2.0, 0.0));
   constexpr bool with_charts = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value;
   std::vector<int> chart_of(with_charts ? P.n : 0, -2); // (-2: not seen yet)

@@ -8,7 +8,9 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_type.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_checks.h>
@@ -184,12 +186,6 @@ Status check_mesh(const TriangleMesh& tm,
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
-the number of landmarks (cones or corners) the orbifolds need at least.
-*/
-inline constexpr std::size_t minimum_number_of_landmarks = 5;
-
-/*!
-\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
 checks the landmark (cone / corner) vertex indices of `tm` and converts them to vertex
 descriptors: index `i` is the `i`-th vertex of `vertices(tm)` (for a mesh read from a file,
@@ -270,21 +266,6 @@ Status check_landmarks(const TriangleMesh& tm,
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
-the fewest landmarks (cones) that make the orbifold of a mesh hyperbolic: on a closed mesh of
-genus 0, 5 cones of angle \f$\pi\f$, or 3 when cone orders are given (\f$(2,3,7)\f$...); on a
-closed mesh of genus 1, one cone; of genus 2 or more, none; on a disk, 5 right-angled corners.
-*/
-inline std::size_t minimum_number_of_landmarks_for(Orbifold_type type, long long genus, bool cone_orders_given)
-{
-  if(type == Sphere_type && genus >= 2)
-    return 0;
-  if(type == Sphere_type && genus == 1)
-    return 1;
-  return (cone_orders_given && type == Sphere_type) ? 3 : minimum_number_of_landmarks;
-}
-
-/*!
-\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 the fewest landmarks for the mesh `tm` (`check_mesh()` passed for `type`): on a closed mesh of
 genus \f$ g \ge 1 \f$, `minimum_number_of_landmarks_for()` (1 or 0); otherwise `genus0_minimum`
 (5 for cones of angle \f$\pi\f$, 3 when cone orders are given).
@@ -292,7 +273,7 @@ genus \f$ g \ge 1 \f$, `minimum_number_of_landmarks_for()` (1 or 0); otherwise `
 template <class TriangleMesh>
 std::size_t minimum_number_of_landmarks_of(const TriangleMesh& tm, Orbifold_type type, std::size_t genus0_minimum)
 {
-  const long long genus = type == Sphere_type ? internal::closed_mesh_genus(tm) : 0;
+  const long long genus = type == Sphere_type ? closed_mesh_genus(tm) : 0;
   return genus > 0 ? minimum_number_of_landmarks_for(type, genus, false) : genus0_minimum;
 }
 

@@ -8,6 +8,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
 
@@ -55,11 +56,10 @@ Status compute_cut_graph(const TriangleMesh& tm,
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   paths.clear();
-  const long long genus = internal::closed_mesh_genus(tm);
+  const long long genus = closed_mesh_genus(tm);
   if(genus < 1)
     return Status::failure(ERROR_WRONG_TOPOLOGY, "a cut graph is for a closed mesh of genus 1 or more; this one has V-E+F = " +
-                                                   std::to_string(static_cast<long long>(num_vertices(tm)) - static_cast<long long>(num_edges(tm)) +
-                                                                  static_cast<long long>(num_faces(tm))));
+                                                   std::to_string(euler_characteristic(tm)));
   std::vector<std::pair<int, int> > cut;
   const Status r = internal::compute_genus_cut_graph(tm, vpm, landmarks, genus, cut);
   if(!r)

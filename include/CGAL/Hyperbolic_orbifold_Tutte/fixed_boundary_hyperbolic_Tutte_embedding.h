@@ -39,6 +39,124 @@
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// fixed_boundary_hyperbolic_Tutte_embedding()'s input: a disk, its corner vertices, a
+// convex polygon, in the same order; whether the polygon and the corners go counterclockwise
+template <class TriangleMesh, class VertexPointMap>
+Status check_fixed_boundary_input(const TriangleMesh& tm, VertexPointMap vpm,
+                                  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corner_vertices,
+                                  const std::vector<std::complex<double> >& corners, bool& ccw_polygon, bool& ccw_corners)
+{
+  const std::size_t n = corner_vertices.size();
+  Status r = Hyperbolic_orbifold_Tutte::check_mesh(tm, vpm, Disk_type);
+  if(r && n < 3)
+    r = Status::failure(ERROR_TOO_FEW_LANDMARKS, std::to_string(n) + " corner vertices are given; a polygon needs at least 3");
+  if(r && corners.size() != n)
+    r = Status::failure(ERROR_WRONG_PARAMETER, std::to_string(n) + " corner vertices are given for a polygon of " +
+                                                 std::to_string(corners.size()) + " corners (one per corner is needed)");
+  if(r) {
+    r = Hyperbolic_orbifold_Tutte::check_landmark_vertices(tm, corner_vertices, Disk_type, 3);
+    if(!r)
+      r.message = "corner vertices: " + r.message;
+  }
+  if(r)
+    r = internal::check_convex_polygon(corners, ccw_polygon);
+  if(r)
+    r = internal::check_boundary_order(tm, corner_vertices, ccw_corners);
+  return r;
+}
+
+// fixed_boundary_hyperbolic_Tutte_embedding(): the message of an inner edge between two
+// boundary vertices of one side (ERROR_BOUNDARY_CHORD), in the user's corner numbers
+template <class VertexDescriptor>
+std::string boundary_chord_message(const Flat_problem& P, const std::vector<VertexDescriptor>& base_vertex, std::size_t n,
+                                   bool ccw_corners, Embedding_statistics& st)
+{
+  st.problem_vertices.assign(P.problem_vertices.begin(), P.problem_vertices.end());
+  const VertexDescriptor a = base_vertex[st.problem_vertices[0]], b = base_vertex[st.problem_vertices[1]];
+  std::size_t s = n; // the normalised side holding both ends
+  for(int v = 0; v < P.n && s == n; ++v)
+    if(base_vertex[P.base[v]] == a || base_vertex[P.base[v]] == b)
+      s = P.side[v] >= 0 ? static_cast<std::size_t>(P.side[v]) : n;
+  auto user = [&](std::size_t q) { return ccw_corners ? q % n : (n - q % n) % n; };
+  return "the inner edge between mesh vertices " + std::to_string(st.problem_vertices[0]) + " and " +
+         std::to_string(st.problem_vertices[1]) + " joins two boundary vertices of one side of the polygon" +
+         (s < n ? " (between corners " + std::to_string((std::min)(user(s), user(s + 1))) + " and " +
+                    std::to_string((std::max)(user(s), user(s + 1))) + ")" : std::string()) +
+         ": its triangles would be flat; make a boundary vertex between its ends a corner, or split the edge";
+}
+
+// the user's edge weights (`wmap`) into P.edge_weight (no seam: one copy per edge); false
+// (`msg` says which) when one is not a positive finite number
+template <class TriangleMesh, class VertexDescriptor, class EdgeWeightMap>
+bool user_edge_weights(Flat_problem& P, const TriangleMesh& tm, const std::vector<VertexDescriptor>& base_vertex,
+                       const EdgeWeightMap& wmap, std::string& msg)
+{
+  P.edge_weight.resize(P.edges.size());
+  for(std::size_t i = 0; i < P.edges.size(); ++i) {
+    const int a = P.base[P.edges[i][0]], b = P.base[P.edges[i][1]];
+    const double w = static_cast<double>(get(wmap, edge(base_vertex[a], base_vertex[b], tm).first));
+    if(!(w > 0) || !std::isfinite(w)) {
+      msg = "the user weight of the edge between mesh vertices " + std::to_string(a) + " and " + std::to_string(b) +
+            " is not a positive finite number";
+      return false;
+    }
+    P.edge_weight[i] = w;
+  }
+  return true;
+}
+
+// the start of the fixed-boundary solve: the orbifold's Tutte initialisation (boundary
+// vertices on their sides), then the boundary fixed at its place: the fraction of the side's
+// hyperbolic length that is the vertex's fraction of its side's 3D arc length
+template <class Domain, class Point3>
+Error_code fixed_boundary_start(Flat_problem& P, const Domain& domain, const std::vector<std::complex<double> >& corners,
+                                const std::vector<Point3>& points, std::vector<double>& x)
+{
+  typedef std::complex<double> C;
+  const Error_code ec = internal::initialize_embedding(P, domain, points, x);
+  if(ec != OK)
+    return ec;
+  std::vector<C> z(P.n);
+  for(int v = 0; v < P.n; ++v)
+    z[v] = internal::position(P, x, v);
+  const std::vector<double> fraction = internal::side_arc_fractions(P, points);
+  for(int v : P.border_loop)
+    if(P.kind[v] == On_line) {
+      const int s = P.side[v];
+      P.kind[v] = Fixed;
+      P.fixed[v] = internal::point_on_geodesic_segment(corners[domain.side_source(s)], corners[domain.side_target(s)], fraction[v]);
+    }
+  internal::number_variables(P);
+  x.assign(P.n_vars, 0.0);
+  for(int v = 0; v < P.n; ++v)
+    if(P.kind[v] == Free) {
+      x[P.var[v]] = z[v].real();
+      x[P.var[v] + 1] = z[v].imag();
+    }
+  return OK;
+}
+
+// Newton to the floor of double when only flipped faces keep the certificate from passing,
+// then the certificate again
+template <class Domain>
+void polish_and_certify(const Flat_problem& P, const Domain& domain, const Solver_options& opt, std::vector<double>& x,
+                        std::vector<std::complex<double> >& uv, Embedding_statistics& st)
+{
+  Solver_options polish = opt;
+  polish.polish = true;
+  polish.vertex_imbalance = 0;
+  Solver_statistics ps;
+  internal::minimize_energy(P, x, polish, ps); // (only descent steps change x)
+  st.polishing_iterations += ps.iterations;
+  st.energy = ps.energy;
+  st.relative_gradient_norm = ps.relative_gradient_norm;
+  internal::certify(P, domain, x, uv, st);
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
@@ -154,21 +272,7 @@ Error_code fixed_boundary_hyperbolic_Tutte_embedding(
     corners.push_back(C(CGAL::to_double(p.x()), CGAL::to_double(p.y())));
   const std::size_t n = corner_vertices.size();
   bool ccw_polygon = true, ccw_corners = true;
-  Status r = check_mesh(tm, vpm, Disk_type);
-  if(r && n < 3)
-    r = Status::failure(ERROR_TOO_FEW_LANDMARKS, std::to_string(n) + " corner vertices are given; a polygon needs at least 3");
-  if(r && corners.size() != n)
-    r = Status::failure(ERROR_WRONG_PARAMETER, std::to_string(n) + " corner vertices are given for a polygon of " +
-                                                 std::to_string(corners.size()) + " corners (one per corner is needed)");
-  if(r) {
-    r = check_landmark_vertices(tm, corner_vertices, Disk_type, 3);
-    if(!r)
-      r.message = "corner vertices: " + r.message;
-  }
-  if(r)
-    r = internal::check_convex_polygon(corners, ccw_polygon);
-  if(r)
-    r = internal::check_boundary_order(tm, corner_vertices, ccw_corners);
+  const Status r = internal::check_fixed_boundary_input(tm, vpm, corner_vertices, corners, ccw_polygon, ccw_corners);
   if(!r)
     return fail(r.code, r.message);
 
@@ -196,20 +300,8 @@ Error_code fixed_boundary_hyperbolic_Tutte_embedding(
   std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> cut_vertices;
   std::string msg;
   Error_code ec = internal::build_flat_topology(seams.mesh, bhd, landmarks, domain, P, base_vertex, cut_vertices, msg);
-  if(ec == ERROR_BOUNDARY_CHORD && P.problem_vertices.size() == 2) { // (said in the user's corner numbers)
-    st.problem_vertices.assign(P.problem_vertices.begin(), P.problem_vertices.end());
-    const vertex_descriptor a = base_vertex[st.problem_vertices[0]], b = base_vertex[st.problem_vertices[1]];
-    std::size_t s = n; // the normalised side holding both ends
-    for(int v = 0; v < P.n && s == n; ++v)
-      if(base_vertex[P.base[v]] == a || base_vertex[P.base[v]] == b)
-        s = P.side[v] >= 0 ? static_cast<std::size_t>(P.side[v]) : n;
-    auto user = [&](std::size_t q) { return ccw_corners ? q % n : (n - q % n) % n; };
-    msg = "the inner edge between mesh vertices " + std::to_string(st.problem_vertices[0]) + " and " +
-          std::to_string(st.problem_vertices[1]) + " joins two boundary vertices of one side of the polygon" +
-          (s < n ? " (between corners " + std::to_string((std::min)(user(s), user(s + 1))) + " and " +
-                     std::to_string((std::max)(user(s), user(s + 1))) + ")" : std::string()) +
-          ": its triangles would be flat; make a boundary vertex between its ends a corner, or split the edge";
-  }
+  if(ec == ERROR_BOUNDARY_CHORD && P.problem_vertices.size() == 2) // (said in the user's corner numbers)
+    msg = internal::boundary_chord_message(P, base_vertex, n, ccw_corners, st);
   if(ec != OK)
     return fail(ec, msg);
   CGAL_assertion(!P.landmark_order_reversed); // (normalised above)
@@ -217,16 +309,8 @@ Error_code fixed_boundary_hyperbolic_Tutte_embedding(
   for(vertex_descriptor v : base_vertex)
     points.push_back(get(vpm, v));
   if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
-    const auto wmap = get_parameter(np, internal_np::edge_weight_map);
-    P.edge_weight.resize(P.edges.size());
-    for(std::size_t i = 0; i < P.edges.size(); ++i) { // (no seam: one copy per edge)
-      const int a = P.base[P.edges[i][0]], b = P.base[P.edges[i][1]];
-      const double w = static_cast<double>(get(wmap, edge(base_vertex[a], base_vertex[b], tm).first));
-      if(!(w > 0) || !std::isfinite(w))
-        return fail(ERROR_WRONG_PARAMETER, "the user weight of the edge between mesh vertices " + std::to_string(a) +
-                                             " and " + std::to_string(b) + " is not a positive finite number");
-      P.edge_weight[i] = w;
-    }
+    if(!internal::user_edge_weights(P, tm, base_vertex, get_parameter(np, internal_np::edge_weight_map), msg))
+      return fail(ERROR_WRONG_PARAMETER, msg);
   } else {
     internal::compute_edge_weights(P, points, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
                                    choose_parameter(get_parameter(np, internal_np::weight_epsilon), 1e-6));
@@ -238,26 +322,9 @@ Error_code fixed_boundary_hyperbolic_Tutte_embedding(
   // the vertex's fraction of its side's 3D arc length
   const auto t1 = Clock::now();
   std::vector<double> x;
-  ec = internal::initialize_embedding(P, domain, points, x);
+  ec = internal::fixed_boundary_start(P, domain, corners, points, x);
   if(ec != OK)
     return fail(ec, "the Euclidean Tutte initialisation failed");
-  std::vector<C> z(P.n);
-  for(int v = 0; v < P.n; ++v)
-    z[v] = internal::position(P, x, v);
-  const std::vector<double> fraction = internal::side_arc_fractions(P, points);
-  for(int v : P.border_loop)
-    if(P.kind[v] == internal::On_line) {
-      const int s = P.side[v];
-      P.kind[v] = internal::Fixed;
-      P.fixed[v] = internal::point_on_geodesic_segment(corners[domain.side_source(s)], corners[domain.side_target(s)], fraction[v]);
-    }
-  internal::number_variables(P);
-  x.assign(P.n_vars, 0.0);
-  for(int v = 0; v < P.n; ++v)
-    if(P.kind[v] == internal::Free) {
-      x[P.var[v]] = z[v].real();
-      x[P.var[v] + 1] = z[v].imag();
-    }
   st.number_of_vertices = P.n;
   st.number_of_variables = P.n_vars;
   st.time_initialization = seconds_since(t1);
@@ -273,17 +340,8 @@ Error_code fixed_boundary_hyperbolic_Tutte_embedding(
   const auto t3 = Clock::now();
   std::vector<C> uv(P.n);
   internal::certify(P, domain, x, uv, st);
-  if(ec == OK && internal::flipped_only(st)) {
-    internal::Solver_options polish = opt;
-    polish.polish = true;
-    polish.vertex_imbalance = 0;
-    Solver_statistics ps;
-    internal::minimize_energy(P, x, polish, ps); // (only descent steps change x)
-    st.polishing_iterations += ps.iterations;
-    st.energy = ps.energy;
-    st.relative_gradient_norm = ps.relative_gradient_norm;
-    internal::certify(P, domain, x, uv, st);
-  }
+  if(ec == OK && internal::flipped_only(st))
+    internal::polish_and_certify(P, domain, opt, x, uv, st);
   if(ec == OK)
     internal::repair(P, domain, x, uv, st); // (nothing unless faces are flipped or flat)
   st.time_certificate = seconds_since(t3);

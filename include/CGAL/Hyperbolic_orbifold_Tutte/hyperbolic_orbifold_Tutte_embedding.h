@@ -7,6 +7,8 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
@@ -31,6 +33,24 @@
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
+namespace internal {
+
+// the one-call function's named parameters for the solver, given to its parameterizer
+template <class Parameterizer, class NamedParameters>
+void set_solver_parameters(Parameterizer& parameterizer, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  parameterizer.set_gradient_tolerance(choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-10));
+  parameterizer.set_maximum_number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200));
+  parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
+  parameterizer.set_multigrid_threshold(choose_parameter(get_parameter(np, internal_np::multigrid_threshold),
+                                                         static_cast<std::size_t>(internal::default_multigrid_from)));
+  parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
@@ -156,7 +176,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   const std::vector<int> orders = choose_parameter(get_parameter(np, internal_np::cone_orders), std::vector<int>());
   Orbifold_type type = Sphere_type;
   Status r = internal::prepare_mesh(tm, vpm, np, type);
-  const long long genus = (r && type == Sphere_type) ? internal::closed_mesh_genus(tm) : 0;
+  const long long genus = (r && type == Sphere_type) ? closed_mesh_genus(tm) : 0;
   if(r)
     r = check_landmark_vertices(tm, landmarks, type, minimum_number_of_landmarks_for(type, genus, !orders.empty()));
   std::vector<vertex_descriptor> ordered;
@@ -167,9 +187,9 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
                                   ordered, st.landmark_order);
   std::vector<int> ordered_orders; // (in the order of the cut)
   if(r && !orders.empty()) {
-    if(orders.size() != landmarks.size())
-      r = Status::failure(ERROR_WRONG_PARAMETER, std::to_string(orders.size()) + " cone orders are given for " +
-                                                     std::to_string(landmarks.size()) + " landmarks (one per landmark is needed)");
+    Cone_order_check check; // (here their number; the orders themselves: the parameterizer's tile)
+    if(check_cone_orders(orders, landmarks.size(), &check) != OK && check.problem == Wrong_number_of_cone_orders)
+      r = Status::failure(ERROR_WRONG_PARAMETER, check.message);
     else
       for(std::size_t i : st.landmark_order)
         ordered_orders.push_back(orders[i]);
@@ -197,12 +217,7 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   typedef typename Parameterizer::Point_2 Point_2;
   Parameterizer parameterizer(type, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
                               choose_parameter(get_parameter(np, internal_np::weight_epsilon), 1e-6));
-  parameterizer.set_gradient_tolerance(choose_parameter(get_parameter(np, internal_np::gradient_tolerance), 1e-10));
-  parameterizer.set_maximum_number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200));
-  parameterizer.set_verbose(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false));
-  parameterizer.set_multigrid_threshold(choose_parameter(get_parameter(np, internal_np::multigrid_threshold),
-                                                         static_cast<std::size_t>(internal::default_multigrid_from)));
-  parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
+  internal::set_solver_parameters(parameterizer, np);
   parameterizer.set_cone_orders(ordered_orders);
   parameterizer.set_progress(progress);
   if(genus > 0) // the tile's corner 0: where the border runs along the cut graph's first edge

@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/embedding_scale.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -143,195 +144,124 @@ struct Map_reliability
   std::size_t protrusion_flagged = 0;
 };
 
+
 namespace internal {
 
-// the scale of one embedding: per vertex (vertices() order) the conformal factor rho (the
-// hyperbolic length of its edges per unit of 3D length, root mean square over the edges of
-// its faces) and the hyperbolic one-ring size (its longest edge); the squeezed regions
-// (components of rho < squeeze_ratio x mean), and which of their vertices are cones (a
-// corner at a corner of the tile); the logarithm of rho smoothed over the one-rings (NaN where
-// rho is not resolved), and whether the one-ring is below `rounding_ulps` units in the last
-// place of double at the vertex (as a hyperbolic length)
-template <class TriangleMesh>
-struct Embedding_scale
+// map_reliability()'s scale test: the map's 3D scale at each located vertex, rho_A /
+// rho_B(image) (the image's log rho interpolated in its face), against the reference; and
+// its rounding test
+template <class TriangleMeshA, class TriangleMeshB, class Locator>
+void reliability_scale_test(const TriangleMeshA& A, const Embedding_scale<TriangleMeshA>& a,
+                            const Embedding_scale<TriangleMeshB>& b, const Locator& locB,
+                            const std::vector<typename Locator::Location>& locations,
+                            const Map_reliability_options& options, Map_reliability& result,
+                            std::vector<char>& scale_fails, std::vector<char>& rounding_fails)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
-
-  std::vector<vertex_descriptor> verts;
-  Dense_index<vertex_descriptor> index;
-  std::vector<double> rho, size, log_rho;
-  double total_area = 0; // the 3D area of the mesh
-  std::vector<char> cone, unresolved;
-  std::vector<std::size_t> region;    // region of each squeezed vertex (npos: not squeezed)
-  std::vector<std::size_t> collapse;  // per region: the cone in it, else its vertex of least rho
-  std::vector<std::size_t> region_size;
-  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-
-  template <class HalfedgeUVMap, class VertexPointMap, class Locator>
-  Embedding_scale(const TriangleMesh& tm, HalfedgeUVMap uv, VertexPointMap vpm, const Locator& loc, double squeeze_ratio,
-                  int smoothing_rounds = 0, double rounding_ulps = 0)
-    : index(vertices(tm))
+  typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_descriptor_A;
+  const std::size_t n = a.verts.size();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> lambda(n, nan);
+  for(std::size_t i = 0; i < n; ++i) {
+    const typename Locator::Location& l = locations[i];
+    if(!l.success)
+      continue;
+    bool image_unresolved = false, image_at_landmark = false;
+    double log_rho_b = 0;
+    for(int j = 0; j < 3; ++j) {
+      const std::size_t v = locB.corner_vertex_index(l.face_index, j);
+      image_unresolved = image_unresolved || b.unresolved[v];
+      image_at_landmark = image_at_landmark || (b.squeezed(v) && b.cone[b.collapse[b.region[v]]]);
+      log_rho_b += l.barycentric[j] * b.log_rho[v];
+    }
+    const bool at_landmark = a.squeezed(i) && a.cone[a.collapse[a.region[i]]];
+    // below double in either embedding: its image is not resolved, unless both embeddings
+    // collapse its neighbourhood onto a landmark's cone (where the charts resolve it)
+    if(a.unresolved[i] || image_unresolved) {
+      rounding_fails[i] = !(at_landmark || image_at_landmark);
+      continue;
+    }
+    lambda[i] = a.log_rho[i] - log_rho_b;
+  }
+  // the reference: the ratio of the sizes of the two surfaces (sqrt of the ratio of their
+  // areas), what a map between isometric surfaces scales every length by (a median over the
+  // vertices would follow a protrusion that most vertices are on)
+  const double reference = (a.total_area > 0 && b.total_area > 0) ? 0.5 * std::log(b.total_area / a.total_area) : 0.0;
+  // the noise: the fluctuation of lambda between neighbours (robust standard deviation of
+  // lambda minus the mean over its neighbours), not its variation along the surface
   {
-    typedef typename Locator::Point_2 Point_2;
-    const auto distance = typename Locator::Traits().compute_hyperbolic_distance_2_object();
-    auto point = [&](halfedge_descriptor h) {
-      const auto p = get(uv, h);
-      return Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-    };
-    for(vertex_descriptor v : vertices(tm))
-      verts.push_back(v);
-    const std::size_t n = verts.size();
-    rho.assign(n, std::numeric_limits<double>::infinity());
-    size.assign(n, 0.0);
-    cone.assign(n, 0);
-    // per vertex and face, the edge from the previous corner (each edge of a vertex once)
-    std::vector<double> sh(n, 0.0), s3(n, 0.0), area(n, 0.0), ulp(n, 0.0);
-    for(face_descriptor f : faces(tm)) {
-      halfedge_descriptor h = halfedge(f, tm);
-      Point_2 p = point(h);
-      const halfedge_descriptor first = h;
-      const double a3 = std::sqrt(CGAL::to_double(CGAL::squared_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)),
-                                                                       get(vpm, target(next(h, tm), tm)))));
-      total_area += a3;
-      do {
-        const halfedge_descriptor g = next(h, tm);
-        const Point_2 q = point(g);
-        const std::size_t i = index(target(g, tm));
-        const double dh = CGAL::to_double(distance(p, q));
-        sh[i] += dh * dh;
-        s3[i] += CGAL::to_double(CGAL::squared_distance(get(vpm, target(g, tm)), get(vpm, target(h, tm))));
-        size[i] = (std::max)(size[i], dh);
-        area[i] += a3;
-        // the spacing of double at q, as a hyperbolic length (the metric 2 |dz| / (1 - |z|^2))
-        const double x = CGAL::to_double(q.x()), y = CGAL::to_double(q.y()), r2 = x * x + y * y;
-        const double spacing = std::numeric_limits<double>::epsilon() * (std::max)((std::max)(std::abs(x), std::abs(y)), 1e-300);
-        ulp[i] = (std::max)(ulp[i], r2 < 1 ? 2 * spacing / (1 - r2) : std::numeric_limits<double>::infinity());
-        h = g;
-        p = q;
-      } while(h != first);
-    }
-    unresolved.assign(n, 0);
-    log_rho.assign(n, std::numeric_limits<double>::quiet_NaN());
+    std::vector<double> fluctuation;
     for(std::size_t i = 0; i < n; ++i) {
-      unresolved[i] = rounding_ulps > 0 && !(size[i] >= rounding_ulps * ulp[i]);
-      if(!unresolved[i] && s3[i] > 0 && sh[i] > 0 && std::isfinite(sh[i]))
-        log_rho[i] = 0.5 * std::log(sh[i] / s3[i]);
-    }
-    for(int round = 0; round < smoothing_rounds; ++round) {
-      std::vector<double> smoothed(n, std::numeric_limits<double>::quiet_NaN());
-      for(std::size_t i = 0; i < n; ++i) {
-        if(std::isnan(log_rho[i]))
-          continue;
-        double sum = area[i] * log_rho[i], weight = area[i];
-        const halfedge_descriptor h0 = halfedge(verts[i], tm);
-        if(h0 != GT::null_halfedge())
-          for(vertex_descriptor w : vertices_around_target(h0, tm)) {
-            const std::size_t k = index(w);
-            if(!std::isnan(log_rho[k])) {
-              sum += area[k] * log_rho[k];
-              weight += area[k];
-            }
-          }
-        smoothed[i] = weight > 0 ? sum / weight : log_rho[i];
-      }
-      log_rho.swap(smoothed);
-    }
-    double total_h = 0, total_3 = 0;
-    for(std::size_t i = 0; i < n; ++i)
-      if(s3[i] > 0 && std::isfinite(sh[i])) {
-        rho[i] = std::sqrt(sh[i] / s3[i]);
-        total_h += sh[i];
-        total_3 += s3[i];
-      }
-    const double threshold = squeeze_ratio * (total_3 > 0 ? std::sqrt(total_h / total_3) : 0.0);
-    region.assign(n, npos);
-    std::vector<std::size_t> stack;
-    for(std::size_t i = 0; i < n; ++i) {
-      if(region[i] != npos || !(rho[i] < threshold))
+      if(!std::isfinite(lambda[i]))
         continue;
-      const std::size_t r = collapse.size();
-      collapse.push_back(i);
-      region_size.push_back(0);
-      region[i] = r;
-      stack.assign(1, i);
-      while(!stack.empty()) {
-        const std::size_t j = stack.back();
-        stack.pop_back();
-        ++region_size[r];
-        // a cone: a corner at a corner of the tile (landmarks are placed there exactly)
-        for(halfedge_descriptor h : halfedges_around_target(halfedge(verts[j], tm), tm))
-          if(!is_border(h, tm))
-            for(int c = 0; c < loc.tile().number_of_corners(); ++c)
-              if(point(h) == loc.tile().corner(c))
-                cone[j] = 1;
-        std::size_t& c = collapse[r];
-        if(!cone[c] && (cone[j] || rho[j] < rho[c]))
-          c = j;
-        for(vertex_descriptor w : vertices_around_target(halfedge(verts[j], tm), tm)) {
-          const std::size_t k = index(w);
-          if(region[k] == npos && rho[k] < threshold) {
-            region[k] = r;
-            stack.push_back(k);
-          }
+      double sum = 0;
+      std::size_t count = 0;
+      for(vertex_descriptor_A w : vertices_around_target(halfedge(a.verts[i], A), A))
+        if(std::isfinite(lambda[a.index(w)])) {
+          sum += lambda[a.index(w)];
+          ++count;
         }
+      if(count > 0)
+        fluctuation.push_back(std::abs(lambda[i] - sum / double(count)));
+    }
+    if(!fluctuation.empty()) {
+      std::nth_element(fluctuation.begin(), fluctuation.begin() + fluctuation.size() / 2, fluctuation.end());
+      result.scale_noise = 1.4826 * fluctuation[fluctuation.size() / 2];
+    }
+  }
+  result.reference_scale = std::exp(reference);
+  const double limit = std::log(options.scale_factor);
+  for(std::size_t i = 0; i < n; ++i)
+    if(std::isfinite(lambda[i])) {
+      result.scale_disagreement[i] = lambda[i] - reference;
+      scale_fails[i] = std::abs(result.scale_disagreement[i]) > limit;
+    }
+}
+
+// the diagonal of the bounding box of `B`'s points
+template <class TriangleMeshB, class VertexPointMapB>
+double bounding_box_diagonal(const TriangleMeshB& B, VertexPointMapB vpmB)
+{
+  CGAL::Bbox_3 box;
+  for(typename boost::graph_traits<TriangleMeshB>::vertex_descriptor v : vertices(B))
+    box += get(vpmB, v).bbox();
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
+// the corner of `B` around `v` whose point is nearest to `image` (hyperbolic distance):
+// its distance (infinity when there is none) and its point
+template <class TriangleMeshB, class HalfedgeUVMapB, class Point_2, class Distance>
+double nearest_corner_point(const TriangleMeshB& B, HalfedgeUVMapB uvB,
+                            typename boost::graph_traits<TriangleMeshB>::vertex_descriptor v, const Point_2& image,
+                            const Distance& distance, std::complex<double>& target)
+{
+  typedef std::complex<double> C;
+  double discrepancy = std::numeric_limits<double>::infinity();
+  for(typename boost::graph_traits<TriangleMeshB>::halfedge_descriptor h : halfedges_around_target(halfedge(v, B), B))
+    if(!is_border(h, B)) {
+      const auto p = get(uvB, h);
+      const C q(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      const double d = CGAL::to_double(distance(image, Point_2(q.real(), q.imag())));
+      if(d < discrepancy) {
+        discrepancy = d;
+        target = q;
       }
     }
-  }
+  return discrepancy;
+}
 
-  bool squeezed(std::size_t i) const { return region[i] != npos; }
-
-  // from vertex i downhill in rho (to the neighbour of least rho) until a squeezed vertex or
-  // a local minimum; returns the collapse vertex of that squeezed region, or the minimum
-  std::size_t descend(const TriangleMesh& tm, std::size_t i) const
-  {
-    while(!squeezed(i)) {
-      const halfedge_descriptor h0 = halfedge(verts[i], tm);
-      if(h0 == GT::null_halfedge())
-        return i;
-      std::size_t best = i;
-      for(vertex_descriptor w : vertices_around_target(h0, tm)) {
-        const std::size_t k = index(w);
-        if(rho[k] < rho[best])
-          best = k;
-      }
-      if(best == i)
-        return i;
-      i = best;
-    }
-    return collapse[region[i]];
+// the counts and the list of the unreliable vertices
+inline void tally_unreliable_vertices(const std::vector<char>& flagged, const std::vector<char>& scale_fails,
+                                      const std::vector<char>& rounding_fails, Map_reliability& result)
+{
+  for(std::size_t i = 0; i < flagged.size(); ++i) {
+    result.protrusion_flagged += flagged[i];
+    result.scale_flagged += scale_fails[i];
+    result.rounding_flagged += rounding_fails[i];
+    if(flagged[i] || scale_fails[i] || rounding_fails[i])
+      result.unreliable_vertices.push_back(i);
   }
-
-  // descend(), memoized in `memo` (npos: not known yet) for every vertex of the walk
-  std::size_t basin(const TriangleMesh& tm, std::size_t i, std::vector<std::size_t>& memo) const
-  {
-    if(memo[i] != npos)
-      return memo[i];
-    std::vector<std::size_t> path;
-    std::size_t end = i;
-    while(memo[end] == npos && !squeezed(end)) {
-      path.push_back(end);
-      const halfedge_descriptor h0 = halfedge(verts[end], tm);
-      std::size_t best = end;
-      if(h0 != GT::null_halfedge())
-        for(vertex_descriptor w : vertices_around_target(h0, tm)) {
-          const std::size_t k = index(w);
-          if(rho[k] < rho[best])
-            best = k;
-        }
-      if(best == end)
-        break;
-      end = best;
-    }
-    const std::size_t result = memo[end] != npos ? memo[end] : (squeezed(end) ? collapse[region[end]] : end);
-    for(std::size_t j : path)
-      memo[j] = result;
-    memo[i] = result;
-    return result;
-  }
-};
+}
 
 } // namespace internal
 
@@ -456,7 +386,6 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_descriptor_A;
-  typedef typename boost::graph_traits<TriangleMeshB>::halfedge_descriptor halfedge_descriptor_B;
   typedef typename Locator::Point_2 Point_2;
   typedef Hyperbolic_isometry_2<double> Isometry;
   typedef std::complex<double> C;
@@ -472,74 +401,12 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
   if(locations.size() != n || !locB.is_valid())
     return result;
 
-  // 1. the scale test: the map's 3D scale at each located vertex, rho_A / rho_B(image) (the
-  // image's log rho interpolated in its face), against the reference; and the rounding test
+  // 1. the scale test and the rounding test
   std::vector<char> scale_fails(n, 0), rounding_fails(n, 0);
-  {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> lambda(n, nan);
-    for(std::size_t i = 0; i < n; ++i) {
-      const typename Locator::Location& l = locations[i];
-      if(!l.success)
-        continue;
-      bool image_unresolved = false, image_at_landmark = false;
-      double log_rho_b = 0;
-      for(int j = 0; j < 3; ++j) {
-        const std::size_t v = locB.corner_vertex_index(l.face_index, j);
-        image_unresolved = image_unresolved || b.unresolved[v];
-        image_at_landmark = image_at_landmark || (b.squeezed(v) && b.cone[b.collapse[b.region[v]]]);
-        log_rho_b += l.barycentric[j] * b.log_rho[v];
-      }
-      const bool at_landmark = a.squeezed(i) && a.cone[a.collapse[a.region[i]]];
-      // below double in either embedding: its image is not resolved, unless both embeddings
-      // collapse its neighbourhood onto a landmark's cone (where the charts resolve it)
-      if(a.unresolved[i] || image_unresolved) {
-        rounding_fails[i] = !(at_landmark || image_at_landmark);
-        continue;
-      }
-      lambda[i] = a.log_rho[i] - log_rho_b;
-    }
-    // the reference: the ratio of the sizes of the two surfaces (sqrt of the ratio of their
-    // areas), what a map between isometric surfaces scales every length by (a median over the
-    // vertices would follow a protrusion that most vertices are on)
-    const double reference = (a.total_area > 0 && b.total_area > 0) ? 0.5 * std::log(b.total_area / a.total_area) : 0.0;
-    // the noise: the fluctuation of lambda between neighbours (robust standard deviation of
-    // lambda minus the mean over its neighbours), not its variation along the surface
-    {
-      std::vector<double> fluctuation;
-      for(std::size_t i = 0; i < n; ++i) {
-        if(!std::isfinite(lambda[i]))
-          continue;
-        double sum = 0;
-        std::size_t count = 0;
-        for(vertex_descriptor_A w : vertices_around_target(halfedge(a.verts[i], A), A))
-          if(std::isfinite(lambda[a.index(w)])) {
-            sum += lambda[a.index(w)];
-            ++count;
-          }
-        if(count > 0)
-          fluctuation.push_back(std::abs(lambda[i] - sum / double(count)));
-      }
-      if(!fluctuation.empty()) {
-        std::nth_element(fluctuation.begin(), fluctuation.begin() + fluctuation.size() / 2, fluctuation.end());
-        result.scale_noise = 1.4826 * fluctuation[fluctuation.size() / 2];
-      }
-    }
-    result.reference_scale = std::exp(reference);
-    const double limit = std::log(options.scale_factor);
-    for(std::size_t i = 0; i < n; ++i)
-      if(std::isfinite(lambda[i])) {
-        result.scale_disagreement[i] = lambda[i] - reference;
-        scale_fails[i] = std::abs(result.scale_disagreement[i]) > limit;
-      }
-  }
+  internal::reliability_scale_test(A, a, b, locB, locations, options, result, scale_fails, rounding_fails);
 
   // 2. the protrusion test
-  CGAL::Bbox_3 box;
-  for(typename boost::graph_traits<TriangleMeshB>::vertex_descriptor v : vertices(B))
-    box += get(vpmB, v).bbox();
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+  const double diagonal = internal::bounding_box_diagonal(B, vpmB);
   const double max_uncertainty = options.error_fraction * diagonal;
   const double min_disagreement = options.noise_multiple * result.scale_noise;
   const auto distance = typename Locator::Traits().compute_hyperbolic_distance_2_object();
@@ -574,18 +441,8 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
     region.target_vertex = b.basin(B, landing(l), basin_b);
     region.target_size = b.size[region.target_vertex];
     const Point_2 image = locB.disk_point(l);
-    region.discrepancy = std::numeric_limits<double>::infinity();
     C target;
-    for(halfedge_descriptor_B h : halfedges_around_target(halfedge(b.verts[region.target_vertex], B), B))
-      if(!is_border(h, B)) {
-        const auto p = get(uvB, h);
-        const C q(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-        const double d = CGAL::to_double(distance(image, Point_2(q.real(), q.imag())));
-        if(d < region.discrepancy) {
-          region.discrepancy = d;
-          target = q;
-        }
-      }
+    region.discrepancy = internal::nearest_corner_point(B, uvB, b.verts[region.target_vertex], image, distance, target);
     // unresolved: the collapse points differ by more than a few triangles, and the map does
     // collapse (or cannot resolve) the region there
     region.unresolved = region.discrepancy > options.noise_factor * (std::max)(region.source_size, region.target_size) &&
@@ -640,13 +497,7 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
     }
     result.regions.push_back(region);
   }
-  for(std::size_t i = 0; i < n; ++i) {
-    result.protrusion_flagged += flagged[i];
-    result.scale_flagged += scale_fails[i];
-    result.rounding_flagged += rounding_fails[i];
-    if(flagged[i] || scale_fails[i] || rounding_fails[i])
-      result.unreliable_vertices.push_back(i);
-  }
+  internal::tally_unreliable_vertices(flagged, scale_fails, rounding_fails, result);
   return result;
 }
 

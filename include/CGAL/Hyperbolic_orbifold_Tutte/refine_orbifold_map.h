@@ -7,6 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Map_refinement_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
@@ -103,8 +104,8 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
     stats.message = "refine_orbifold_map() handles embeddings without charts around cone images";
     return ERROR_WRONG_PARAMETER;
   }
-  if(is_closed(A) && internal::closed_mesh_genus(A) > 0) {
-    stats.message = "refine_orbifold_map() handles surfaces of genus 0; the source has genus " + std::to_string(internal::closed_mesh_genus(A));
+  if(is_closed(A) && closed_mesh_genus(A) > 0) {
+    stats.message = "refine_orbifold_map() handles surfaces of genus 0; the source has genus " + std::to_string(closed_mesh_genus(A));
     return ERROR_WRONG_PARAMETER;
   }
   Refiner refiner(A, landmarks, uvA, B, locB, stats, certify);

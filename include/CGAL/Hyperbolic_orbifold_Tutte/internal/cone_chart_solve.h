@@ -115,6 +115,70 @@ inline std::vector<int> assign_charts(const Flat_problem& P, const std::vector<s
   return chart_of;
 }
 
+// build_chart_problem(): the region's vertices in their charts (ch.Q's kinds, fixed points,
+// lines, seam transforms): variables `xq` for the owners, then the seam copies
+template <class Tile>
+void chart_problem_variables(const Flat_problem& P, const Tile& tile, const std::vector<std::complex<double> >& uv,
+                             const std::vector<int>& chart_of, Cone_charts& ch, std::vector<double>& xq)
+{
+  typedef std::complex<double> C;
+  typedef Cone_charts::Isometry Isometry;
+  Flat_problem& Q = ch.Q;
+  xq.clear();
+  for(int v = 0; v < P.n; ++v) {
+    const int q = ch.region_q[v];
+    if(q < 0)
+      continue;
+    const Isometry& m = ch.chart[chart_of[v]];
+    switch(P.kind[v]) {
+      case Fixed:
+        // a cone copy at its chart's corner is the origin itself
+        Q.fixed[q] = P.corner[v] == ch.chart_corner[chart_of[v]] ? C(0, 0) : m.apply(P.fixed[v]);
+        break;
+      case Free: {
+        const C w = m.apply(uv[v]);
+        Q.kind[q] = Free;
+        Q.var[q] = static_cast<int>(xq.size());
+        xq.push_back(w.real());
+        xq.push_back(w.imag());
+        break;
+      }
+      case On_line: {
+        // the side in the chart: its end at the chart's corner is the origin
+        const int s = P.side[v], corner = ch.chart_corner[chart_of[v]];
+        C e0 = poincare_to_klein(m.apply(klein_to_poincare(P.line_k0[v])));
+        C e1 = poincare_to_klein(m.apply(klein_to_poincare(P.line_k0[v] + P.line_D[v])));
+        if(tile.side_target(s) == corner)
+          std::swap(e0, e1);
+        if(tile.side_source(s) == corner || tile.side_target(s) == corner)
+          e0 = C(0, 0);
+        Q.kind[q] = On_line;
+        Q.line_k0[q] = e0;
+        Q.line_D[q] = e1 - e0;
+        const C d = poincare_to_klein(m.apply(uv[v])) - e0;
+        Q.var[q] = static_cast<int>(xq.size());
+        xq.push_back((d.real() * Q.line_D[q].real() + d.imag() * Q.line_D[q].imag()) / squared_modulus(Q.line_D[q]));
+        break;
+      }
+      case Transformed:
+        break;
+    }
+  }
+  for(int v = 0; v < P.n; ++v) {
+    const int q = ch.region_q[v];
+    if(q < 0 || P.kind[v] != Transformed)
+      continue;
+    const int t = P.twin[v];
+    Isometry m = ch.chart[chart_of[v]] * P.transform[v] * ch.chart[chart_of[t]].inverse();
+    // between two corners of one cone the pairing fixes the origin: a rotation, kept exact
+    if(std::abs(m.apply(C(0, 0))) < 1e-8)
+      m = Isometry(m.a() / std::abs(m.a()), C(0, 0));
+    Q.kind[q] = Transformed;
+    Q.twin[q] = ch.region_q[t];
+    Q.transform[q] = m;
+  }
+}
+
 // The charted region's flat problem (Cone_charts::Q, positions in the charts) and its
 // variables `xq`, from P's tile positions `uv`, for the charts `ch.chart` centred at the
 // tile corners `ch.chart_corner` and the chart of each vertex `chart_of` (-1: none). False
@@ -198,59 +262,7 @@ bool build_chart_problem(const Flat_problem& P, const Tile& tile, const std::vec
     Q.edge_weight.push_back(e < P.edge_weight.size() ? P.edge_weight[e] : 1.0); // (the certifier has no weights)
   }
   // the region's vertices in their charts: variables for the owners, then the seam copies
-  xq.clear();
-  for(int v = 0; v < P.n; ++v) {
-    const int q = ch.region_q[v];
-    if(q < 0)
-      continue;
-    const Isometry& m = ch.chart[chart_of[v]];
-    switch(P.kind[v]) {
-      case Fixed:
-        // a cone copy at its chart's corner is the origin itself
-        Q.fixed[q] = P.corner[v] == ch.chart_corner[chart_of[v]] ? C(0, 0) : m.apply(P.fixed[v]);
-        break;
-      case Free: {
-        const C w = m.apply(uv[v]);
-        Q.kind[q] = Free;
-        Q.var[q] = static_cast<int>(xq.size());
-        xq.push_back(w.real());
-        xq.push_back(w.imag());
-        break;
-      }
-      case On_line: {
-        // the side in the chart: its end at the chart's corner is the origin
-        const int s = P.side[v], corner = ch.chart_corner[chart_of[v]];
-        C e0 = poincare_to_klein(m.apply(klein_to_poincare(P.line_k0[v])));
-        C e1 = poincare_to_klein(m.apply(klein_to_poincare(P.line_k0[v] + P.line_D[v])));
-        if(tile.side_target(s) == corner)
-          std::swap(e0, e1);
-        if(tile.side_source(s) == corner || tile.side_target(s) == corner)
-          e0 = C(0, 0);
-        Q.kind[q] = On_line;
-        Q.line_k0[q] = e0;
-        Q.line_D[q] = e1 - e0;
-        const C d = poincare_to_klein(m.apply(uv[v])) - e0;
-        Q.var[q] = static_cast<int>(xq.size());
-        xq.push_back((d.real() * Q.line_D[q].real() + d.imag() * Q.line_D[q].imag()) / squared_modulus(Q.line_D[q]));
-        break;
-      }
-      case Transformed:
-        break;
-    }
-  }
-  for(int v = 0; v < P.n; ++v) {
-    const int q = ch.region_q[v];
-    if(q < 0 || P.kind[v] != Transformed)
-      continue;
-    const int t = P.twin[v];
-    Isometry m = ch.chart[chart_of[v]] * P.transform[v] * ch.chart[chart_of[t]].inverse();
-    // between two corners of one cone the pairing fixes the origin: a rotation, kept exact
-    if(std::abs(m.apply(C(0, 0))) < 1e-8)
-      m = Isometry(m.a() / std::abs(m.a()), C(0, 0));
-    Q.kind[q] = Transformed;
-    Q.twin[q] = ch.region_q[t];
-    Q.transform[q] = m;
-  }
+  chart_problem_variables(P, tile, uv, chart_of, ch, xq);
   Q.n_vars = static_cast<int>(xq.size());
   return true;
 }

@@ -8,7 +8,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_type.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_enums.h>
 #include <CGAL/boost/graph/iterator.h>

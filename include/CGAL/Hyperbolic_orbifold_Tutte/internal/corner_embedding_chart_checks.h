@@ -31,22 +31,12 @@ namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 namespace corner_certificate {
 
-// charts (embeddings given partly in charts around cone images, Corner_embedding::charts):
-// the chart table (finite, isometries of the disk, normalized, centred at their tile corners
-// within chart_origin_bound), every chart point finite, strictly inside the disk (exact) and
-// consistent with its point (its tile point within the rounding bound of it), every face's
-// charted corners in one chart; then each face's corners in its frame (S.fpos, S.ferr).
-// Without charts: run, nothing checked.
+// check_charts(): the chart table
 template <class TM>
-void check_charts(Certification<TM>& S)
+void check_chart_table(Certification<TM>& S)
 {
   typedef Corner_embedding_certificate Cert;
   Cert::Check_result& R = S.cert.checks[Chart_check];
-  R.run = true;
-  if(!S.charted)
-    return;
-  const std::size_t F = S.M.number_of_faces();
-  S.cert.number_of_charts = S.E.charts.size();
   S.charts.assign(S.E.charts.size(), Chart_model());
   for(std::size_t i = 0; i < S.charts.size(); ++i) {
     Chart_model& m = S.charts[i];
@@ -89,10 +79,15 @@ void check_charts(Certification<TM>& S)
     }
     m.ok = true;
   }
-  // the chart points, in the embedding's face order (the first failure is the first in the file)
-  std::vector<std::size_t> mesh_face_of(S.E.number_of_faces());
-  for(std::size_t f = 0; f < F; ++f)
-    mesh_face_of[S.efface[f]] = f;
+}
+
+// check_charts(): the chart points, in the embedding's face order (the first failure is the
+// first in the file); `mesh_face_of`: the mesh face of each face of the embedding
+template <class TM>
+void check_chart_points(Certification<TM>& S, const std::vector<std::size_t>& mesh_face_of)
+{
+  typedef Corner_embedding_certificate Cert;
+  Cert::Check_result& R = S.cert.checks[Chart_check];
   std::vector<char> seen(S.E.points.size(), 0);
   for(std::size_t e = 0; e < S.E.number_of_faces(); ++e) {
     const std::size_t f = mesh_face_of[e];
@@ -136,7 +131,15 @@ void check_charts(Certification<TM>& S)
       }
     }
   }
-  // each face in one chart, its corners in its frame
+}
+
+// check_charts(): each face in one chart, its corners in its frame
+template <class TM>
+void place_faces_in_charts(Certification<TM>& S, const std::vector<std::size_t>& mesh_face_of)
+{
+  typedef Corner_embedding_certificate Cert;
+  Cert::Check_result& R = S.cert.checks[Chart_check];
+  const std::size_t F = S.M.number_of_faces();
   S.face_chart.assign(F, -1);
   S.frame_ok.assign(F, 1);
   S.fpos.resize(F);
@@ -183,6 +186,31 @@ void check_charts(Certification<TM>& S)
     if(mixed && k >= 0 && S.frame_ok[f])
       ++S.cert.number_of_mixed_faces;
   }
+}
+
+// charts (embeddings given partly in charts around cone images, Corner_embedding::charts):
+// the chart table (finite, isometries of the disk, normalized, centred at their tile corners
+// within chart_origin_bound), every chart point finite, strictly inside the disk (exact) and
+// consistent with its point (its tile point within the rounding bound of it), every face's
+// charted corners in one chart; then each face's corners in its frame (S.fpos, S.ferr).
+// Without charts: run, nothing checked.
+template <class TM>
+void check_charts(Certification<TM>& S)
+{
+  typedef Corner_embedding_certificate Cert;
+  Cert::Check_result& R = S.cert.checks[Chart_check];
+  R.run = true;
+  if(!S.charted)
+    return;
+  const std::size_t F = S.M.number_of_faces();
+  S.cert.number_of_charts = S.E.charts.size();
+  check_chart_table(S);
+  // the chart points, in the embedding's face order (the first failure is the first in the file)
+  std::vector<std::size_t> mesh_face_of(S.E.number_of_faces());
+  for(std::size_t f = 0; f < F; ++f)
+    mesh_face_of[S.efface[f]] = f;
+  check_chart_points(S, mesh_face_of);
+  place_faces_in_charts(S, mesh_face_of);
 }
 
 // A seam edge with a face in a chart: corners (ca, cb) of face f and (da, db) of face g are

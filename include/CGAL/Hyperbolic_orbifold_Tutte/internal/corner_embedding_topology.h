@@ -15,6 +15,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Corner_embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -179,7 +180,7 @@ Status index_and_check_mesh(Indexed_mesh<TriangleMesh>& M, std::optional<Orbifol
   const long long twice_genus = 2 - static_cast<long long>(loops) - chi;
   const bool closed_genus = genus != nullptr && loops == 0 && twice_genus > 0 && twice_genus % 2 == 0;
   if(genus != nullptr)
-    *genus = closed_genus ? static_cast<int>(twice_genus / 2) : 0;
+    *genus = closed_genus ? static_cast<int>(genus_of_surface(chi, loops)) : 0;
   if(!closed_genus && (twice_genus != 0 || loops > 1))
     return Status::failure(ERROR_WRONG_TOPOLOGY, "the mesh is neither a closed surface nor a disk (Euler characteristic " +
                                                    std::to_string(chi) + ", " + std::to_string(loops) + " boundary loops)");

@@ -15,6 +15,7 @@
 // loops through the root and the tree paths from the landmarks to it.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h> // closed_mesh_genus
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
 
@@ -29,15 +30,6 @@
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
-
-// The genus of a closed connected mesh from V - E + F (-1 when that is odd or above 2)
-template <class TriangleMesh>
-long long closed_mesh_genus(const TriangleMesh& tm)
-{
-  const long long chi = static_cast<long long>(num_vertices(tm)) - static_cast<long long>(num_edges(tm)) +
-                        static_cast<long long>(num_faces(tm));
-  return (chi > 2 || (chi % 2) != 0) ? -1 : (2 - chi) / 2;
-}
 
 // The cut graph's edges as pairs of dense vertex indices (positions in vertices(tm)), for a
 // closed connected manifold mesh of genus `genus` >= 1 and its landmarks.

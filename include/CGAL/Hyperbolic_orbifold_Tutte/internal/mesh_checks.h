@@ -11,7 +11,8 @@
 // Every pointer is checked before it is followed, and every walk is bounded.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h> // Orbifold_type
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_type.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h> // border_loops
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/topology_description.h>
@@ -540,7 +541,7 @@ Status check_topology(const TriangleMesh& tm, VertexPointMap vpm, const VertexIn
   mi.euler_characteristic = static_cast<long long>(mi.number_of_vertices)
                           - static_cast<long long>(mi.number_of_edges)
                           + static_cast<long long>(mi.number_of_faces);
-  mi.genus = (2 - static_cast<long long>(mi.number_of_border_loops) - mi.euler_characteristic) / 2;
+  mi.genus = genus_of_surface(mi.euler_characteristic, mi.number_of_border_loops);
 
   const std::size_t b = mi.number_of_border_loops;
   Orbifold_type type;

@@ -22,6 +22,102 @@ namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
+// a part of nested_dissection_sets(): its vertices, its region id (region[v] == id for v in
+// it), its place in the tree
+struct Dissection_part
+{
+  std::vector<int> vertices;
+  int first_child = -1; // (the two sides: first_child and first_child + 1; -1: a leaf)
+  std::vector<int> separator;
+};
+
+// the adjacency of the leading m x m block of A's pattern (its strictly lower entries),
+// compressed rows, both directions
+template <class Scalar>
+void leading_block_adjacency(const Eigen::SparseMatrix<Scalar>& A, Eigen::Index m, std::vector<int>& start,
+                             std::vector<int>& adj)
+{
+  typedef Eigen::SparseMatrix<Scalar> Matrix;
+  start.assign(static_cast<std::size_t>(m) + 1, 0);
+  for(Eigen::Index j = 0; j < m; ++j)
+    for(typename Matrix::InnerIterator it(A, j); it; ++it)
+      if(it.row() > j && it.row() < m) {
+        ++start[static_cast<std::size_t>(it.row()) + 1];
+        ++start[static_cast<std::size_t>(j) + 1];
+      }
+  for(std::size_t i = 0; i < static_cast<std::size_t>(m); ++i)
+    start[i + 1] += start[i];
+  adj.assign(static_cast<std::size_t>(start.back()), 0);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for(Eigen::Index j = 0; j < m; ++j)
+    for(typename Matrix::InnerIterator it(A, j); it; ++it)
+      if(it.row() > j && it.row() < m) {
+        const int i = static_cast<int>(it.row());
+        adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = static_cast<int>(j);
+        adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = i;
+      }
+}
+
+// the separating level of a part of `size` vertices whose breadth-first levels 0 .. depth-1
+// hold count[l] vertices: the smallest of those with `balance_low` to 1 - `balance_low` of the
+// part before them, the one nearest to half on a tie (-1: none)
+inline int separating_level(const std::vector<std::size_t>& count, int depth, std::size_t size, double balance_low)
+{
+  int cut = -1;
+  const double lo = balance_low * double(size), hi = (1 - balance_low) * double(size), half = 0.5 * double(size);
+  std::size_t before = count[0];
+  double best_gap = 0;
+  for(int l = 1; l + 1 < depth; before += count[static_cast<std::size_t>(l++)]) {
+    const double b = double(before);
+    if(b + double(count[static_cast<std::size_t>(l)]) < lo && l + 2 < depth)
+      continue;
+    const double gap = std::abs(b + 0.5 * double(count[static_cast<std::size_t>(l)]) - half);
+    if(cut < 0 || count[static_cast<std::size_t>(l)] < count[static_cast<std::size_t>(cut)] ||
+       (count[static_cast<std::size_t>(l)] == count[static_cast<std::size_t>(cut)] && gap < best_gap)) {
+      cut = l;
+      best_gap = gap;
+    }
+    if(b > hi)
+      break;
+  }
+  return cut;
+}
+
+// the sets of the parts' tree in postorder (each part's sides, then its separator, or the
+// leaf itself) into `member`; their number
+inline int postorder_sets(std::vector<Dissection_part>& parts, std::vector<int>& member, std::vector<int>* first_in_subtree)
+{
+  typedef Dissection_part Part;
+  int sets = 0;
+  std::vector<int> entry(parts.size(), 0); // (the first set of each part's subtree)
+  if(first_in_subtree)
+    first_in_subtree->clear();
+  std::vector<std::pair<int, bool> > stack; // (part, its children done)
+  stack.emplace_back(0, false);
+  while(!stack.empty()) {
+    const std::pair<int, bool> top = stack.back();
+    stack.pop_back();
+    Part& part = parts[static_cast<std::size_t>(top.first)];
+    if(!top.second)
+      entry[static_cast<std::size_t>(top.first)] = sets;
+    if(part.first_child >= 0 && !top.second) {
+      stack.emplace_back(top.first, true);
+      stack.emplace_back(part.first_child + 1, false);
+      stack.emplace_back(part.first_child, false);
+      continue;
+    }
+    const std::vector<int>& own = part.first_child >= 0 ? part.separator : part.vertices;
+    if(own.empty())
+      continue;
+    for(int v : own)
+      member[static_cast<std::size_t>(v)] = sets;
+    if(first_in_subtree)
+      first_in_subtree->push_back(entry[static_cast<std::size_t>(top.first)]);
+    ++sets;
+  }
+  return sets;
+}
+
 // Nested dissection (George 1973) by level structures: the graph of the leading m x m block
 // of A's pattern (its strictly lower entries; an upper entry alone is not seen) is split by
 // a breadth-first level of a pseudo-peripheral vertex, the one where the levels before it
@@ -45,41 +141,16 @@ int nested_dissection_sets(const Eigen::SparseMatrix<Scalar>& A, Eigen::Index m,
                            std::size_t leaf_size = 4096, double balance_low = 0.3,
                            std::vector<int>* first_in_subtree = nullptr)
 {
-  typedef Eigen::SparseMatrix<Scalar> Matrix;
   const Eigen::Index n = A.rows();
   member.assign(static_cast<std::size_t>(n), 0);
   if(m <= 0) {
     return 1;
   }
   // adjacency of the leading block (compressed rows, both directions)
-  std::vector<int> start(static_cast<std::size_t>(m) + 1, 0);
-  for(Eigen::Index j = 0; j < m; ++j)
-    for(typename Matrix::InnerIterator it(A, j); it; ++it)
-      if(it.row() > j && it.row() < m) {
-        ++start[static_cast<std::size_t>(it.row()) + 1];
-        ++start[static_cast<std::size_t>(j) + 1];
-      }
-  for(std::size_t i = 0; i < static_cast<std::size_t>(m); ++i)
-    start[i + 1] += start[i];
-  std::vector<int> adj(static_cast<std::size_t>(start.back()));
-  {
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for(Eigen::Index j = 0; j < m; ++j)
-      for(typename Matrix::InnerIterator it(A, j); it; ++it)
-        if(it.row() > j && it.row() < m) {
-          const int i = static_cast<int>(it.row());
-          adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = static_cast<int>(j);
-          adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = i;
-        }
-  }
+  std::vector<int> start, adj;
+  leading_block_adjacency(A, m, start, adj);
 
-  // a part: its vertices, its region id (region[v] == id for v in it), its place in the tree
-  struct Part
-  {
-    std::vector<int> vertices;
-    int first_child = -1; // (the two sides: first_child and first_child + 1; -1: a leaf)
-    std::vector<int> separator;
-  };
+  typedef Dissection_part Part;
   std::vector<Part> parts(1);
   parts[0].vertices.resize(static_cast<std::size_t>(m));
   for(int v = 0; v < static_cast<int>(m); ++v)
@@ -136,25 +207,7 @@ int nested_dissection_sets(const Eigen::SparseMatrix<Scalar>& A, Eigen::Index m,
       reset();
       continue;
     }
-    int cut = -1;
-    {
-      const double lo = balance_low * double(size), hi = (1 - balance_low) * double(size), half = 0.5 * double(size);
-      std::size_t before = count[0];
-      double best_gap = 0;
-      for(int l = 1; l + 1 < depth; before += count[static_cast<std::size_t>(l++)]) {
-        const double b = double(before);
-        if(b + double(count[static_cast<std::size_t>(l)]) < lo && l + 2 < depth)
-          continue;
-        const double gap = std::abs(b + 0.5 * double(count[static_cast<std::size_t>(l)]) - half);
-        if(cut < 0 || count[static_cast<std::size_t>(l)] < count[static_cast<std::size_t>(cut)] ||
-           (count[static_cast<std::size_t>(l)] == count[static_cast<std::size_t>(cut)] && gap < best_gap)) {
-          cut = l;
-          best_gap = gap;
-        }
-        if(b > hi)
-          break;
-      }
-    }
+    const int cut = separating_level(count, depth, size, balance_low);
     Part near_side, far_side;
     std::vector<int> separator;
     for(int v : queue) {
@@ -194,33 +247,7 @@ int nested_dissection_sets(const Eigen::SparseMatrix<Scalar>& A, Eigen::Index m,
   }
 
   // the sets in postorder: each part's sides, then its separator (or the leaf itself)
-  int sets = 0;
-  std::vector<int> entry(parts.size(), 0); // (the first set of each part's subtree)
-  if(first_in_subtree)
-    first_in_subtree->clear();
-  std::vector<std::pair<int, bool> > stack; // (part, its children done)
-  stack.emplace_back(0, false);
-  while(!stack.empty()) {
-    const std::pair<int, bool> top = stack.back();
-    stack.pop_back();
-    Part& part = parts[static_cast<std::size_t>(top.first)];
-    if(!top.second)
-      entry[static_cast<std::size_t>(top.first)] = sets;
-    if(part.first_child >= 0 && !top.second) {
-      stack.emplace_back(top.first, true);
-      stack.emplace_back(part.first_child + 1, false);
-      stack.emplace_back(part.first_child, false);
-      continue;
-    }
-    const std::vector<int>& own = part.first_child >= 0 ? part.separator : part.vertices;
-    if(own.empty())
-      continue;
-    for(int v : own)
-      member[static_cast<std::size_t>(v)] = sets;
-    if(first_in_subtree)
-      first_in_subtree->push_back(entry[static_cast<std::size_t>(top.first)]);
-    ++sets;
-  }
+  const int sets = postorder_sets(parts, member, first_in_subtree);
   for(Eigen::Index i = m; i < n; ++i)
     member[static_cast<std::size_t>(i)] = sets;
   return m < n ? sets + 1 : sets;

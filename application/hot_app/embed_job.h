@@ -2,19 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
-#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_EMBED_JOB_H
-#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_EMBED_JOB_H
+#ifndef HOT_APP_EMBED_JOB_H
+#define HOT_APP_EMBED_JOB_H
 
-// The `embed` command's job and its one call of the library: shared by the command-line
-// program (tools/hyperbolic_orbifold_tutte.cpp) and the Python module (python/src/), so that
-// both compute an embedding with the same named parameters, hence the same numbers.
+// The embedding job and its one call of the library: shared by the command line's `embed`
+// (tools/jobs/embed.h, whose Embed_command adds the files and options of the command line) and
+// the Python module's embed() (python/src/embedding.cpp), so that both compute an embedding with
+// the same named parameters, hence the same numbers.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 
-#include "command_line.h"
-#include "io/embedding_cones.h"
-#include "io/prepared_input.h"
-#include "io/reports.h"
+#include "hot_app/job_support.h"
+#include "hot_app/io/embedding_cones.h"
+#include "hot_app/io/prepared_input.h"
+#include "hot_app/io/reports.h"
 
 #include <functional>
 #include <optional>
@@ -23,19 +24,13 @@
 
 namespace hot_cli {
 
-// the options of `embed`
+// what an embedding is computed with (the command line's `embed` adds its files: Embed_command)
 struct Embed_job
 {
   hot_tools::Embedding_request request; // the mesh, weights and order (empty: the type's default)
-  std::string cones_path, out_path;
-  std::optional<std::string> svg_path, report_path;
-  std::optional<HOT::Orbifold_type> required_type;
   HOT::Weight_type weights = HOT::Cotangent;
   bool recentre = false;
-  std::vector<int> orders; // --cone-orders, per landmark of the file (empty: 2 for all)
-  hot_tools::Repair_options repair;
-  std::optional<std::string> cut_graph_path, cut_graph_out; // genus g >= 1: --cut-graph, --cut-graph-out
-  std::vector<std::size_t> explicit_order; // --order I0,I1,...: the landmarks' positions in the order of the cut
+  std::vector<int> orders; // --cone-orders, per landmark in the order given to the library (empty: 2 for all)
   std::function<void(const char*, double)> progress; // the library's progress reports (empty: none)
 };
 
@@ -80,4 +75,4 @@ inline hot_tools::Embedding_cones embedding_cones(HOT::Orbifold_type type, const
 
 } // namespace hot_cli
 
-#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_EMBED_JOB_H
+#endif // HOT_APP_EMBED_JOB_H

@@ -2,15 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
-#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CLI_TYPES_H
-#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CLI_TYPES_H
+#ifndef HOT_APP_JOB_INPUT_H
+#define HOT_APP_JOB_INPUT_H
 
-// The mesh types of the command-line program (and of the Python module, which runs its jobs),
-// and reading a job's mesh with its landmarks.
+// The mesh types of the jobs (the command-line program's and the Python module's), and reading
+// a job's mesh with its landmarks.
 
-#include "command_line.h"
-#include "io/embedding_obj.h"
-#include "io/prepared_input.h"
+#include "hot_app/job_support.h"
+#include "hot_app/io/embedding_obj.h"
+#include "hot_app/io/prepared_input.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -71,4 +71,4 @@ inline std::vector<std::size_t> file_indices(const std::vector<SM_vertex>& vs, c
 
 } // namespace hot_cli
 
-#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CLI_TYPES_H
+#endif // HOT_APP_JOB_INPUT_H

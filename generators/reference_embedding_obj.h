@@ -1,7 +1,7 @@
 // Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The embedding OBJ writer as it was before tools/io/embedding_obj.h wrote its numbers with
+// The embedding OBJ writer as it was before hot_app/io/embedding_obj.h (then tools/io/) wrote its numbers with
 // std::to_chars (commit 3d3c8eb): every number through std::ostream with precision 17, i.e.
 // printf's "%.17g". Kept as the reference the new writer must match byte for byte
 // (test_input_checks.embedding_obj_bytes) and as the baseline of benchmark/bench_io.
@@ -9,7 +9,7 @@
 #ifndef HOT_TEST_REFERENCE_EMBEDDING_OBJ_H
 #define HOT_TEST_REFERENCE_EMBEDDING_OBJ_H
 
-#include <io/embedding_obj.h>
+#include <hot_app/io/embedding_obj.h>
 
 #include <cstddef>
 #include <ostream>

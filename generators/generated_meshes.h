@@ -8,7 +8,7 @@
 #ifndef HOT_TEST_GENERATED_MESHES_H
 #define HOT_TEST_GENERATED_MESHES_H
 
-#include <io/polygon_soup.h>
+#include <hot_app/io/polygon_soup.h>
 
 #include <cmath>
 #include <cstddef>

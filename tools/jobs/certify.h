@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
-#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CERTIFY_COMMAND_H
-#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CERTIFY_COMMAND_H
+#ifndef HOT_TOOLS_JOBS_CERTIFY_H
+#define HOT_TOOLS_JOBS_CERTIFY_H
 
 // The `certify` command: reads a mesh, its cones and an embedding as OBJ (from `embed` or
 // from anywhere), and runs certify_corner_embedding() on them. Exit status 0 when the
@@ -13,20 +13,10 @@
 // A recentred embedding (embed --recentre) is checked in its frame (--frame, from its report).
 // --cone-orders gives each cone's order (in the cones file's order, as embed takes them); the
 // checker finds which tile corner each cone is at, hence the tile of those orders, on the map.
-// Points written in charts around cone images ('# hot chart' and '# hot vtc' lines) are read
-// and checked in their charts' coordinates. A closed mesh of genus g >= 1 (embed's OBJ of its
-// cut graph's polygon) is certified without a tile: the seams' isometries come from the map.
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-
-#include <CGAL/Hyperbolic_orbifold_Tutte/certify_corner_embedding.h>
+// The reading and the certificate are the application layer's (hot_app/certify_job.h).
 
 #include "command_line.h"
-#include "io/certificate_report.h"
-#include "io/embedding_obj_reader.h"
-#include "io/landmarks.h"
-#include "io/read_and_check.h" // read_mesh()
+#include "hot_app/certify_job.h"
 
 #include <chrono>
 #include <cmath>
@@ -91,34 +81,26 @@ inline HOT::Hyperbolic_isometry_2<double> parse_frame(const std::string& s)
 
 inline int run_certify(int argc, char** argv)
 {
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
   typedef std::chrono::steady_clock Clock;
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
 
   const Options opt(argc, argv, 2, {"mesh", "embedding", "cones", "orbifold", "cone-orders", "frame", "report"}, {"progress"});
   Progress_line progress("certify", opt.has("progress"));
-  hot_tools::Certify_request q;
+  Certify_job job;
+  hot_tools::Certify_request& q = job.q;
   q.mesh_path = opt.get("mesh");
   q.embedding_path = opt.get("embedding");
   q.cones_path = opt.get("cones");
-  std::optional<HOT::Orbifold_type> type;
   if(opt.has("orbifold"))
-    type = parse_orbifold(opt.get("orbifold"));
+    job.type = parse_orbifold(opt.get("orbifold"));
   if(opt.has("cone-orders"))
     q.cone_orders = parse_cone_orders(opt.get("cone-orders"));
   const std::optional<std::string> report = opt.has("report") ? std::optional<std::string>(opt.get("report")) : std::nullopt;
-  const HOT::Hyperbolic_isometry_2<double> frame = opt.has("frame") ? parse_frame(opt.get("frame")) : HOT::Hyperbolic_isometry_2<double>();
+  job.frame = opt.has("frame") ? parse_frame(opt.get("frame")) : HOT::Hyperbolic_isometry_2<double>();
 
   const Clock::time_point t0 = Clock::now();
   progress.step("read");
-  Mesh m;
-  require(hot_tools::read_mesh(q.mesh_path, m));
-  // no cone: an empty cones file, for a closed mesh of genus g >= 1 (Euler characteristic below 2;
-  // genus 1 is then refused as not hyperbolic by the checker)
-  const bool closed_genus = CGAL::is_closed(m) && static_cast<long long>(num_vertices(m)) - static_cast<long long>(num_edges(m)) +
-                                                      static_cast<long long>(num_faces(m)) < 2;
-  require(hot_tools::read_landmarks(q.cones_path, q.cones, closed_genus));
+  read_certify_mesh_and_cones(job);
   if(!q.cone_orders.empty()) {
     if(q.cone_orders.size() != q.cones.size())
       throw Usage_error{"--cone-orders lists " + std::to_string(q.cone_orders.size()) + " orders for " +
@@ -127,39 +109,12 @@ inline int run_certify(int argc, char** argv)
   bool mixed = false; // an order other than 2
   for(int p : q.cone_orders)
     mixed = mixed || p != 2;
-  std::vector<Mesh::Vertex_index> cones;
-  for(std::size_t v : q.cones) {
-    if(v >= num_vertices(m))
-      throw Failure{HOT::ERROR_LANDMARK_OUT_OF_RANGE, q.cones_path + ": vertex index " + std::to_string(v) +
-                                                        " is not a vertex of the mesh (it has " + std::to_string(num_vertices(m)) + ")"};
-    cones.push_back(Mesh::Vertex_index(static_cast<Mesh::size_type>(v)));
-  }
-  HOT::Corner_embedding embedding;
-  std::size_t obj_vertices = 0;
-  require(hot_tools::read_embedding_obj(q.embedding_path, embedding, obj_vertices, &q.chart_points));
-  if(obj_vertices != num_vertices(m))
-    throw Failure{HOT::ERROR_WRONG_PARAMETER, q.embedding_path + ": the embedding has " + std::to_string(obj_vertices) +
-                                                " vertices (v lines) but the mesh " + std::to_string(num_vertices(m)) +
-                                                ": it is not an embedding of this mesh"};
+  read_certify_embedding(job);
   const Clock::time_point t1 = Clock::now();
   progress.done("read");
 
   progress.step("certificate");
-  HOT::Corner_embedding_certificate cert;
-  std::string why;
-  const HOT::Error_code ec =
-    type ? HOT::certify_corner_embedding(m, cones, embedding, cert, &why,
-                                         HOT::parameters::cone_orders(q.cone_orders, HOT::parameters::frame(frame, HOT::parameters::orbifold_type(*type))))
-         : HOT::certify_corner_embedding(m, cones, embedding, cert, &why,
-                                         HOT::parameters::cone_orders(q.cone_orders, HOT::parameters::frame(frame)));
-  if(ec != HOT::OK) {
-    // the orders' refusals (not hyperbolic, other than 2 on a disk) name --cone-orders
-    const bool orders_refused =
-      mixed && (ec == HOT::ERROR_NOT_HYPERBOLIC || (ec == HOT::ERROR_WRONG_PARAMETER && why.find("order") != std::string::npos));
-    throw Failure{ec, (orders_refused ? std::string("--cone-orders")
-                       : ec == HOT::ERROR_DUPLICATE_LANDMARK || ec == HOT::ERROR_LANDMARK_NOT_ON_BORDER || ec == HOT::ERROR_TOO_FEW_LANDMARKS
-                         ? q.cones_path : q.mesh_path) + ": " + why};
-  }
+  const HOT::Corner_embedding_certificate cert = certify_embedding(job);
   q.time_read = seconds(t0, t1);
   q.time_certify = seconds(t1, Clock::now());
   progress.done("certificate");
@@ -210,4 +165,4 @@ inline int run_certify(int argc, char** argv)
 
 } // namespace hot_cli
 
-#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_CERTIFY_COMMAND_H
+#endif // HOT_TOOLS_JOBS_CERTIFY_H

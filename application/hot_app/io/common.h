@@ -5,7 +5,7 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_COMMON_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_IO_COMMON_H
 
-// The common ground of the command-line tool's readers (tools/io/): the result type
+// The common ground of the command-line tool's readers (application/hot_app/io/): the result type
 // and its messages, a line-counting cursor over a text buffer, white-space tokenising,
 // strict integer and real number parsing, and little / big endian binary values.
 

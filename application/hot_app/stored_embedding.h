@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
-#ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_STORED_EMBEDDING_H
-#define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_STORED_EMBEDDING_H
+#ifndef HOT_APP_STORED_EMBEDDING_H
+#define HOT_APP_STORED_EMBEDDING_H
 
 // An embedding read back from the OBJ file `embed` or `collection` wrote, for maps that do not
 // embed again (`map --source-embedding/--target-embedding`, collections run as separate jobs).
@@ -12,10 +12,10 @@
 // builds a mesh from a file, so that a map from the stored embeddings is the same, number for
 // number, as a map computed in the process that embedded.
 
-#include "cli_types.h"
-#include "io/embedding_obj_reader.h"
-#include "io/polygon_soup.h"
-#include "io/polygon_soup_to_mesh.h"
+#include "hot_app/job_input.h"
+#include "hot_app/io/embedding_obj_reader.h"
+#include "hot_app/io/polygon_soup.h"
+#include "hot_app/io/polygon_soup_to_mesh.h"
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
@@ -163,4 +163,4 @@ inline void check_stored_pair(const Stored_embedding& a, const Stored_embedding&
 
 } // namespace hot_cli
 
-#endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_TOOLS_STORED_EMBEDDING_H
+#endif // HOT_APP_STORED_EMBEDDING_H
