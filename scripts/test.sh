@@ -24,7 +24,7 @@ step() { echo "== $1: $(( SECONDS - t_step )) s"; t_step=$SECONDS; }
 t_step=$SECONDS
 "$root/scripts/install-deps.sh"
 step install
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" all   # (everything the tests run; not the benchmarks, which no test runs)
 step build
 build="${HOT_BUILD_DIR:-$root/build}"
 jobs="${HOT_JOBS:-$(nproc 2>/dev/null || echo 2)}"
