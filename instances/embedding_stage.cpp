@@ -4,11 +4,11 @@
 
 // The solve stage of the pipeline (flat problem, weights, initialisation, Newton, certificate
 // and mends) instantiated once for the project's own programs, for the seam mesh of a
-// CGAL::Surface_mesh over Epick's points and the default tile (internal/compiled_once.h).
+// CGAL::Surface_mesh over Epick's points and the default tile (internal/core/compiled_once.h).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/embedding_pipeline.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/embedding_pipeline.h>
 
 #ifndef CGAL_HOT_RUN_EMBEDDING_STAGE_DOOR
 #error "the door of the solve stage is not declared"

@@ -3,10 +3,10 @@
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
 // The mesh preparation's door, instantiated once for the project's own programs
-// (internal/compiled_once.h): from a loaded polygon soup to the prepared triangles (PMP's
+// (internal/core/compiled_once.h): from a loaded polygon soup to the prepared triangles (PMP's
 // orientation, repair and hole filling).
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_preparation_steps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/preparation/mesh_preparation_steps.h>
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {

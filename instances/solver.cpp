@@ -3,11 +3,11 @@
 // Author(s)     : Hyperbolic_orbifold_Tutte developers
 
 // The solver's doors, instantiated once for the project's own programs
-// (internal/compiled_once.h): Newton on the hyperbolic Dirichlet energy, and the Tutte
+// (internal/core/compiled_once.h): Newton on the hyperbolic Dirichlet energy, and the Tutte
 // initialisation's solve.
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/tutte_interior_solve.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/newton.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/tutte_interior_solve.h>
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {

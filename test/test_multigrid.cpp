@@ -1,7 +1,7 @@
 // Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The algebraic multigrid of the large solves (internal/smoothed_aggregation.h), against facts
+// The algebraic multigrid of the large solves (internal/linear_algebra/smoothed_aggregation.h), against facts
 // from outside it: a sparse LDL^T of the same matrix solves the same systems; the V-cycle is a
 // Hermitian positive definite operator (conjugate gradients need that); a gauge transform
 // D^* A D (D unit diagonal) of a real Laplacian is the same problem, so multigrid must see it
@@ -10,7 +10,7 @@
 
 #include "test_harness.h"
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/smoothed_aggregation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/linear_algebra/smoothed_aggregation.h>
 
 #include <Eigen/SparseCholesky>
 

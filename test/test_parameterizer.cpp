@@ -17,9 +17,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/fixed_boundary_hyperbolic_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/nested_dissection.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/linear_algebra/nested_dissection.h>
 // (the solver's parts, tested one by one: their definitions, behind a door in the project's builds)
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/newton.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/newton.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/subdivision_method_3.h>

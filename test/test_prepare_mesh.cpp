@@ -19,7 +19,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/prepare_mesh_for_embedding.h>
 // (the steps themselves, tested one by one: their definitions, behind the door in the project's builds)
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_preparation_steps.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/preparation/mesh_preparation_steps.h>
 
 #include <algorithm>
 #include <array>

@@ -210,7 +210,7 @@ inline std::vector<int> parse_cone_orders(const Options& opt)
     const std::string f = s.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
     char* end = nullptr;
     const long p = f.empty() ? 0 : std::strtol(f.c_str(), &end, 10);
-    if(f.empty() || end == nullptr || *end != '\0' || p < 2 || p > 1000000)
+    if(f.empty() || end == nullptr || *end != '\0' || !hot_tools::is_cone_order(p))
       throw Usage_error{"--cone-orders must be integers of at least 2 separated by commas (one per landmark, e.g. 2,3,7), got '" + s + "'"};
     orders.push_back(static_cast<int>(p));
     if(comma == std::string::npos)

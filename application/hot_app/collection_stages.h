@@ -14,8 +14,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/input_stage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/genus_cut.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <dirent.h>
 #include <fcntl.h>

@@ -46,7 +46,7 @@ hot_cli::Collection_job make_job(const std::string& manifest, const std::string&
   job.refine = refine;
   if(!cone_orders.is_none())
     for(std::int64_t p : int_list(cone_orders, "cone_orders")) {
-      if(p < 2 || p > 1000000)
+      if(!hot_tools::is_cone_order(p))
         fail(HOT::ERROR_WRONG_PARAMETER, "cone_orders: every order must be an integer >= 2, got " + std::to_string(p));
       job.orders.push_back(static_cast<int>(p));
     }

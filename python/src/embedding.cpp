@@ -49,7 +49,7 @@ void read_mesh_and_landmarks(const double* V, std::size_t n, const std::int64_t*
   e.type = info.type;
   e.genus = e.type == HOT::Sphere_type ? HOT::closed_mesh_genus(mesh) : 0;
   for(int p : opt.cone_orders)
-    if(p < 2 || p > 1000000)
+    if(!hot_tools::is_cone_order(p))
       fail(HOT::ERROR_WRONG_PARAMETER, "cone_orders must be integers from 2 to 1000000 (one per landmark, e.g. [2, 3, 7])");
   const std::size_t minimum =
     HOT::minimum_number_of_landmarks_of(mesh, e.type, hot_cli::minimum_landmarks(opt.cone_orders));
@@ -204,7 +204,7 @@ void parse_order_options(py::handle order, py::handle cone_orders, Embed_options
   }
   if(!cone_orders.is_none())
     for(std::int64_t p : int_list(cone_orders, "cone_orders"))
-      opt.cone_orders.push_back(p < 2 || p > 1000000 ? 0 : static_cast<int>(p)); // (0: refused below)
+      opt.cone_orders.push_back(hot_tools::is_cone_order(p) ? static_cast<int>(p) : 0); // (0: refused below)
 }
 
 Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, const std::string& weights,
@@ -228,15 +228,10 @@ Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std:
   }
   opt.progress = relay.callback();
   Embedding_ptr e;
-  try {
-    py::gil_scoped_release release;
+  relay.run_without_gil([&] {
     e = compute_embedding(Va.data(), static_cast<std::size_t>(Va.shape(0)), Fa.data(), static_cast<std::size_t>(Fa.shape(0)),
                           static_cast<std::size_t>(Fa.shape(1)), ids, opt);
-  } catch(...) {
-    relay.rethrow(); // (the callable's exception first: it came first)
-    throw;
-  }
-  relay.rethrow();
+  });
   return e;
 }
 
@@ -708,14 +703,7 @@ py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::ha
     fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
   opt.progress = relay.callback();
   Mesh_map r;
-  try {
-    py::gil_scoped_release release;
-    compute_mesh_map(Va, Fa, ida, Vb, Fb, idb, opt, unreliable, refine, r);
-  } catch(...) {
-    relay.rethrow();
-    throw;
-  }
-  relay.rethrow();
+  relay.run_without_gil([&] { compute_mesh_map(Va, Fa, ida, Vb, Fb, idb, opt, unreliable, refine, r); });
   const py::ssize_t n = static_cast<py::ssize_t>(r.faces.size()), u = static_cast<py::ssize_t>(r.flagged.size());
   py::dict d;
   d["faces"] = owning_array(std::move(r.faces), {n});

@@ -205,6 +205,20 @@ public:
   std::function<void(const char*, double)> callback(const std::string& prefix = std::string());
   // with the GIL: raises the callable's exception, if it raised one
   void rethrow();
+  // runs `work` without the GIL, then raises the callable's exception if it raised one (before
+  // any exception of `work`: it came first)
+  template <class Work>
+  void run_without_gil(Work&& work)
+  {
+    try {
+      py::gil_scoped_release release;
+      work();
+    } catch(...) {
+      rethrow();
+      throw;
+    }
+    rethrow();
+  }
 
 private:
   py::object f_;

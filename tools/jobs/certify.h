@@ -45,7 +45,7 @@ inline std::vector<int> parse_cone_orders(const std::string& s)
   for(std::string tok; in >> tok;) {
     char* end = nullptr;
     const long v = std::strtol(tok.c_str(), &end, 10);
-    if(tok.empty() || *end != '\0' || v < 2 || v > 1000000)
+    if(tok.empty() || *end != '\0' || !hot_tools::is_cone_order(v))
       throw Usage_error{"--cone-orders must list integers of at least 2 (e.g. 2,3,7), got '" + tok + "'"};
     orders.push_back(static_cast<int>(v));
   }

@@ -32,6 +32,12 @@ namespace hot_tools {
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 
+// The cone orders the programs accept (files, options, Python): integers p from 2 (cone angle
+// 2 pi / p) to `max_cone_order`. The library takes any p >= 2 that makes a hyperbolic orbifold
+// (check_cone_orders()); the programs' bound keeps p an int read from text.
+constexpr long long max_cone_order = 1000000;
+inline bool is_cone_order(long long p) { return p >= 2 && p <= max_cone_order; }
+
 namespace io_impl {
 
 inline HOT::Status fail(HOT::Error_code code, const std::string& message)

@@ -144,7 +144,7 @@ inline std::string read_cone_comment(bool is_orbifold, const std::vector<std::st
     // # hot cone C LANDMARK VERTEX ORDER
     std::uint64_t i = 0, l = 0, v = 0, p = 0;
     if(f.size() != 7 || parse_unsigned(f[3], i) != NUMBER_OK || parse_unsigned(f[4], l) != NUMBER_OK ||
-       parse_unsigned(f[5], v) != NUMBER_OK || parse_unsigned(f[6], p) != NUMBER_OK || p < 2 || p > 1000000)
+       parse_unsigned(f[5], v) != NUMBER_OK || parse_unsigned(f[6], p) != NUMBER_OK || !is_cone_order(static_cast<long long>((std::min)(p, std::uint64_t(max_cone_order) + 1))))
       return std::string("cone line: '# hot cone C LANDMARK VERTEX ORDER' expected (integers, ORDER >= 2)");
     if(i >= c.landmark.size() || c.order[i] != 0)
       return std::string("cone line: cone " + std::to_string(i) + " is not a cone of the orbifold line before it, or is given twice");

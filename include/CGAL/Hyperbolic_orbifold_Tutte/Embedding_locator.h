@@ -13,12 +13,12 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/interpolation_model.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/lifted_triangulation.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_charts.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_build.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_search.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator_walk.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/disk_models.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator/lifted_triangulation.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator/locator_charts.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator/locator_build.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator/locator_search.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/locator/locator_walk.h>
 
 #include <boost/graph/graph_traits.hpp>
 

@@ -7,7 +7,7 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/disk_models.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>

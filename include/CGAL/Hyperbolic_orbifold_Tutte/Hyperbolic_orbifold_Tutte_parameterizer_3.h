@@ -14,12 +14,12 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cones_along_seam.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/embedding_pipeline.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/cones_along_seam.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/embedding_pipeline.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/genus_cut.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/orbifold_enums.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/orbifold_enums.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/properties.h>

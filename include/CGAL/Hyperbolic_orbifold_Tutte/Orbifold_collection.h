@@ -13,10 +13,10 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/input_stage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/dense_index.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Kernel_traits.h>

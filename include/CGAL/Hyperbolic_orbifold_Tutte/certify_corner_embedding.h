@@ -14,9 +14,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_checks.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_genus.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_topology.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certifier/corner_embedding_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certifier/corner_embedding_genus.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certifier/corner_embedding_topology.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>

@@ -12,13 +12,13 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cone_chart_solve.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_graph_problem.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/cone_chart_solve.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/input_stage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/cut_graph_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/seam_mesh_storage.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
 #include <CGAL/boost/graph/Seam_mesh.h>

@@ -11,10 +11,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_type.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_checks.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/mesh_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/mesh_graph.h>
 
 #include <CGAL/boost/graph/helpers.h>     // is_border
 #include <CGAL/boost/graph/properties.h>
@@ -50,22 +49,6 @@ namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 
 /*!
-\ingroup PkgHyperbolicOrbifoldTutteMainClasses
-what `check_mesh()` learnt about the mesh; fields are filled as far as the checks got.
-*/
-struct Mesh_info
-{
-  std::size_t number_of_vertices = 0;     ///< V
-  std::size_t number_of_edges = 0;        ///< E
-  std::size_t number_of_faces = 0;        ///< F
-  std::size_t number_of_border_loops = 0; ///< the number of boundary loops
-  long long euler_characteristic = 0;     ///< V - E + F
-  long long genus = -1;                   ///< (2 - border loops - (V-E+F)) / 2, or -1 if not computed
-  bool type_known = false;                ///< true once the topology check passed
-  Orbifold_type type = Sphere_type;       ///< the required or detected orbifold type
-};
-
-/*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 returns the number of boundary loops (cycles of border halfedges) of `tm`.
 \pre `tm` is a valid polygon mesh (each halfedge is visited once at most, so an invalid mesh
@@ -88,12 +71,7 @@ that.
 template <class TriangleMesh>
 bool detect_orbifold_type(const TriangleMesh& tm, Orbifold_type& type)
 {
-  if(faces(tm).begin() == faces(tm).end())
-    return false;
-  const std::size_t loops = count_border_loops(tm);
-  if(loops == 0) { type = Sphere_type; return true; }
-  if(loops == 1) { type = Disk_type; return true; }
-  return false;
+  return internal::orbifold_type_of_boundary(tm, type);
 }
 
 /*!
@@ -147,29 +125,8 @@ Status check_mesh(const TriangleMesh& tm,
                   std::optional<Orbifold_type> required_type,
                   Mesh_info* info = nullptr)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  namespace impl = internal::check_mesh_impl;
-
   Mesh_info local_info;
-  Mesh_info& mi = info ? *info : local_info;
-  mi = Mesh_info();
-
-  const internal::Dense_index<typename GT::vertex_descriptor> vindex(vertices(tm));
-  const internal::Dense_index<typename GT::face_descriptor> findex(faces(tm));
-  mi.number_of_vertices = vindex.size();
-  mi.number_of_faces = findex.size();
-  mi.number_of_edges = static_cast<std::size_t>(std::distance(edges(tm).begin(), edges(tm).end()));
-
-  Status r = impl::check_not_empty(mi.number_of_vertices, mi.number_of_faces);
-  if(r) r = impl::check_no_isolated_vertex(tm, vindex);
-  if(r) r = impl::check_manifold(tm, vindex, findex);
-  if(r) r = impl::check_triangles(tm, findex);
-  if(r) r = impl::check_finite_coordinates(tm, vpm, vindex);
-  if(r) r = impl::check_nondegenerate_faces(tm, vpm, vindex, findex);
-  if(r) r = impl::check_faces_in_double_range(tm, vpm, findex);
-  if(r) r = impl::check_one_component(tm, findex);
-  if(r) r = impl::check_topology(tm, vpm, vindex, required_type, mi);
-  return r;
+  return internal::check_mesh_impl::run_all(tm, vpm, required_type, info ? *info : local_info);
 }
 
 /*!

@@ -7,8 +7,8 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/cut_paths.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/cut_paths.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/mesh_graph.h>
 
 #include <CGAL/boost/graph/iterator.h>         // halfedges_around_target
 
@@ -89,7 +89,7 @@ struct Cut_options
   /// for a total cut length 1-6% longer.  Chords also matter for robustness:
   /// a chord closes a loop of cut vertices, which can separate the remaining
   /// free vertices and make a later path impossible.
-  double chord_penalty = 2.0;
+  double chord_penalty = internal::default_chord_penalty;
 
   /// the maximal number of path orders tried (0 means: the number of landmarks)
   std::size_t max_attempts = 0;
@@ -149,46 +149,10 @@ compute_cut_through_landmarks(
   VertexPointMap vpm,
   const Cut_options& options)
 {
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-
   Cut_result<TriangleMesh> res;
-  const std::size_t k = landmarks.size();
-  res.message = internal::check_cut_input(tm, k);
-  if(!res.message.empty()) return res;
-
-  const internal::Mesh_graph<TriangleMesh> g(tm, vpm);
-  std::vector<int> lm;
-  res.message = internal::landmark_indices(g, landmarks, lm);
-  if(!res.message.empty()) return res;
-  res.message = internal::check_cut_sphere(tm, g, lm[0]);
-  if(!res.message.empty()) return res;
-
-  const double penalty = options.chord_penalty > 0. ? options.chord_penalty : 0.;
-  const std::size_t max_attempts = options.max_attempts > 0 ? options.max_attempts : k;
-  std::vector<std::vector<int> > path_vertices;
-  const std::size_t failed =
-    internal::compute_cut_pieces(g, lm, penalty, max_attempts, path_vertices, res.number_of_attempts);
-  if(failed != k - 1) {
-    std::ostringstream os;
-    os << "no path from " << internal::describe_landmark(failed, lm[failed])
-       << " to " << internal::describe_landmark(failed + 1, lm[failed + 1])
-       << " avoiding the other landmarks and the rest of the cut ("
-       << res.number_of_attempts << " computation order(s) tried)";
-    res.message = os.str();
-    return res;
-  }
-
-  res.paths.resize(k - 1);
-  for(std::size_t i = 0; i + 1 < k; ++i) {
-    const std::vector<int>& pv = path_vertices[i];
-    res.paths[i].reserve(pv.size() - 1);
-    for(std::size_t j = 0; j + 1 < pv.size(); ++j) {
-      const vertex_descriptor a = g.verts[pv[j]], b = g.verts[pv[j + 1]];
-      res.paths[i].push_back(internal::halfedge_from_to(a, b, tm));
-    }
-  }
-  res.ok = true;
-  res.message.clear();
+  res.message = internal::cut_through_landmarks(tm, landmarks, vpm, options.chord_penalty, options.max_attempts,
+                                                res.paths, res.number_of_attempts);
+  res.ok = res.message.empty();
   return res;
 }
 
@@ -270,12 +234,7 @@ template <class SeamMesh, class TriangleMesh>
 bool add_cut_to_seam_mesh(SeamMesh& mesh, const TriangleMesh& tm,
                           const Cut_result<TriangleMesh>& cut)
 {
-  if(!cut.ok) return false;
-  bool all_added = true;
-  for(const auto& path : cut.paths)
-    for(const auto& h : path)
-      if(!mesh.add_seam(source(h, tm), target(h, tm))) all_added = false;
-  return all_added;
+  return cut.ok && internal::mark_seams(mesh, tm, cut.paths);
 }
 
 /*!

@@ -12,15 +12,15 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/weight_type.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certificate.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certify_and_repair.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/convex_polygon_domain.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/edge_weights.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/flat_problem.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver_doors.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/statistics_parameter.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/tutte_initialization.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/certify_and_repair.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/convex_polygon_domain.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/edge_weights.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/flat_problem.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/solver_doors.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/seam_mesh_storage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/statistics_parameter.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/solver/tutte_initialization.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>

@@ -7,6 +7,8 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_type.h>
+
 #include <CGAL/boost/graph/helpers.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -14,10 +16,27 @@
 #include <cstddef>
 
 /// \file genus.h
-/// The Euler characteristic and the genus of a mesh, computed once for the whole package.
+/// The Euler characteristic and the genus of a mesh, computed once for the whole package, and
+/// `Mesh_info`, what `check_mesh()` learns about a mesh's topology.
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteMainClasses
+what `check_mesh()` learnt about the mesh; fields are filled as far as the checks got.
+*/
+struct Mesh_info
+{
+  std::size_t number_of_vertices = 0;     ///< V
+  std::size_t number_of_edges = 0;        ///< E
+  std::size_t number_of_faces = 0;        ///< F
+  std::size_t number_of_border_loops = 0; ///< the number of boundary loops
+  long long euler_characteristic = 0;     ///< V - E + F
+  long long genus = -1;                   ///< (2 - border loops - (V-E+F)) / 2, or -1 if not computed
+  bool type_known = false;                ///< true once the topology check passed
+  Orbifold_type type = Sphere_type;       ///< the required or detected orbifold type
+};
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions

@@ -11,11 +11,12 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/cut_graph.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input_stage.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/seam_mesh_storage.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/statistics_parameter.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/input_stage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/seam_mesh_storage.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/statistics_parameter.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 
 #include <CGAL/boost/graph/Seam_mesh.h>

@@ -8,21 +8,13 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/shortest_tour.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/landmark_distances.h>
 
 #include <CGAL/boost/graph/properties.h>
 
 #include <boost/graph/graph_traits.hpp>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
-
-#include <algorithm>
 #include <cstddef>
-#include <limits>
 #include <vector>
 
 /// \file landmark_tour.h
@@ -31,90 +23,6 @@
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
-namespace internal {
-
-// Pairwise geodesic (shortest edge path) distances between the landmarks,
-// one Dijkstra per landmark, each stopped once the remaining landmarks are
-// settled.  Returns an empty matrix on invalid landmarks; unreachable pairs
-// get +infinity.  O(k n log n): each run usually sweeps most of the mesh,
-// so this dominates the pipeline on big meshes (about 0.6 s per landmark on
-// a 2.6M-vertex mesh), far more than the cut itself.
-template <class TriangleMesh, class VertexPointMap>
-std::vector<std::vector<double> >
-compute_landmark_distance_matrix(
-  const TriangleMesh& tm,
-  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
-  VertexPointMap vpm)
-{
-  std::vector<std::vector<double> > D;
-  const Mesh_graph<TriangleMesh> g(tm, vpm);
-  std::vector<int> lm;
-  if(!landmark_indices(g, landmarks, lm).empty()) return D;
-
-  const std::size_t k = lm.size();
-  D.assign(k, std::vector<double>(k, 0.));
-  // one run per landmark, independent of each other (in parallel where TBB is available,
-  // each with its own scratch arrays: the same distances whatever the number of threads)
-  auto runs = [&](std::size_t begin, std::size_t end) {
-    Dijkstra_workspace ws;
-    ws.init(g.size());
-    std::vector<char> targets(g.size(), 0);
-    for(std::size_t i = begin; i < end; ++i) {
-      // D is symmetric: from landmark i we only need landmarks i+1..k-1.
-      std::fill(targets.begin(), targets.end(), char(0));
-      for(std::size_t j = i + 1; j < k; ++j) targets[lm[j]] = 1;
-      const std::size_t n_targets = k - 1 - i;
-      std::size_t settled = 0;
-      ws.begin_run();
-      dijkstra(g, ws, lm[i], [&](int u) { if(targets[u]) ++settled; },
-               [&]() { return settled >= n_targets; });
-      for(std::size_t j = i + 1; j < k; ++j) D[i][j] = D[j][i] = ws.distance(lm[j]);
-    }
-  };
-  if(k < 2) return D;
-#ifdef CGAL_LINKED_WITH_TBB
-  if(g.size() * (k - 1) > 200000) { // (tens of milliseconds of searches)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, k - 1, 1),
-                      [&](const tbb::blocked_range<std::size_t>& r) { runs(r.begin(), r.end()); });
-    return D;
-  }
-#endif
-  runs(0, k - 1);
-  return D;
-}
-
-// Whether `D` is a square matrix of finite distances (every landmark reaches every other).
-inline bool is_finite_distance_matrix(const std::vector<std::vector<double> >& D)
-{
-  for(const auto& row : D) {
-    if(row.size() != D.size()) return false;
-    for(double d : row)
-      if(!(d < std::numeric_limits<double>::infinity())) return false;
-  }
-  return true;
-}
-
-// The paper's order from the landmark distances: the shortest closed tour, opened at its
-// longest edge. Empty if `D` is not a square matrix of finite distances.
-inline std::vector<std::size_t>
-landmark_tour_of_distances(const std::vector<std::vector<double> >& D)
-{
-  if(!is_finite_distance_matrix(D)) return std::vector<std::size_t>();
-  return open_tour_at_longest_edge(D, shortest_tour(D));
-}
-
-// Length of the open path through the landmarks in `order` under `D` (the length of the cut
-// of a sphere-type mesh through them in that order).
-inline double path_length(const std::vector<std::vector<double> >& D, const std::vector<std::size_t>& order)
-{
-  double len = 0.;
-  for(std::size_t i = 1; i < order.size(); ++i)
-    len += D[order[i - 1]][order[i]];
-  return len;
-}
-
-} // namespace internal
-
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
@@ -271,9 +179,7 @@ compute_landmark_tour(
   const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
   VertexPointMap vpm)
 {
-  const std::vector<std::vector<double> > D = internal::compute_landmark_distance_matrix(tm, landmarks, vpm);
-  if(D.size() != landmarks.size()) return std::vector<std::size_t>();
-  return internal::landmark_tour_of_distances(D);
+  return internal::landmark_tour(tm, landmarks, vpm);
 }
 
 /*!

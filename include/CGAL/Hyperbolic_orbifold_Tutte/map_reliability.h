@@ -10,8 +10,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/embedding_scale.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/maps/embedding_scale.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

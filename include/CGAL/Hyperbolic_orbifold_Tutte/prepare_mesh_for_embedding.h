@@ -11,8 +11,8 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/preparation_door.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/preparation/preparation_door.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Named_function_parameters.h>

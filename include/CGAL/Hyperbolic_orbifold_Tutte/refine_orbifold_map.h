@@ -12,7 +12,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/certify_hyperbolic_orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/genus_cut.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/genus_cut.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/refinement/map_refiner.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>

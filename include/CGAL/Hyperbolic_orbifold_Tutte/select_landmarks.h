@@ -7,8 +7,8 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/landmark_sampling.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/mesh_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/input/landmark_sampling.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/mesh_graph.h>
 
 #include <CGAL/boost/graph/helpers.h>
 

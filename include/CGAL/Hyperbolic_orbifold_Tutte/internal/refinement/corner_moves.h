@@ -14,10 +14,10 @@
 // oriented as before by the exact predicate.
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/corner_embedding_geometry.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/filtered_predicates.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/certifier/corner_embedding_geometry.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/disk_models.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/filtered_predicates.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

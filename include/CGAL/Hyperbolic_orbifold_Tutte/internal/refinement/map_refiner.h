@@ -12,8 +12,8 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Map_refinement_statistics.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/dense_index.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/internal/disk_models.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/dense_index.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/refinement/arap_on_target.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/refinement/corner_moves.h>
 
