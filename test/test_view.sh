@@ -14,7 +14,10 @@
 #     (and no unreliable point drawn: the map has none)
 #   unreliable: a capsule without a landmark at its far tip onto a bent copy: the page's
 #     unreliable vertices are those of map's report, and drawn (magenta pixels in both views)
-#   collection: three hands (test/cli_lib.sh), picking against 0_to_1 and 0_to_2.map.txt
+#   collection: four hands (test/cli_lib.sh), picking against 0_to_1, 0_to_2 and 0_to_3.map.txt
+#   genus: eight.off (genus 2, two cones): drawn without the tiling (coloured by position), cut
+#     along embed's cut graph;
+#     a map between two such files refused
 set -u
 prog="$1"; case_name="$2"; data="${3:-}"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -208,13 +211,41 @@ EOF2
       fail "no unreliable points drawn: $(head -c 600 "$tmp/r.json")"
     echo ok ;;
   collection)
-    make_hands a b c
+    make_hands a b c e
     "$prog" landmarks --mesh "$tmp/hand_a.off" --count 9 --out "$tmp/cones.txt" >/dev/null || fail "landmarks"
-    printf 'hand_a.off cones.txt\nhand_b.off cones.txt\nhand_c.off cones.txt\n' > "$tmp/list.txt"
+    printf 'hand_a.off cones.txt\nhand_b.off cones.txt\nhand_c.off cones.txt\nhand_e.off cones.txt\n' > "$tmp/list.txt"
     "$prog" collection --manifest "$tmp/list.txt" --out "$tmp/out" --all-pairs 2>/dev/null >/dev/null || fail "collection"
     "$prog" view --collection "$tmp/out" --out "$tmp/v" >/dev/null || fail "view"
     selftest "$tmp/v" "selftest=1&pick=700,3" "$tmp/r.json"
-    check "$tmp/r.json" "$tmp/cones.txt" 3 "$tmp/out/0_to_1.map.txt" 1 "$tmp/out/0_to_2.map.txt" 2
+    check "$tmp/r.json" "$tmp/cones.txt" 4 "$tmp/out/0_to_1.map.txt" 1 "$tmp/out/0_to_2.map.txt" 2 "$tmp/out/0_to_3.map.txt" 3
     echo ok ;;
+  genus)
+    # a closed mesh of genus 2 with two cones (eight.off): drawn without the tiling (its tile
+    # depends on the cut graph, which the OBJ file does not hold), with the cut graph embed wrote
+    # as its cut
+    echo "0 300" > "$tmp/two.cones"
+    "$prog" embed --mesh "$data/meshes/eight.off" --cones "$tmp/two.cones" --out "$tmp/e.obj" --cut-graph-out "$tmp/e.cut" \
+      >/dev/null || fail "embed eight"
+    "$prog" view --embedding "$tmp/e.obj" --out "$tmp/v" >/dev/null || fail "view of a genus-2 embedding"
+    selftest "$tmp/v" "selftest=1" "$tmp/r.json"
+    check "$tmp/r.json" "$tmp/two.cones" 2
+    data_json "$tmp/v" "$tmp/d.json"
+    python3 - "$tmp/d.json" "$tmp/e.cut" <<'EOF2' || fail "the page's cut is not the cut graph"
+import json, sys
+s = json.load(open(sys.argv[1]))['shapes'][0]
+assert s['fold'] is None, 'a folding polygon for genus 2: %s' % s['fold']
+assert s['colors'] and len(s['colors']) == len(s['positions']), 'no colour field in place of the tiling'
+
+page = {tuple(sorted(s['cut'][i:i + 2])) for i in range(0, len(s['cut']), 2)}
+paths = [[int(x) for x in l.split()] for l in open(sys.argv[2]) if l.strip() and not l.startswith('#')]
+graph = {tuple(sorted(p[j:j + 2])) for p in paths for j in range(len(p) - 1)}
+assert page == graph, '%d cut edges on the page, %d on the cut graph, %d in common' % (len(page), len(graph), len(page & graph))
+print('ok: the page cuts along the %d edges of the cut graph, without a tiling' % len(graph))
+EOF2
+    # a map between genus-2 embeddings still needs their cut graphs: refused, nothing written
+    "$prog" view --source-embedding "$tmp/e.obj" --target-embedding "$tmp/e.obj" --out "$tmp/v2" 2> "$tmp/stderr" >/dev/null
+    rc=$?
+    [ $rc -eq 3 ] && grep -q "cut graph" "$tmp/stderr" && [ ! -e "$tmp/v2" ] || fail "the refusal (exit $rc): $(cat "$tmp/stderr")"
+    echo "ok: refused: $(cat "$tmp/stderr")" ;;
   *) fail "unknown case $case_name" ;;
 esac

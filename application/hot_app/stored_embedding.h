@@ -59,9 +59,10 @@ struct Stored_embedding
 typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
 
 // Reads the embedding `path`; a file without the orbifold line (not written by `embed` or
-// `collection` of this version), a closed mesh of genus g >= 1 (its tile depends on its cut
-// graph, which the file does not hold), or faces that do not make a closed or disk mesh fail.
-inline void read_stored_embedding(const std::string& path, Stored_embedding& e)
+// `collection` of this version), or faces that do not make a closed or disk mesh fail; so does
+// a closed mesh of genus g >= 1 when the embedding is to be mapped (`for_map`: its tile depends
+// on its cut graph, which the file does not hold, so it has no locator).
+inline void read_stored_embedding(const std::string& path, Stored_embedding& e, bool for_map = true)
 {
   e.path = path;
   HOT::Corner_embedding ce;
@@ -72,7 +73,7 @@ inline void read_stored_embedding(const std::string& path, Stored_embedding& e)
     throw Failure{HOT::ERROR_READ_FAILED, path + ": the file has no '# hot orbifold' line (it was not written by embed or collection of"
                                                 " this version): embed the mesh again, or map from the meshes (--source, --target)"};
   e.cones = extras.cones;
-  if(e.cones.genus > 0)
+  if(for_map && e.cones.genus > 0)
     throw Failure{HOT::ERROR_WRONG_TOPOLOGY, path + ": a closed mesh of genus " + std::to_string(e.cones.genus) +
                                                ": its tile depends on its cut graph, which the file does not hold; map from the meshes"
                                                " (--source, --target, with their cut graphs)"};

@@ -295,6 +295,8 @@ inline View_data view_embedding(const View_input& in)
       }
     }
   s.fold = fold_polygon(in.signature, in.genus);
+  if(s.fold.empty()) // genus g >= 1: no tiling to draw; the colour field shows where each face went
+    s.colors = position_colours(m);
   return d;
 }
 
@@ -416,8 +418,9 @@ inline void write_view_folder(const std::string& dir, const View_data& d)
   }
 }
 
-// a stored embedding (embed's or collection's OBJ file) as the viewer's input
-inline View_input view_input(const Stored_embedding& e, const Locator& loc)
+// a stored embedding (embed's or collection's OBJ file) as the viewer's input; `loc` may be null
+// for an embedding shown alone (view_embedding() does not locate points)
+inline View_input view_input(const Stored_embedding& e, const Locator* loc)
 {
   View_input in;
   in.name = view_impl::file_name(e.path);
@@ -425,7 +428,7 @@ inline View_input view_input(const Stored_embedding& e, const Locator& loc)
   in.uv = e.uv;
   in.charts = e.charts;
   in.chart_isometries = e.chart_isometries;
-  in.locator = &loc;
+  in.locator = loc;
   for(std::size_t i = 0; i < e.cones.vertex.size(); ++i) {
     in.landmark_numbers.push_back(i < e.cones.landmark.size() ? e.cones.landmark[i] : i);
     in.landmark_vertices.push_back(e.line_vertex[e.cones.vertex[i]]);

@@ -46,13 +46,16 @@ inline int run_view(int argc, char** argv)
   std::vector<Locator> L;
   L.reserve(paths.size()); // (the inputs point to them)
   for(std::size_t i = 0; i < paths.size(); ++i) {
-    read_stored_embedding(paths[i], E[i]);
+    read_stored_embedding(paths[i], E[i], kind != "embedding"); // (one embedding of genus g >= 1: drawn without its tiling)
     if(i > 0)
       check_stored_pair(E[0], E[i]);
   }
-  for(const Stored_embedding& e : E) L.push_back(stored_locator(e));
   std::vector<View_input> in;
-  for(std::size_t i = 0; i < E.size(); ++i) in.push_back(view_input(E[i], L[i]));
+  for(const Stored_embedding& e : E) {
+    if(e.cones.genus == 0)
+      L.push_back(stored_locator(e));
+    in.push_back(view_input(e, e.cones.genus == 0 ? &L.back() : nullptr));
+  }
   const View_data d = kind == "embedding" ? view_embedding(in[0]) : view_maps(in, kind, title);
   write_view_folder(out, d);
   std::size_t unreliable = 0;

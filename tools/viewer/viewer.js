@@ -329,7 +329,7 @@
     var scene = new THREE.Scene();
     var group = new THREE.Group();
     scene.add(group);
-    var tiled = data.kind === 'embedding' && shape.uv;
+    var tiled = data.kind === 'embedding' && shape.uv && shape.fold; // (genus >= 1: no fold, the colour field)
     var geom = surfaceGeometry(shape, false);
     var mesh = new THREE.Mesh(geom, makeMaterial(tiled ? 1 : 0, true, shape.fold));
     var centre = geom.boundingSphere.center.clone(), radius = geom.boundingSphere.radius;
@@ -389,7 +389,7 @@
     dim.position.z = -0.005;
     group.add(dim);
     var geom = surfaceGeometry(shape, true);
-    var mesh = new THREE.Mesh(geom, makeMaterial(1, false, shape.fold));
+    var mesh = new THREE.Mesh(geom, makeMaterial(shape.fold ? 1 : 0, false, shape.fold));
     group.add(mesh);
     // the mesh's edges in the disk, and the cut (the tile's boundary)
     var F = shape.faces, nf = F.length / 3, ep = new Float32Array(nf * 18), j;
@@ -583,8 +583,12 @@
       renderer.setClearColor(v.background, 1);
       renderer.clear();
       var aspect = r.w / r.h;
-      if (v.camera.isPerspectiveCamera) v.camera.aspect = aspect;
-      else { var s = 1.05; v.camera.left = -s * Math.max(aspect, 1); v.camera.right = s * Math.max(aspect, 1);
+      if (v.camera.isPerspectiveCamera) {
+        v.camera.aspect = aspect;
+        // a view narrower than tall (several shapes side by side) widens its vertical angle, so
+        // that the shape fits across it as it fits in height
+        v.camera.fov = aspect >= 1 ? 35 : 2 * Math.atan(Math.tan(35 / 2 * Math.PI / 180) / aspect) * 180 / Math.PI;
+      } else { var s = 1.05; v.camera.left = -s * Math.max(aspect, 1); v.camera.right = s * Math.max(aspect, 1);
              v.camera.top = s / Math.min(aspect, 1); v.camera.bottom = -s / Math.min(aspect, 1); }
       v.camera.updateProjectionMatrix();
       renderer.render(v.scene, v.camera);
