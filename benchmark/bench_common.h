@@ -16,7 +16,10 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <fstream>
 #include <cmath>
+#include <vector>
+#include <string>
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -28,6 +31,17 @@ typedef boost::graph_traits<SM>::face_descriptor SM_face;
 typedef std::chrono::steady_clock Clock;
 
 /// wall time since `t`, in seconds
+// the vertex indices of a landmark or rows file, whitespace-separated (no check: benchmark input)
+inline std::vector<std::size_t> read_indices(const std::string& file)
+{
+  std::ifstream in(file);
+  std::vector<std::size_t> out;
+  std::size_t i;
+  while(in >> i)
+    out.push_back(i);
+  return out;
+}
+
 inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 /// the diagonal of the bounding box of `m`

@@ -24,16 +24,6 @@ typedef K::Point_2 Point_2;
 typedef SM::Property_map<SM_halfedge, Point_2> UV;
 typedef HOT::Embedding_locator<SM, UV> Locator;
 
-static std::vector<std::size_t> read_indices(const std::string& file)
-{
-  std::ifstream in(file);
-  std::vector<std::size_t> out;
-  std::size_t i;
-  while(in >> i)
-    out.push_back(i);
-  return out;
-}
-
 struct Figures
 {
   double mean = 0, worst = 0;

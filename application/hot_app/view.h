@@ -107,33 +107,35 @@ inline void number(std::string& s, double x, int digits)
   s += buf;
 }
 
-inline void array(std::string& s, const char* key, const std::vector<double>& v, int digits)
-{
-  s += "\"";
-  s += key;
-  s += "\":";
-  if(v.empty()) {
-    s += "null";
-    return;
-  }
-  s += "[";
-  for(std::size_t i = 0; i < v.size(); ++i) {
-    if(i) s += ",";
-    number(s, v[i], digits);
-  }
-  s += "]";
-}
-
-inline void array(std::string& s, const char* key, const std::vector<std::size_t>& v)
+// "key":[e0,e1,...], element i written by put(i)
+template <class Put>
+void list(std::string& s, const char* key, std::size_t n, Put put)
 {
   s += "\"";
   s += key;
   s += "\":[";
-  for(std::size_t i = 0; i < v.size(); ++i) {
+  for(std::size_t i = 0; i < n; ++i) {
     if(i) s += ",";
-    s += std::to_string(v[i]);
+    put(i);
   }
   s += "]";
+}
+
+// numbers to `digits` significant digits; an empty array is null (the page: "none")
+inline void array(std::string& s, const char* key, const std::vector<double>& v, int digits)
+{
+  if(v.empty()) {
+    s += "\"";
+    s += key;
+    s += "\":null";
+    return;
+  }
+  list(s, key, v.size(), [&](std::size_t i) { number(s, v[i], digits); });
+}
+
+inline void array(std::string& s, const char* key, const std::vector<std::size_t>& v)
+{
+  list(s, key, v.size(), [&](std::size_t i) { s += std::to_string(v[i]); });
 }
 
 inline std::string quoted(const std::string& t)

@@ -41,15 +41,6 @@ typedef K::Point_3 Point_3;
 typedef SM::Property_map<SM_halfedge, Point_2> UV;
 typedef HOT::Embedding_locator<SM, UV> Locator;
 
-static std::vector<std::size_t> read_indices(const std::string& file)
-{
-  std::ifstream in(file);
-  std::vector<std::size_t> out;
-  std::size_t i;
-  while(in >> i) out.push_back(i);
-  return out;
-}
-
 static bool truth = true; // vertex i of A <-> vertex i of B
 
 // geodesic (edge graph) distances from the sources, up to `limit`
