@@ -6,8 +6,11 @@
 // vertex), the map's distortion (conformal and area p99, symmetric Dirichlet energy) before and
 // after, the independent certificate of the refined embedding, and the times (the refinement
 // against the two embeddings and the map, measured in this run).
-//   bench_refine A.off LA B.off LB [ROWS] [--iterations N] [--svg PICTURE.svg]
-// --svg draws A twice, each vertex coloured by its error before and after the refinement (white
+//   bench_refine A.off LA B.off LB [ROWS] [--iterations N] [--augment] [--svg PICTURE.svg]
+// --augment: the extremities matched by match_extremities() are added to the landmarks first
+// (each pair printed with its distance to the truth); the harmonic map is then the augmented one.
+// --svg draws A twice, each vertex coloured by its error before and after the refinement (with
+// --augment: the harmonic map with the given landmarks only, then the augmented refined one; white
 // 0 to dark red at the harmonic map's worst error), the landmarks as dots (the manual's figure).
 // LA, LB: landmark files (one vertex index per line, line j of LA corresponds to line j of LB);
 // ROWS: an optional file of 0-based rows of LA/LB to use (e.g. tosca_wolf.suggested_rows7.txt).
@@ -27,6 +30,7 @@ typedef HOT::Embedding_locator<SM, UV> Locator;
 struct Figures
 {
   double mean = 0, worst = 0;
+  std::size_t worst_vertex = 0;
   std::vector<double> error; // per vertex of A, in diagonals of B
   HOT::Map_distortion d;
 };
@@ -41,7 +45,10 @@ static Figures measure(const SM& A, const UV& uvA, const SM& B, const Locator& L
     const double e = std::sqrt(CGAL::squared_distance(p, B.point(v))) / diag;
     r.mean += e / num_vertices(A);
     r.error.push_back(e);
-    r.worst = (std::max)(r.worst, e);
+    if(e > r.worst) {
+      r.worst = e;
+      r.worst_vertex = v.idx();
+    }
   }
   r.d = HOT::map_distortion(A, B, L, locs);
   return r;
@@ -49,8 +56,8 @@ static Figures measure(const SM& A, const UV& uvA, const SM& B, const Locator& L
 
 static void print(const char* what, const Figures& f)
 {
-  std::printf("  %-8s error mean %.3f%% worst %.2f%%  conformal p99 %.3f  area p99 %.3f  symmetric Dirichlet %.4f\n", what,
-              100 * f.mean, 100 * f.worst, f.d.conformal_summary.p99, f.d.area_summary.p99, f.d.symmetric_dirichlet_energy);
+  std::printf("  %-8s error mean %.3f%% worst %.2f%% (vertex %zu)  conformal p99 %.3f  area p99 %.3f  symmetric Dirichlet %.4f\n", what,
+              100 * f.mean, 100 * f.worst, f.worst_vertex, f.d.conformal_summary.p99, f.d.area_summary.p99, f.d.symmetric_dirichlet_energy);
 }
 
 // draws A, seen along -z (orthographic, painter's algorithm, Lambert shading), each face coloured
@@ -99,14 +106,39 @@ static void draw_errors(std::ostream& os, const SM& A, const std::vector<double>
   }
 }
 
+// embeds A in its landmarks' tour (`sa`; `ordered`: A's landmarks in cone order) and B in the same order
+static bool embed_pair(SM& A, const std::vector<SM_vertex>& lma, UV uvA, SM& B, const std::vector<SM_vertex>& lmb, UV uvB,
+                       HOT::Embedding_statistics& sa, std::vector<SM_vertex>& ordered)
+{
+  HOT::Embedding_statistics sb;
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(A, lma, uvA, HOT::parameters::embedding_statistics(&sa, HOT::parameters::landmark_order(HOT::Tsp_order))) != HOT::OK) {
+    std::printf("A refused: %s\n", sa.message.c_str());
+    return false;
+  }
+  std::vector<SM_vertex> lmb_o;
+  ordered.clear();
+  for(std::size_t i : sa.landmark_order) {
+    ordered.push_back(lma[i]);
+    lmb_o.push_back(lmb[i]);
+  }
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(B, lmb_o, uvB, HOT::parameters::embedding_statistics(&sb)) != HOT::OK) {
+    std::printf("B refused: %s\n", sb.message.c_str());
+    return false;
+  }
+  return true;
+}
+
 int main(int argc, char** argv)
 {
   std::vector<std::string> args;
   int iterations = 100;
   std::string svg;
+  bool augment = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if(a == "--iterations" && i + 1 < argc)
+    if(a == "--augment")
+      augment = true;
+    else if(a == "--iterations" && i + 1 < argc)
       iterations = std::atoi(argv[++i]);
     else if(a == "--svg" && i + 1 < argc)
       svg = argv[++i];
@@ -116,7 +148,7 @@ int main(int argc, char** argv)
   SM A, B;
   if(args.size() < 4 || !CGAL::IO::read_polygon_mesh(args[0], A) || !CGAL::IO::read_polygon_mesh(args[2], B) ||
      num_vertices(A) != num_vertices(B)) {
-    std::printf("usage: bench_refine A.off LA B.off LB [ROWS] [--iterations N] (A and B with the same vertices)\n");
+    std::printf("usage: bench_refine A.off LA B.off LB [ROWS] [--iterations N] [--augment] [--svg PICTURE.svg] (A and B with the same vertices)\n");
     return 1;
   }
   std::vector<std::size_t> la = read_indices(args[1]), lb = read_indices(args[3]);
@@ -134,25 +166,46 @@ int main(int argc, char** argv)
     lma.push_back(SM_vertex(static_cast<SM::size_type>(la[i])));
     lmb.push_back(SM_vertex(static_cast<SM::size_type>(lb[i])));
   }
+  const std::size_t user_landmarks = lma.size();
+  Figures plain; // (--augment --svg: the harmonic map with the user's landmarks only, drawn on the left)
+  if(augment && !svg.empty()) {
+    UV uv0A = A.add_property_map<SM_halfedge, Point_2>("h:uv0", Point_2(0, 0)).first;
+    UV uv0B = B.add_property_map<SM_halfedge, Point_2>("h:uv0", Point_2(0, 0)).first;
+    HOT::Embedding_statistics s0;
+    std::vector<SM_vertex> ordered;
+    if(!embed_pair(A, lma, uv0A, B, lmb, uv0B, s0, ordered))
+      return 1;
+    plain = measure(A, uv0A, B, Locator(B, uv0B, CGAL::is_closed(B) ? HOT::Sphere_type : HOT::Disk_type, static_cast<int>(lma.size()),
+                                        HOT::Hyperboloid_linear));
+    A.remove_property_map(uv0A);
+    B.remove_property_map(uv0B);
+  }
+  const auto t0 = Clock::now();
+  if(augment) {
+    HOT::Extremity_matching<SM_vertex> xm;
+    if(HOT::match_extremities(A, lma, B, lmb, xm) != HOT::OK) {
+      std::printf("match_extremities refused: %s\n", xm.message.c_str());
+      return 1;
+    }
+    std::printf("  augmented: %zu pairs of the %zu/%zu thin tips found (%.2f s)\n", xm.pairs.size(), xm.source_extremities,
+                xm.target_extremities, xm.seconds);
+    for(std::size_t i = 0; i < xm.pairs.size(); ++i) {
+      std::printf("    source vertex %zu -> target vertex %zu (tipness %.2f/%.2f, descriptors %.3f apart): %.2f%% of the diagonal from the truth\n",
+                  std::size_t(xm.pairs[i].first.idx()), std::size_t(xm.pairs[i].second.idx()), xm.source_tipness[i], xm.target_tipness[i],
+                  xm.descriptor_difference[i],
+                  100 * std::sqrt(CGAL::squared_distance(B.point(xm.pairs[i].second), B.point(SM_vertex(xm.pairs[i].first.idx())))) / diagonal(B));
+      lma.push_back(xm.pairs[i].first);
+      lmb.push_back(xm.pairs[i].second);
+    }
+  }
   UV uvA = A.add_property_map<SM_halfedge, Point_2>("h:uv", Point_2(0, 0)).first;
   UV uvB = B.add_property_map<SM_halfedge, Point_2>("h:uv", Point_2(0, 0)).first;
-  HOT::Embedding_statistics sa, sb;
-  const auto t0 = Clock::now();
-  if(HOT::hyperbolic_orbifold_Tutte_embedding(A, lma, uvA, HOT::parameters::embedding_statistics(&sa, HOT::parameters::landmark_order(HOT::Tsp_order))) != HOT::OK) {
-    std::printf("A refused: %s\n", sa.message.c_str());
+  HOT::Embedding_statistics sa;
+  std::vector<SM_vertex> lma_o;
+  if(!embed_pair(A, lma, uvA, B, lmb, uvB, sa, lma_o))
     return 1;
-  }
-  std::vector<SM_vertex> lma_o, lmb_o;
-  for(std::size_t i : sa.landmark_order) {
-    lma_o.push_back(lma[i]);
-    lmb_o.push_back(lmb[i]);
-  }
-  if(HOT::hyperbolic_orbifold_Tutte_embedding(B, lmb_o, uvB, HOT::parameters::embedding_statistics(&sb)) != HOT::OK) {
-    std::printf("B refused: %s\n", sb.message.c_str());
-    return 1;
-  }
   const HOT::Orbifold_type type = CGAL::is_closed(B) ? HOT::Sphere_type : HOT::Disk_type;
-  const Locator L(B, uvB, type, static_cast<int>(la.size()), HOT::Hyperboloid_linear);
+  const Locator L(B, uvB, type, static_cast<int>(lma.size()), HOT::Hyperboloid_linear);
   const Figures before = measure(A, uvA, B, L);
   const double t_map = seconds_since(t0);
   HOT::Map_refinement_statistics rs;
@@ -187,24 +240,31 @@ int main(int argc, char** argv)
     }
     for(int b = 0; b < 12; ++b) std::printf("  rings %d: %d of %d faces with conformal > 2.5\n", b, hist[b], all[b]);
   }
-  std::printf("%s -> %s, %zu vertices, %zu landmarks\n", args[0].c_str(), args[2].c_str(), num_vertices(A), la.size());
+  std::printf("%s -> %s, %zu vertices, %zu landmarks%s\n", args[0].c_str(), args[2].c_str(), num_vertices(A), user_landmarks,
+              augment ? (" + " + std::to_string(lma.size() - user_landmarks) + " added").c_str() : "");
   print("harmonic", before);
   print("refined", after);
   std::printf("  refinement: %d iterations (%s), symmetric Dirichlet energy %.5f -> %.5f, %zu of %zu free vertices' moves undone in the last\n",
               rs.iterations, rs.message.c_str(), rs.energy_before, rs.energy_after, rs.undone_moves, rs.free_vertices);
   std::printf("  independent certificate of the refined embedding: %s\n", certified ? "bijective" : why.c_str());
-  std::printf("  time: embed both + map %.2f s, refine %.2f s (certificates %.2f s), ratio %.2f\n", t_map, rs.seconds, rs.seconds_certificate,
+  std::printf("  time: %sembed both + map %.2f s, refine %.2f s (certificates %.2f s), ratio %.2f\n", augment ? "match extremities + " : "", t_map, rs.seconds, rs.seconds_certificate,
               rs.seconds / t_map);
   if(!svg.empty()) {
     std::ofstream os(svg);
     char caption[256];
     os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1000\" height=\"560\" viewBox=\"0 0 1000 560\">\n"
        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    draw_errors(os, A, before.error, before.worst, lma, 0, 500);
-    draw_errors(os, A, after.error, before.worst, lma, 500, 500);
-    std::snprintf(caption, sizeof(caption), "harmonic orbifold map: error mean %.2f%%, worst %.2f%%", 100 * before.mean, 100 * before.worst);
+    const Figures& left = augment ? plain : before;
+    const std::vector<SM_vertex> user(lma.begin(), lma.begin() + user_landmarks);
+    draw_errors(os, A, left.error, left.worst, user, 0, 500);
+    draw_errors(os, A, after.error, left.worst, lma, 500, 500);
+    std::snprintf(caption, sizeof(caption), "harmonic orbifold map: error mean %.2f%%, worst %.2f%%", 100 * left.mean, 100 * left.worst);
     os << "<text x=\"250\" y=\"530\" font-family=\"sans-serif\" font-size=\"16\" text-anchor=\"middle\">" << caption << "</text>\n";
-    std::snprintf(caption, sizeof(caption), "refined (%d iterations): mean %.2f%%, worst %.2f%%", rs.iterations, 100 * after.mean, 100 * after.worst);
+    if(augment)
+      std::snprintf(caption, sizeof(caption), "augmented (+%zu), refined: mean %.2f%%, worst %.2f%%", lma.size() - user_landmarks,
+                    100 * after.mean, 100 * after.worst);
+    else
+      std::snprintf(caption, sizeof(caption), "refined (%d iterations): mean %.2f%%, worst %.2f%%", rs.iterations, 100 * after.mean, 100 * after.worst);
     os << "<text x=\"750\" y=\"530\" font-family=\"sans-serif\" font-size=\"16\" text-anchor=\"middle\">" << caption << "</text>\n</svg>\n";
     std::printf("  wrote %s\n", svg.c_str());
   }

@@ -34,8 +34,10 @@
 #     with `map --repair` onto the clean shape: error against the clean pair's, time.
 # 11. refinement (bench_refine, `map --refine`): refine_orbifold_map() on pose pairs with a
 #     ground truth, TOSCA's wolves with 7 and 21 landmarks (../shared/data, read in place,
-#     when present): error and distortion before/after, the
-#     independent certificate, the times; and the whole `map` process against `map --refine`
+#     when present), each pair both ways, without and with --augment (match_extremities()):
+#     error and distortion before/after, the independent certificate, the times; SHREC'07's
+#     humans (no vertex truth): the symmetric Dirichlet energy of map, map --refine and
+#     map --augment --refine; and the whole `map` process against `map --refine`
 #     on libcgal-demo meshes onto bent copies (test/bend.awk): the ratio of the times.
 # Prints the machine first.
 # Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine]
@@ -214,11 +216,13 @@ refine_section() {
   echo "== refinement (refine_orbifold_map(); errors in % of the target's diagonal against vertex i <-> vertex i)"
   local wolf="$root/../shared/data/collections/tosca_wolf" # (SHREC'07's humans are not one triangulation: no vertex truth)
   if [ -f "$wolf/tosca_wolf.suggested_rows7.txt" ]; then
-    for p in "0 1" "0 2" "1 2"; do
+    for p in "0 1" "0 2" "1 2" "1 0" "2 0" "2 1"; do
       set -- $p
       for rows in "$wolf/tosca_wolf.suggested_rows7.txt" ""; do
-        "$build/bin/bench_refine" "$wolf/tosca_wolf$1.off" "$wolf/tosca_wolf$1.landmarks.txt" "$wolf/tosca_wolf$2.off" \
-          "$wolf/tosca_wolf$2.landmarks.txt" $rows || true
+        for augment in "" --augment; do # (--augment: match_extremities() adds the thin tips first)
+          "$build/bin/bench_refine" "$wolf/tosca_wolf$1.off" "$wolf/tosca_wolf$1.landmarks.txt" "$wolf/tosca_wolf$2.off" \
+            "$wolf/tosca_wolf$2.landmarks.txt" $rows $augment || true
+        done
       done
     done
   else
@@ -243,6 +247,40 @@ refine_section() {
     printf '%-16s %9s %9s %9s %7s  %s -> %s\n' "$m" "$(sed -n 2p "$off" | awk '{print $1}')" "$(seconds "$t0" "$t1")" "$(seconds "$t1" "$t2")" \
       "$(awk -v a="$(seconds "$t0" "$t1")" -v b="$(seconds "$t1" "$t2")" 'BEGIN { printf "%.2f", b / a }')" "$e0" "$e1"
   done
+  local human="$root/../shared/data/collections/shrec07_human"
+  if [ -f "$human/shrec07_human.suggested_rows7.txt" ]; then
+    echo "== SHREC'07 humans (no vertex truth), 7 landmarks: map, map --refine, map --augment --refine; conformal p90 and area p90 (a few sliver faces make the energy meaningless), whole-process times"
+    printf '%-10s %20s %20s %20s %8s %8s %8s  %s\n' pair "conf/area map" "conf/area refine" "conf/area augment" map_s refine_s augm_s added
+    for p in "001 002" "003 004" "001 003" "002 004" "001 004" "002 003"; do
+      set -- $p
+      [ -f "$human/shrec07_human_$1.off" ] && [ -f "$human/shrec07_human_$2.off" ] || continue
+      local c
+      for c in "$1" "$2"; do
+        awk 'NR == FNR { r[$1 + 1] = 1; next } (FNR in r)' "$human/shrec07_human.suggested_rows7.txt" "$human/shrec07_human_$c.landmarks.txt" > "$work/h$c.c7"
+      done
+      local args=(--source "$human/shrec07_human_$1.off" --source-cones "$work/h$1.c7" --target "$human/shrec07_human_$2.off" --target-cones "$work/h$2.c7")
+      local t0 t1 t2 t3
+      t0=$(now); "$cli" map "${args[@]}" --out "$work/m0.txt" --report "$work/r0.json" >/dev/null 2>&1 || continue
+      t1=$(now); "$cli" map "${args[@]}" --out "$work/m1.txt" --report "$work/r1.json" --refine >/dev/null 2>&1 || continue
+      t2=$(now); "$cli" map "${args[@]}" --out "$work/m2.txt" --report "$work/r2.json" --augment --refine >/dev/null 2>&1 || continue
+      t3=$(now)
+      python3 - "$work" "$1-$2" "$(seconds "$t0" "$t1")" "$(seconds "$t1" "$t2")" "$(seconds "$t2" "$t3")" <<'PY' || true
+import json, sys
+w = sys.argv[1]
+r = [json.load(open("%s/r%d.json" % (w, i))) for i in range(3)]
+ca = ["%.3f / %.3f" % (x["distortion"]["conformal"]["p90"], x["distortion"]["area"]["p90"]) for x in r]
+print("%-10s %20s %20s %20s %8s %8s %8s  %d" % (sys.argv[2], ca[0], ca[1], ca[2], sys.argv[3], sys.argv[4], sys.argv[5], len(r[2]["augmentation"]["added"])))
+PY
+    done
+  fi
+  # the manual's figure of --augment (doc/fig/augment_octopus.png): an octopus (test/octopus.awk)
+  # onto a twirled copy, landmarks at the poles and five of the eight tips
+  echo "== the manual's figure: an octopus onto its twirled copy, the harmonic map against the augmented, refined one"
+  awk -v L=6 -f "$root/test/octopus.awk" > "$work/oct.off" 2> "$work/oct.std"
+  awk -v L=6 -v TWIRL=0.08 -f "$root/test/octopus.awk" > "$work/oct-twirl.off" 2> /dev/null
+  awk '{ print $1, $2, $4, $6, $8, $10, $12 }' "$work/oct.std" > "$work/oct.c7"
+  "$build/bin/bench_refine" "$work/oct.off" "$work/oct.c7" "$work/oct-twirl.off" "$work/oct.c7" --augment --svg "$build/augment_octopus.svg" || true
+  command -v rsvg-convert >/dev/null && rsvg-convert -w 1000 "$build/augment_octopus.svg" -o "$build/augment_octopus.png" && echo "  wrote $build/augment_octopus.png"
   # the manual's figure (doc/fig/refine_bear_errors.png): bear's errors before and after
   if [ -f "$work/bear.c7" ]; then
     echo "== the manual's figure: bear onto its bent copy, errors before and after the refinement"

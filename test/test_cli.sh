@@ -416,6 +416,59 @@ PY
     done
     grep -q -- "--refine" "$tmp/stderr" || fail "the usage error does not name --refine: $(cat "$tmp/stderr")"
     echo ok ;;
+  map_augment)
+    # --augment (issue 39): an octopus (octopus.awk, L=6: eight tentacles) and a twirled copy
+    # (same vertices: vertex i <-> vertex i), landmarks at the poles and at the tips of
+    # tentacles 0-4: the tips of tentacles 5-7 are protrusions without a landmark. Facts from
+    # the construction: each of the three gets one added pair, on its tip's cap (the tip and the
+    # four rings before it, 65 vertices) on both meshes; every added pair is a landmark of the
+    # map (the source vertex maps onto the target vertex); the map is closer to the truth.
+    command -v python3 >/dev/null || fail "python3 is needed to read the report"
+    d="$(dirname "${BASH_SOURCE[0]}")"
+    awk -v L=6 -f "$d/octopus.awk" > "$tmp/o.off" 2> "$tmp/o.std" || fail "octopus.awk"
+    awk -v L=6 -v TWIRL=0.08 -f "$d/octopus.awk" > "$tmp/t.off" 2> /dev/null || fail "octopus.awk TWIRL"
+    read -r p0 p1 b0 t0 b1 t1 b2 t2 b3 t3 b4 t4 b5 t5 b6 t6 b7 t7 < "$tmp/o.std"
+    printf "%s\n" "$p0" "$p1" "$t0" "$t1" "$t2" "$t3" "$t4" > "$tmp/o.cones"
+    args=(--source "$tmp/o.off" --source-cones "$tmp/o.cones" --target "$tmp/t.off" --target-cones "$tmp/o.cones")
+    "$prog" map "${args[@]}" --out "$tmp/m0.txt" --report "$tmp/r0.json" > /dev/null 2>&1 || fail "map failed"
+    "$prog" map "${args[@]}" --out "$tmp/m1.txt" --report "$tmp/r1.json" --augment > "$tmp/stdout" || fail "map --augment failed"
+    grep -q '^augmented: [0-9]* matched extremities added' "$tmp/stdout" || fail "stdout does not say what --augment added: $(cat "$tmp/stdout")"
+    e0=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m0.txt" "$tmp/t.off" "$tmp/t.off")
+    e1=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m1.txt" "$tmp/t.off" "$tmp/t.off")
+    echo "without: $e0; augmented: $e1"
+    # ("mapped N unmapped U max E mean M"): every vertex mapped, the worst and the mean error down
+    echo "$e0 $e1" | awk '{ if(!($4 == 0 && $12 == 0 && $14 < $6 && $16 < $8)) exit 1 }' || fail "the augmented map is not closer to the truth"
+    python3 - "$tmp" "$t5 $t6 $t7" <<'PY' || fail "the pairs added by --augment"
+import json, sys
+d, tips = sys.argv[1], [int(x) for x in sys.argv[2].split()]
+r0, r1 = json.load(open(d + "/r0.json")), json.load(open(d + "/r1.json"))
+assert "augmentation" not in r0, "a report without --augment has an augmentation block"
+aug = r1["augmentation"]
+added = aug["added"]
+assert r1["landmarks"] == 7 + len(added) and sorted(r1["landmark_order"]) == list(range(7 + len(added))), r1["landmark_order"]
+assert aug["source_extremities"] >= len(added) and aug["target_extremities"] >= len(added) and aug["seconds"] >= 0
+for t in tips:  # one pair on each tip's cap, on both meshes
+    on_cap = [(a, b) for a, b in added if t - 64 <= a <= t]
+    assert len(on_cap) == 1 and t - 64 <= on_cap[0][1] <= t, (t, added)
+def read_off(path):
+    w = open(path).read().split()
+    n = int(w[1])
+    return [tuple(map(float, w[4 + 3 * i:7 + 3 * i])) for i in range(n)], [tuple(map(int, w[5 + 3 * n + 4 * j:8 + 3 * n + 4 * j])) for j in range(int(w[2]))]
+P, F = read_off(d + "/t.off")
+lines = open(d + "/m1.txt").read().split("\n")
+for a, b in added:  # the map interpolates every added pair
+    f, *bary = lines[a].split()
+    q = [sum(float(bary[k]) * P[F[int(f)][k]][c] for k in range(3)) for c in range(3)]
+    assert sum((q[c] - P[b][c]) ** 2 for c in range(3)) < 1e-16, (a, b, q, P[b])
+PY
+    # refusals: with stored embeddings (usage, exit 2); on disk-type meshes (one line, no file)
+    "$prog" map --source-embedding x.obj --target-embedding y.obj --out "$tmp/m2.txt" --augment 2> "$tmp/stderr"; [ $? -eq 2 ] || fail "--augment with stored embeddings: not a usage error"
+    grep -q -- "--augment" "$tmp/stderr" || fail "the usage error does not name --augment: $(cat "$tmp/stderr")"
+    echo "1166 1785 147 932 2251 139" > "$tmp/m.cones"
+    expect_error "$tmp/m2.txt" map --source "$data/meshes/mushroom.off" --source-cones "$tmp/m.cones" --target "$data/meshes/mushroom.off" \
+      --target-cones "$tmp/m.cones" --out "$tmp/m2.txt" --augment
+    grep -q "augment" "$tmp/stderr" || fail "the disk's refusal does not name --augment"
+    echo ok ;;
   collection_refine)
     # collection --refine: cow.off and two copies bent by bend.awk (radii 4 and 6 times its
     # height; vertex i <-> vertex i): every mesh's embedding fitted to the first mesh's metric,

@@ -14,10 +14,17 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/match_extremities.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <map>
+#include <set>
 #include <vector>
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
@@ -239,6 +246,157 @@ TEST_CASE(heavy_refined_collection_is_cycle_consistent)
   std::cout << "  cycle consistency over the 24 triples: " << worst << " of the diagonal" << std::endl;
   CHECK(worst < 1e-8);
   CHECK(coll.refine(5, 9) == HOT::ERROR_WRONG_PARAMETER); // (no mesh 9)
+}
+
+// match_extremities() (issue 39: landmarks added where the user's leave a protrusion out)
+namespace {
+
+// A cube's surface, n x n squares per side, each square split into four triangles around its
+// centre (so the mesh has every symmetry of the cube), pushed onto the unit sphere; then spikes:
+// every vertex within the angle `theta0` of a spike's direction moves out radially to
+// 1 + h (1 - theta / theta0), a cone of height h over a base of angular radius theta0 (half-angle
+// about atan(theta0 / h): 17 degrees by default). n even: a vertex lies on each axis (the apex).
+Mesh spiked_sphere(int n, const std::vector<K::Vector_3>& spikes, double h = 1.5, double theta0 = 0.45)
+{
+  Mesh m;
+  std::map<std::array<int, 3>, vertex_descriptor> grid; // (twice the cube coordinates)
+  const auto vertex_at = [&](int x, int y, int z) {
+    const std::array<int, 3> key{{x, y, z}};
+    const auto it = grid.find(key);
+    if(it != grid.end())
+      return it->second;
+    K::Vector_3 q(x - n, y - n, z - n);
+    q = q / std::sqrt(q.squared_length());
+    double r = 1;
+    for(const K::Vector_3& d : spikes) {
+      const double theta = std::acos((std::max)(-1.0, (std::min)(1.0, q * d)));
+      if(theta < theta0)
+        r = 1 + h * (1 - theta / theta0);
+    }
+    return grid[key] = m.add_vertex(CGAL::ORIGIN + r * q);
+  };
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side)
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j) {
+          const auto at = [&](int u, int v) {
+            int c[3];
+            c[axis] = side ? 2 * n : 0;
+            c[(axis + 1) % 3] = u;
+            c[(axis + 2) % 3] = v;
+            return vertex_at(c[0], c[1], c[2]);
+          };
+          const vertex_descriptor ring[4] = {at(2 * i, 2 * j), at(2 * i + 2, 2 * j), at(2 * i + 2, 2 * j + 2), at(2 * i, 2 * j + 2)};
+          const vertex_descriptor centre = at(2 * i + 1, 2 * j + 1);
+          for(int k = 0; k < 4; ++k)
+            if(side)
+              m.add_face(ring[k], ring[(k + 1) % 4], centre);
+            else
+              m.add_face(ring[(k + 1) % 4], ring[k], centre);
+        }
+  return m;
+}
+
+// the vertex of spiked_sphere(n, ...) in the direction d (farthest along d on the sphere without
+// spikes: the vertices are numbered alike with or without spikes)
+vertex_descriptor toward(int n, const K::Vector_3& d)
+{
+  const Mesh m = spiked_sphere(n, {});
+  vertex_descriptor best = *vertices(m).begin();
+  for(vertex_descriptor v : vertices(m))
+    if((m.point(v) - CGAL::ORIGIN) * d > (m.point(best) - CGAL::ORIGIN) * d)
+      best = v;
+  return best;
+}
+
+// m turned about z, scaled by 2 and moved: geodesic distances double, descriptors are unchanged
+Mesh similar_copy(const Mesh& m)
+{
+  Mesh b = m;
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  for(vertex_descriptor v : vertices(b)) {
+    const K::Point_3& q = m.point(v);
+    b.point(v) = K::Point_3(2 * (c * q.x() - s * q.y()) + 1, 2 * (s * q.x() + c * q.y()) - 3, 2 * q.z() + 0.5);
+  }
+  return b;
+}
+
+const K::Vector_3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
+
+} // namespace
+
+TEST_CASE(extremities_are_the_spikes_the_landmarks_leave_out)
+{
+  // three spikes (+x, +y, -y) and landmarks at +z, -z, -x and the corner (1, 1, 1), which tells
+  // +y from -y; the target a similar copy (same vertices): the three apices, each onto itself
+  const Mesh a = spiked_sphere(8, {X, Y, -Y});
+  CHECK(CGAL::is_closed(a) && CGAL::is_valid_polygon_mesh(a));
+  const Mesh b = similar_copy(a);
+  const std::vector<vertex_descriptor> lm = {toward(8, Z), toward(8, -Z), toward(8, -X),
+                                             toward(8, K::Vector_3(1, 1, 1))};
+  HOT::Extremity_matching<vertex_descriptor> xm;
+  CHECK(HOT::match_extremities(a, lm, b, lm, xm) == HOT::OK);
+  CHECK_MSG(xm.source_extremities == 3 && xm.target_extremities == 3, "thin tips found: " + std::to_string(xm.source_extremities));
+  CHECK(xm.pairs.size() == 3);
+  std::set<vertex_descriptor> apices = {toward(8, X), toward(8, Y), toward(8, -Y)};
+  for(std::size_t i = 0; i < xm.pairs.size(); ++i) {
+    CHECK(xm.pairs[i].first == xm.pairs[i].second);
+    CHECK(apices.erase(xm.pairs[i].first) == 1);
+    // a cone of half-angle alpha has a ball of area sin(alpha) pi r^2, a flat disk 1
+    std::cout << "  pair " << i << ": vertex " << xm.pairs[i].first << ", tipness " << xm.source_tipness[i] << std::endl;
+    CHECK(xm.source_tipness[i] > 0 && xm.source_tipness[i] < 0.65);
+    CHECK(xm.descriptor_difference[i] < 1e-9);
+  }
+  // the farthest first: -y's apex (its base 90 degrees from the nearest landmark; +x and +y
+  // 55 degrees from the corner's)
+  CHECK(!xm.pairs.empty() && xm.pairs[0].first == toward(8, -Y));
+}
+
+TEST_CASE(a_sphere_has_no_thin_tips)
+{
+  // a round sphere: every geodesic ball's area is at least ~0.9 pi r^2 at a quarter of its size
+  const Mesh a = spiked_sphere(8, {});
+  const std::vector<vertex_descriptor> lm = {toward(8, Z), toward(8, -Z), toward(8, -X)};
+  HOT::Extremity_matching<vertex_descriptor> xm;
+  CHECK(HOT::match_extremities(a, lm, similar_copy(a), lm, xm) == HOT::OK);
+  CHECK(xm.source_extremities == 0 && xm.target_extremities == 0 && xm.pairs.empty());
+}
+
+TEST_CASE(mirror_twins_are_not_guessed)
+{
+  // spikes at +y and -y, landmarks on the plane y = 0 (+z, -z, +x, -x): the reflection y -> -y
+  // maps the mesh and every landmark onto itself and swaps the spikes, so nothing intrinsic tells
+  // them apart: both are found, neither is matched (not even onto itself, on the mesh itself:
+  // its mirror twin's descriptor is as near)
+  const Mesh a = spiked_sphere(8, {Y, -Y});
+  const std::vector<vertex_descriptor> lm = {toward(8, Z), toward(8, -Z), toward(8, X), toward(8, -X)};
+  HOT::Extremity_matching<vertex_descriptor> xm;
+  CHECK(HOT::match_extremities(a, lm, a, lm, xm) == HOT::OK);
+  CHECK(xm.source_extremities == 2 && xm.target_extremities == 2);
+  CHECK(xm.pairs.empty());
+}
+
+TEST_CASE(extremity_matching_refusals)
+{
+  const Mesh a = spiked_sphere(4, {X});
+  const std::vector<vertex_descriptor> lm = {toward(4, Z), toward(4, -Z), toward(4, -X)};
+  HOT::Extremity_matching<vertex_descriptor> xm;
+  const auto refused = [&](HOT::Error_code want, HOT::Error_code got) {
+    CHECK_MSG(got == want && !xm.message.empty() && xm.pairs.empty(), xm.message);
+  };
+  refused(HOT::ERROR_WRONG_PARAMETER, HOT::match_extremities(a, lm, a, std::vector<vertex_descriptor>(lm.begin(), lm.begin() + 2), xm));
+  refused(HOT::ERROR_TOO_FEW_LANDMARKS, HOT::match_extremities(a, {lm[0], lm[1]}, a, {lm[0], lm[1]}, xm));
+  refused(HOT::ERROR_DUPLICATE_LANDMARK, HOT::match_extremities(a, {lm[0], lm[1], lm[0]}, a, lm, xm));
+  refused(HOT::ERROR_LANDMARK_OUT_OF_RANGE, HOT::match_extremities(a, lm, a, {lm[0], lm[1], vertex_descriptor(100000)}, xm));
+  for(double bad : {0.0, -1.0, 1.5, std::nan("")}) {
+    refused(HOT::ERROR_WRONG_PARAMETER, HOT::match_extremities(a, lm, a, lm, xm, HOT::parameters::tip_threshold(bad)));
+    refused(HOT::ERROR_WRONG_PARAMETER, HOT::match_extremities(a, lm, a, lm, xm, HOT::parameters::extremity_radius(bad)));
+    refused(HOT::ERROR_WRONG_PARAMETER, HOT::match_extremities(a, lm, a, lm, xm, HOT::parameters::descriptor_tolerance(bad)));
+  }
+  Mesh open = a; // a face removed: not closed
+  CGAL::Euler::remove_face(halfedge(*faces(open).begin(), open), open);
+  refused(HOT::ERROR_WRONG_TOPOLOGY, HOT::match_extremities(a, lm, open, lm, xm));
+  CHECK(xm.message.rfind("the target: ", 0) == 0);
 }
 
 HOT_TEST_MAIN

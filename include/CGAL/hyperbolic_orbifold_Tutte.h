@@ -42,6 +42,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_distortion.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/match_extremities.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 
 #endif // CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_H

@@ -14,6 +14,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/match_extremities.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 
@@ -594,7 +595,34 @@ struct Mesh_map
   std::vector<std::string> refusals;
   std::vector<std::int64_t> faces, flagged;
   std::vector<double> bary;
+  std::vector<std::int64_t> added; // augment=True: (source vertex, target vertex) per pair added
 };
+
+// augment=True: the thin tips the landmarks leave out, matched across the meshes
+// (match_extremities(), as map --augment), appended to both meshes' landmarks (and an order 2
+// to the cone orders when some are given)
+void augment_landmarks(Embedding& a0, Embedding& b0, std::vector<std::size_t>& ida, std::vector<std::size_t>& idb, Embed_options& opt,
+                       std::vector<std::int64_t>& added)
+{
+  if(a0.type != HOT::Sphere_type || a0.genus != 0)
+    fail(HOT::ERROR_WRONG_PARAMETER, "augment adds landmarks inside closed meshes of genus 0 (sphere type); these meshes are not");
+  if(opt.order == "explicit")
+    fail(HOT::ERROR_WRONG_PARAMETER, "augment adds landmarks, so an order given as positions does not fit: give order \"auto\", \"tsp\" or \"given\"");
+  HOT::Extremity_matching<SM_vertex> xm;
+  const HOT::Error_code ec = HOT::match_extremities(a0.mesh, a0.landmarks, b0.mesh, b0.landmarks, xm);
+  if(ec != HOT::OK)
+    fail(ec, "augment: " + xm.message);
+  for(const std::pair<SM_vertex, SM_vertex>& p : xm.pairs) { // (the meshes' vertex i is row i of V)
+    a0.landmarks.push_back(p.first);
+    b0.landmarks.push_back(p.second);
+    ida.push_back(static_cast<std::size_t>(p.first.idx()));
+    idb.push_back(static_cast<std::size_t>(p.second.idx()));
+    added.push_back(static_cast<std::int64_t>(p.first.idx()));
+    added.push_back(static_cast<std::int64_t>(p.second.idx()));
+    if(!opt.cone_orders.empty())
+      opt.cone_orders.push_back(2);
+  }
+}
 
 // `progress` with `who` put before every phase's name (empty stays empty)
 std::function<void(const char*, double)> told_as(const char* who, const std::function<void(const char*, double)>& progress)
@@ -607,8 +635,8 @@ std::function<void(const char*, double)> told_as(const char* who, const std::fun
 // map_meshes() without Python: the command line's run_map() on arrays (the order choice, the
 // embeddings in that order, the next order when one is refused for a reason the order may cause,
 // the map)
-void compute_mesh_map(const Double_array& VA, const Index_array& FA, const std::vector<std::size_t>& ida, const Double_array& VB,
-                      const Index_array& FB, const std::vector<std::size_t>& idb, const Embed_options& opt, bool unreliable, int refine,
+void compute_mesh_map(const Double_array& VA, const Index_array& FA, std::vector<std::size_t> ida, const Double_array& VB,
+                      const Index_array& FB, std::vector<std::size_t> idb, Embed_options opt, bool unreliable, int refine, bool augment,
                       Mesh_map& r)
 {
   const auto rows = [](const auto& a) { return static_cast<std::size_t>(a.shape(0)); };
@@ -643,6 +671,8 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, const std::
     fail(HOT::ERROR_WRONG_PARAMETER, "the meshes have genus " + std::to_string(a0.genus) +
                                        " and not the same faces: a map between them depends on corresponding cut graphs;"
                                        " embed both with corresponding cut_graph= and call map()");
+  if(augment)
+    augment_landmarks(a0, b0, ida, idb, opt, r.added);
   const std::vector<HOT::Landmark_order_candidate> candidates = map_meshes_orders(opt, a0, b0);
   const char* embedding = "source"; // (the one being embedded)
   HOT::Error_code code = HOT::OK;
@@ -688,7 +718,7 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, const std::
 
 py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::handle VB, py::handle FB, py::handle landmarks_b,
                     const std::string& orbifold, const std::string& weights, py::handle order, py::handle cone_orders, bool unreliable,
-                    int refine, py::handle progress)
+                    int refine, bool augment, py::handle progress)
 {
   Progress_relay relay(progress);
   const Double_array Va = vertex_array(VA, "VA"), Vb = vertex_array(VB, "VB");
@@ -703,7 +733,7 @@ py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::ha
     fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
   opt.progress = relay.callback();
   Mesh_map r;
-  relay.run_without_gil([&] { compute_mesh_map(Va, Fa, ida, Vb, Fb, idb, opt, unreliable, refine, r); });
+  relay.run_without_gil([&] { compute_mesh_map(Va, Fa, ida, Vb, Fb, idb, opt, unreliable, refine, augment, r); });
   const py::ssize_t n = static_cast<py::ssize_t>(r.faces.size()), u = static_cast<py::ssize_t>(r.flagged.size());
   py::dict d;
   d["faces"] = owning_array(std::move(r.faces), {n});
@@ -717,6 +747,8 @@ py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::ha
   py::list refused;
   for(const std::string& x : r.refusals) refused.append(x);
   d["refused"] = refused;
+  const py::ssize_t p = static_cast<py::ssize_t>(r.added.size() / 2);
+  d["added"] = augment ? py::object(owning_array(std::move(r.added), {p, 2})) : py::object(py::none());
   return d;
 }
 
@@ -726,8 +758,9 @@ void register_maps(py::module_& m)
 {
   m.def("map_meshes", &map_meshes, py::arg("VA"), py::arg("FA"), py::arg("landmarks_a"), py::arg("VB"), py::arg("FB"), py::arg("landmarks_b"),
         py::kw_only(), py::arg("orbifold") = "auto", py::arg("weights") = "cotan", py::arg("order") = "auto",
-        py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0, py::arg("progress") = py::none(),
-        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0, progress=None) -> dict
+        py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0, py::arg("augment") = false,
+        py::arg("progress") = py::none(),
+        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0, augment=False, progress=None) -> dict
 
 Maps mesh A = (VA, FA) onto mesh B = (VB, FB) in one call, as the command line's `map`
 does: landmark i of landmarks_a corresponds to landmark i of landmarks_b; both meshes are
@@ -745,6 +778,10 @@ order: "auto" (sphere type of genus 0: the source's landmark tour or the target'
   given order), "tsp" (the source's tour only), "given" (the order of the landmarks), or
   a sequence of landmark positions (a permutation, as embed()'s order).
 unreliable, refine: as map()'s.
+augment: True adds to both meshes' landmarks the thin tips the landmarks leave out (a tail, a
+  heel), matched by their geodesic distances to the landmarks, as `map --augment` does
+  (closed meshes of genus 0; an order 2 is appended to cone_orders when given); the added
+  pairs come after the given landmarks (positions k, k+1, ... in "landmark_order").
 progress: as embed()'s, the phases of the two embeddings named "source: PHASE" and
   "target: PHASE" (a mesh embedded again in another order tells its phases again).
 
@@ -756,7 +793,9 @@ Returns a dict (the map() result and how it was made):
   "landmark_order": the order used (int64 array of landmark positions, the embeddings'
       landmark_order); "landmark_order_from": "source", "target" (whose tour it is) or
       "given"; "orders_tried": 1, or 2 when the first order was refused; "refused": the
-      refusals' messages (a list of str, empty when the first order was taken).
+      refusals' messages (a list of str, empty when the first order was taken);
+  "added": with augment=True, the pairs added (int64 (p, 2): source vertex, target vertex,
+      possibly none); else None.
 The same numbers as the two-step call embed(VA, FA, landmarks_a, order=o),
 embed(VB, FB, landmarks_b, order=o), map() with o = the returned landmark_order.
 Genus g >= 1: B must have A's faces (a deformed copy): it is cut along A's cut graph.

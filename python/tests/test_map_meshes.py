@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import hyperbolic_orbifold_tutte as hot
-from hot_testing import read_map, run_cli, write_cones
+from hot_testing import flat_disk, read_map, read_off, run_cli, write_cones
 
 
 def rigid_copy(V):
@@ -44,8 +44,8 @@ def bear_pair(bear):
 def test_rigid_copy_is_recovered(bear_pair):
     V, F, lm, W, r = bear_pair
     assert set(r) == {"faces", "bary", "unreliable", "source", "target", "landmark_order", "landmark_order_from",
-                      "orders_tried", "refused"}
-    assert r["faces"].shape == (len(V),) and r["bary"].shape == (len(V), 3) and r["unreliable"] is None
+                      "orders_tried", "refused", "added"}
+    assert r["faces"].shape == (len(V),) and r["bary"].shape == (len(V), 3) and r["unreliable"] is None and r["added"] is None
     assert r["source"].certified and r["target"].certified
     # A rigid motion changes no length or angle and keeps the triangulation: the two meshes
     # give the same cotangent weights, the same landmark distances (so the same tour) and the
@@ -286,3 +286,50 @@ def test_help_shows_the_parameters_and_an_example():
     for name in ("map_meshes", "map", "embed", "read_mesh", "select_landmarks", "transfer", "surface_points"):
         doc = getattr(hot, name).__doc__
         assert "Example" in doc or ">>>" in doc, "%s: no example in its docstring" % name
+
+
+# ---------------------------------------------------------------------------------------
+# augment=True: the command line's map --augment, from the arrays
+# ---------------------------------------------------------------------------------------
+
+def test_augment_adds_the_tentacles_without_landmarks(cli, source_dir, tmp_path):
+    # An octopus (test/octopus.awk) and a twirled copy (vertex i <-> vertex i), landmarks at the
+    # poles and at the tips of tentacles 0-4: tentacles 5-7 are protrusions without a landmark.
+    # Facts from the construction: each gets one pair on its tip's cap (the tip and the four
+    # rings before it) on both meshes; the map interpolates every pair; the same pairs and the
+    # same map as the command line's.
+    import subprocess
+    script = os.path.join(source_dir, "test", "octopus.awk")
+    with open(tmp_path / "o.off", "w") as out, open(tmp_path / "o.std", "w") as err:
+        subprocess.run(["awk", "-v", "L=6", "-f", script], stdout=out, stderr=err, check=True)
+    with open(tmp_path / "t.off", "w") as out:
+        subprocess.run(["awk", "-v", "L=6", "-v", "TWIRL=0.08", "-f", script], stdout=out, stderr=subprocess.DEVNULL, check=True)
+    ids = [int(x) for x in open(tmp_path / "o.std").read().split()]
+    lm = [ids[0], ids[1]] + [ids[3 + 2 * i] for i in range(5)]
+    tips = [ids[3 + 2 * i] for i in (5, 6, 7)]
+    VA, FA = read_off(tmp_path / "o.off")
+    VB, FB = read_off(tmp_path / "t.off")
+    r = hot.map_meshes(VA, FA, lm, VB, FB, lm, augment=True)
+    added = r["added"]
+    assert added.dtype == np.int64 and added.ndim == 2 and added.shape[1] == 2
+    for t in tips:
+        on_cap = [(a, b) for a, b in added if t - 64 <= a <= t]
+        assert len(on_cap) == 1 and t - 64 <= on_cap[0][1] <= t, (t, added)
+    assert sorted(r["landmark_order"]) == list(range(len(lm) + len(added)))
+    images = hot.surface_points(r["faces"], r["bary"], VB, FB)
+    for a, b in added:
+        assert np.linalg.norm(images[a] - VB[b]) < 1e-9 * diagonal(VB)
+    write_cones(tmp_path / "o.cones", lm)
+    run_cli(cli, "map", "--source", tmp_path / "o.off", "--source-cones", tmp_path / "o.cones", "--target", tmp_path / "t.off",
+            "--target-cones", tmp_path / "o.cones", "--out", tmp_path / "m.txt", "--report", tmp_path / "r.json", "--augment")
+    report = json.load(open(tmp_path / "r.json"))
+    assert [list(p) for p in added] == report["augmentation"]["added"]
+    faces, bary = read_map(tmp_path / "m.txt")
+    assert np.array_equal(faces, r["faces"]) and np.allclose(bary, r["bary"], rtol=0, atol=1e-15)
+    # refusals: an order given as positions; a disk
+    with pytest.raises(hot.InputError, match="augment"):
+        hot.map_meshes(VA, FA, lm, VB, FB, lm, augment=True, order=list(range(len(lm))))
+    VD, FD = flat_disk()
+    rim = [len(VD) - 72 + 12 * i for i in range(6)]  # six vertices of the outer ring (6 * 12 vertices)
+    with pytest.raises(hot.InputError, match="augment"):
+        hot.map_meshes(VD, FD, rim, VD, FD, rim, augment=True)

@@ -16,6 +16,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_distortion.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/match_extremities.h>
 
 #include <algorithm>
 #include <chrono>
@@ -151,11 +152,37 @@ inline int run_map_stored(const Options& opt)
   return EXIT_SUCCESS;
 }
 
+// --augment: the thin tips that the landmarks leave out, matched across the meshes by
+// match_extremities(), added to both meshes' landmarks after the files' ones (each a cone of
+// order 2 when --cone-orders is given); what was added goes into `summary`
+inline void augment_landmarks(Embedded& A, Embedded& B, std::vector<int>& orders, hot_tools::Map_summary& summary)
+{
+  if(A.type != HOT::Sphere_type || genus_of(A) != 0 || genus_of(B) != 0)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "--augment adds landmarks inside closed meshes of genus 0 (sphere type); these meshes are not"};
+  HOT::Extremity_matching<SM_vertex> xm;
+  const HOT::Error_code ec = HOT::match_extremities(A.mesh, A.landmarks, B.mesh, B.landmarks, xm);
+  if(ec != HOT::OK)
+    throw Failure{ec, "--augment: " + xm.message};
+  summary.augmented = true;
+  summary.source_extremities = xm.source_extremities;
+  summary.target_extremities = xm.target_extremities;
+  summary.seconds_augment = xm.seconds;
+  for(const std::pair<SM_vertex, SM_vertex>& p : xm.pairs) {
+    A.landmarks.push_back(p.first);
+    B.landmarks.push_back(p.second);
+    if(!orders.empty())
+      orders.push_back(2);
+    summary.added.emplace_back(hot_tools::output_vertex(p.first, addressing(A.in)), hot_tools::output_vertex(p.second, addressing(B.in)));
+  }
+}
+
 // `map` from the meshes, its first part: reads and checks both meshes (--repair, the handles of
-// one cut when the other has genus 0), chooses the landmark order and embeds both in the first
-// order both accept (map_pair.h). Returns the order used; `refusals`: the orders refused.
-inline HOT::Landmark_order_candidate embed_map_meshes(const Options& opt, const hot_tools::Repair_options& repair, const std::vector<int>& orders,
-                                                      Embedded& A, Embedded& B, std::vector<std::string>& refusals, Progress_line& progress)
+// one cut when the other has genus 0), adds matched extremities to the landmarks (--augment),
+// chooses the landmark order and embeds both in the first order both accept (map_pair.h).
+// Returns the order used; `refusals`: the orders refused.
+inline HOT::Landmark_order_candidate embed_map_meshes(const Options& opt, const hot_tools::Repair_options& repair, std::vector<int>& orders,
+                                                      Embedded& A, Embedded& B, std::vector<std::string>& refusals, Progress_line& progress,
+                                                      hot_tools::Map_summary& summary)
 {
   progress.step("read");
   read_and_check(opt.get("source"), opt.get("source-cones"), repair, A, minimum_landmarks(orders), &progress);
@@ -164,6 +191,11 @@ inline HOT::Landmark_order_candidate embed_map_meshes(const Options& opt, const 
   match_genus_zero(opt, repair, A, B, minimum_landmarks(orders));
   progress.done("read");
   check_map_pair(A, B);
+  if(opt.has("augment")) {
+    progress.step("augment");
+    augment_landmarks(A, B, orders, summary);
+    progress.done("augment");
+  }
   progress.step("landmark order");
   const std::vector<HOT::Landmark_order_candidate> candidates = map_cone_orders(parse_common_order(opt), A, B);
   progress.done("landmark order");
@@ -238,6 +270,13 @@ inline void print_map_result(const Options& opt, const std::string& out, const E
   std::cout << " (" << order_origin(chosen);
   for(const std::string& r : refusals) std::cout << "; " << r;
   std::cout << ")" << std::endl;
+  if(summary.augmented) {
+    std::cout << "augmented: " << summary.added.size() << " matched extremities added to the landmarks (of "
+              << summary.source_extremities << " thin tips on the source, " << summary.target_extremities << " on the target)";
+    for(const std::pair<std::size_t, std::size_t>& p : summary.added)
+      std::cout << "; " << p.first << " -> " << p.second;
+    std::cout << std::endl;
+  }
   if(refine > 0)
     std::cout << "refined: " << refinement.iterations << " certified iterations, symmetric Dirichlet energy " << refinement.energy_before
               << " -> " << refinement.energy_after << " (4 for an isometry), " << refinement.seconds << " s; " << refinement.message << std::endl;
@@ -256,23 +295,27 @@ inline void print_map_result(const Options& opt, const std::string& out, const E
 
 inline int run_map(int argc, char** argv)
 {
+  std::set<std::string> flags = with_progress_flag(repair_flags());
+  flags.insert("augment");
   const Options opt(argc, argv, 2,
                     {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole", "target-genus", "max-handle",
                      "cone-orders", "source-cut-graph", "target-cut-graph", "source-embedding", "target-embedding", "order"},
-                    with_progress_flag(repair_flags()), {"refine"});
+                    flags, {"refine"});
   if(opt.has("source-embedding") || opt.has("target-embedding")) {
-    if(opt.has("refine"))
-      throw Usage_error{"--refine refines a map computed from the meshes, not from stored embeddings"};
+    if(opt.has("refine") || opt.has("augment"))
+      throw Usage_error{std::string("--") + (opt.has("refine") ? "refine refines" : "augment adds landmarks to") +
+                        " a map computed from the meshes, not from stored embeddings"};
     return run_map_stored(opt);
   }
   const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
-  const std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
+  std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
   Progress_line progress("map", opt.has("progress"));
   Embedded A, B;
   std::vector<std::string> refusals;
-  const HOT::Landmark_order_candidate chosen = embed_map_meshes(opt, repair, orders, A, B, refusals, progress);
+  hot_tools::Map_summary augmentation; // (--augment's part of the summary)
+  const HOT::Landmark_order_candidate chosen = embed_map_meshes(opt, repair, orders, A, B, refusals, progress, augmentation);
   const std::vector<std::size_t>& order = chosen.order;
   const int k = static_cast<int>(order.size());
   progress.step("map");
@@ -293,6 +336,11 @@ inline int run_map(int argc, char** argv)
   progress.done("reliability");
   hot_tools::Map_summary summary = map_summary(opt, A, B, k, reliability);
   summary.images_in_filled_holes = images_in_filled_holes(A, B, f);
+  summary.augmented = augmentation.augmented;
+  summary.added = augmentation.added;
+  summary.source_extremities = augmentation.source_extremities;
+  summary.target_extremities = augmentation.target_extremities;
+  summary.seconds_augment = augmentation.seconds_augment;
   add_reliability_tests(summary, reliability);
   summary.landmark_order = order;
   summary.landmark_order_from = chosen.mesh == 0 ? "source" : chosen.mesh == 1 ? "target" : "given";

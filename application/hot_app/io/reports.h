@@ -247,7 +247,24 @@ struct Map_summary
   bool refined = false;
   HOT::Map_refinement_statistics refinement;
   HOT::Map_distortion distortion_before;
+  // map --augment: the matched extremities added to the landmarks (file numbers of the source's
+  // and the target's vertices; landmarks `landmarks - added.size()` on in `landmark_order`), the
+  // thin tips found on each mesh and the time; not written when `augmented` is false
+  bool augmented = false;
+  std::vector<std::pair<std::size_t, std::size_t> > added;
+  std::size_t source_extremities = 0, target_extremities = 0;
+  double seconds_augment = 0;
 };
+
+// map --augment's block of the report
+inline void write_augmentation_json(std::ostream& os, const Map_summary& m)
+{
+  os << "  \"augmentation\": {\"added\": [";
+  for(std::size_t i = 0; i < m.added.size(); ++i)
+    os << (i ? ", " : "") << "[" << m.added[i].first << ", " << m.added[i].second << "]";
+  os << "], \"source_extremities\": " << m.source_extremities << ", \"target_extremities\": " << m.target_extremities
+     << ", \"seconds\": " << m.seconds_augment << "},\n";
+}
 
 // map --refine's block of the report: the refinement's statistics and the distortion before it
 // `"conformal": {..}, "area": {..}, "symmetric_dirichlet": {..}, "symmetric_dirichlet_energy": E`
@@ -316,6 +333,8 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
   write_distortion_figures(os, m.distortion, "\n                 ");
   os << ",\n                 \"faces\": " << m.distortion.conformal_summary.number_of_faces
      << ", \"degenerate_faces\": " << m.distortion.number_of_degenerate_faces() << "},\n";
+  if(m.augmented)
+    write_augmentation_json(os, m);
   if(m.refined)
     write_refinement_json(os, m.refinement, m.distortion_before);
   os << "  \"squeezed_regions\": [";

@@ -51,6 +51,9 @@ enum maximum_handle_length_t { maximum_handle_length };
 enum multigrid_threshold_t { multigrid_threshold };
 enum refine_t { refine };
 enum progress_t { progress };
+enum extremity_radius_t { extremity_radius };
+enum tip_threshold_t { tip_threshold };
+enum descriptor_tolerance_t { descriptor_tolerance };
 } // namespace internal_np
 
 namespace parameters {
@@ -153,6 +156,15 @@ CGAL_HOT_NAMED_PARAMETER(refine)
 /// "initialization", "optimization" and "certificate", in this order, from the calling thread
 /// (see `Hyperbolic_orbifold_Tutte_parameterizer_3::set_progress()`; default: none)
 CGAL_HOT_NAMED_PARAMETER(progress)
+/// `double`: for `match_extremities()`, the radius of an extremity's geodesic ball as a fraction
+/// of the largest geodesic distance to the landmarks (default 0.25)
+CGAL_HOT_NAMED_PARAMETER(extremity_radius)
+/// `double`: for `match_extremities()`, the largest area of an extremity's geodesic ball of
+/// radius r, over pi r^2 (default 0.65: sharper than a cone of half-angle 40 degrees)
+CGAL_HOT_NAMED_PARAMETER(tip_threshold)
+/// `double`: for `match_extremities()`, the largest relative difference of the descriptors of
+/// a matched pair (default 0.1)
+CGAL_HOT_NAMED_PARAMETER(descriptor_tolerance)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 
