@@ -313,10 +313,7 @@ inline int run_map(int argc, char** argv)
   }
   if(opt.has("augment") && opt.has("no-augment"))
     throw Usage_error{"--augment and --no-augment do not go together"};
-  // (--refine without N: 40 iterations; with the landmarks it adds, the error no longer changes
-  // after about 40 on the TOSCA wolves and the demo meshes, and 40 keep map --refine within 10
-  // times map: benchmark.sh --refine)
-  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 40 : static_cast<int>(opt.get_int("refine", 0, 100000));
+  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
   std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
