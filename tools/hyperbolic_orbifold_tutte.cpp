@@ -74,7 +74,7 @@ const char* const usage_embed =
 const char* const usage_map =
   "  hyperbolic_orbifold_tutte map --source A --source-cones CA --target B --target-cones CB\n"
   "      --out MAP.txt [--colors-out B_colored.ply] [--prepared-target B_prepared.off]\n"
-  "      [--report REPORT.json] [--cone-orders P1,P2,...] [--order auto|tsp|given] [--augment|--no-augment] [--refine [N]] [--progress] [REPAIR]\n"
+  "      [--report REPORT.json] [--cone-orders P1,P2,...] [--order auto|tsp|given] [--augment] [--refine [N]] [--progress] [REPAIR]\n"
   "      maps every vertex of A onto B through the common orbifold (landmark i of CA to\n"
   "      landmark i of CB), both embedded in one landmark order: for sphere type (genus 0) by\n"
   "      default (auto) the tour of A or of B whose cut is the least longer than each mesh's own\n"
@@ -97,8 +97,7 @@ const char* const usage_map =
   "      --augment: first adds to both meshes' landmarks the thin tips the landmarks leave out\n"
   "      (a tail, a heel), matched by their geodesic distances to the landmarks (closed genus 0;\n"
   "      order 2 with --cone-orders); REPORT.json's \"augmentation\" lists the pairs added\n"
-  "      (source vertex, target vertex), which follow the files' landmarks in \"landmark_order\";\n"
-  "      --refine augments so on closed genus-0 meshes unless --no-augment is given\n"
+  "      (source vertex, target vertex), which follow the files' landmarks in \"landmark_order\"\n"
   "  hyperbolic_orbifold_tutte map --source-embedding A.obj --target-embedding B.obj --out MAP.txt [--report REPORT.json] [--progress]\n"
   "      the same map from two embeddings stored by embed or collection (no embedding again):\n"
   "      they must put the same landmarks at the same cones (embed B with --order set to A's\n"
