@@ -229,7 +229,7 @@ refine_section() {
     echo "(../shared/data/collections/tosca_wolf not found: the TOSCA pairs are skipped)"
   fi
   echo "== map against map --refine, whole processes (7 landmarks from 'landmarks'; onto a copy bent by test/bend.awk, radius 4 heights)"
-  printf '%-16s %9s %9s %9s %7s  %s\n' mesh vertices map_s refine_s ratio "worst error % (map, map --refine)"
+  printf '%-16s %9s %9s %9s %7s  %s\n' mesh vertices map_s refine_s ratio "worst error % (map, map --refine; map --augment --refine, pairs added)"
   for m in bear cow bull armadillo; do
     local off="$build/data/meshes/$m.off"
     [ -f "$off" ] || continue
@@ -241,11 +241,14 @@ refine_section() {
     t0=$(now); "$cli" map "${args[@]}" --out "$work/m0.txt" >/dev/null 2>&1 || continue
     t1=$(now); "$cli" map "${args[@]}" --out "$work/m1.txt" --refine >/dev/null 2>&1 || continue
     t2=$(now)
-    local e0 e1
+    "$cli" map "${args[@]}" --out "$work/m2.txt" --augment --refine > "$work/m2.out" 2>&1 || continue
+    local e0 e1 e2
     e0=$(awk -f "$root/test/off_reader.awk" -f "$root/test/map_error.awk" "$work/m0.txt" "$work/$m-bent.off" "$work/$m-bent.off" | awk '{ printf "%.2f", 100 * $6 }')
     e1=$(awk -f "$root/test/off_reader.awk" -f "$root/test/map_error.awk" "$work/m1.txt" "$work/$m-bent.off" "$work/$m-bent.off" | awk '{ printf "%.2f", 100 * $6 }')
-    printf '%-16s %9s %9s %9s %7s  %s -> %s\n' "$m" "$(sed -n 2p "$off" | awk '{print $1}')" "$(seconds "$t0" "$t1")" "$(seconds "$t1" "$t2")" \
-      "$(awk -v a="$(seconds "$t0" "$t1")" -v b="$(seconds "$t1" "$t2")" 'BEGIN { printf "%.2f", b / a }')" "$e0" "$e1"
+    e2=$(awk -f "$root/test/off_reader.awk" -f "$root/test/map_error.awk" "$work/m2.txt" "$work/$m-bent.off" "$work/$m-bent.off" | awk '{ printf "%.2f", 100 * $6 }')
+    printf '%-16s %9s %9s %9s %7s  %s -> %s; %s, %s\n' "$m" "$(sed -n 2p "$off" | awk '{print $1}')" "$(seconds "$t0" "$t1")" "$(seconds "$t1" "$t2")" \
+      "$(awk -v a="$(seconds "$t0" "$t1")" -v b="$(seconds "$t1" "$t2")" 'BEGIN { printf "%.2f", b / a }')" "$e0" "$e1" "$e2" \
+      "$(sed -n 's/^augmented: \([0-9]*\) .*/\1/p' "$work/m2.out")"
   done
   local human="$root/../shared/data/collections/shrec07_human"
   if [ -f "$human/shrec07_human.suggested_rows7.txt" ]; then

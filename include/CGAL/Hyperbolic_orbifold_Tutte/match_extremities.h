@@ -233,7 +233,7 @@ like a tip, which places it around the limb less precisely.
 different sizes or a parameter out of its range; `result.message` says why.
 
 Time: \f$O((k + m)\, n \log n)\f$ for \f$k\f$ landmarks and \f$m\f$ local maxima examined, in
-practice a few full searches per landmark (0.1 s for \f$k = 7\f$ on 5K vertices).
+practice a few full searches per landmark (0.01 to 0.03 s for 7 or 21 landmarks on 4,344 vertices).
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code match_extremities(const TriangleMesh& A,
