@@ -285,9 +285,8 @@ py::array int64_array(const std::vector<T>& v)
   return owning_array(std::move(r), {n});
 }
 
-} // namespace
-
-void register_embedding(py::module_& m)
+// register_embedding(): the Embedding class (its properties and methods)
+void register_embedding_class(py::module_& m)
 {
   py::class_<Embedding, Embedding_ptr>(m, "Embedding", R"doc(A certified hyperbolic orbifold Tutte embedding of a triangle mesh (returned by embed()).
 
@@ -367,6 +366,13 @@ Example:
          << ">";
       return os.str();
     });
+}
+
+} // namespace
+
+void register_embedding(py::module_& m)
+{
+  register_embedding_class(m);
 
   m.def("embed", &embed, py::arg("V"), py::arg("F"), py::arg("landmarks"), py::kw_only(), py::arg("orbifold") = "auto",
         py::arg("weights") = "cotan", py::arg("order") = "auto", py::arg("cone_orders") = py::none(), py::arg("recentre") = false,

@@ -141,6 +141,52 @@ void start_certificate(const Indexed_mesh<TriangleMesh>& M, const Corner_embeddi
   certificate.measured_cone_orders.assign(k, std::numeric_limits<double>::quiet_NaN());
 }
 
+// certify_corner_embedding(): the checks of a map whose faces match the mesh's (match_faces(),
+// `rotation` per face), in the order of `Corner_embedding_check`. With `mixed` orders, `tile`
+// (which S refers to) is built again for the cones' sequence read from the map, and moved by
+// `frame` when `framed`; the one failure: no tile for that sequence.
+template <class TriangleMesh>
+Status check_matched_map(Certification<TriangleMesh>& S, const Indexed_mesh<TriangleMesh>& M,
+                         const Corner_embedding& embedding, const std::vector<int>& rotation, Orbifold_type type,
+                         const std::vector<std::size_t>& cone_index, const std::vector<int>& orders, bool mixed,
+                         bool framed, const Hyperbolic_isometry_2<double>& frame,
+                         Orbifold_tile<Poincare_disk_traits_2<> >& tile, Corner_embedding_certificate& certificate)
+{
+  S.pid.resize(M.number_of_faces());
+  for(std::size_t f = 0; f < M.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c)
+      S.pid[f][c] = embedding.face_points[S.efface[f]][(c + rotation[f]) % 3];
+  S.charted = embedding.has_charts();
+  corner_certificate::check_points(S);
+  const std::vector<std::vector<std::size_t> > points_of = corner_certificate::points_of_vertices(S);
+  const Hyperbolic_isometry_2<double> to_tile = frame.inverse();
+  if(mixed) {
+    // the tile of the given orders in the sequence of the cones along its boundary, read from
+    // their points (cone_sequence()); S refers to `tile`
+    const std::vector<int> sequence = corner_certificate::cone_sequence(S, cone_index, points_of, to_tile);
+    std::vector<int> sequence_orders;
+    for(int i : sequence)
+      sequence_orders.push_back(orders[i]);
+    if(make_orbifold_tile(Orbifold_signature(type, sequence_orders), tile) != OK)
+      return Status::failure(ERROR_NOT_HYPERBOLIC, "no tile for the cone orders given"); // (built above in another sequence)
+    if(framed)
+      tile = tile.transformed(frame);
+    certificate.expected_area = tile.area();
+  }
+  certificate.measured_cone_orders = corner_certificate::measure_cone_orders(S, cone_index, points_of, to_tile);
+  corner_certificate::check_charts(S);
+  corner_certificate::compute_tolerances(S);
+  const bool order_known = corner_certificate::check_cones(S, cone_index, points_of);
+  if(type == Sphere_type)
+    certificate.checks[Border_check].run = true; // nothing to check: no boundary
+  else if(order_known)
+    corner_certificate::check_border(S, cone_index, points_of);
+  corner_certificate::check_faces(S);
+  corner_certificate::check_angle_sums_and_area(S, cone_index);
+  corner_certificate::check_seams(S);
+  return Status();
+}
+
 } // namespace corner_certificate
 } // namespace internal
 
@@ -402,38 +448,10 @@ Error_code certify_corner_embedding(const TriangleMesh& tm,
     S.orders = orders;
   std::vector<int> rotation;
   if(cc::match_faces(M, embedding, certificate, S.efface, rotation)) {
-    S.pid.resize(M.number_of_faces());
-    for(std::size_t f = 0; f < M.number_of_faces(); ++f)
-      for(int c = 0; c < 3; ++c)
-        S.pid[f][c] = embedding.face_points[S.efface[f]][(c + rotation[f]) % 3];
-    S.charted = embedding.has_charts();
-    cc::check_points(S);
-    const std::vector<std::vector<std::size_t> > points_of = cc::points_of_vertices(S);
-    const Hyperbolic_isometry_2<double> to_tile = frame.inverse();
-    if(mixed) {
-      // the tile of the given orders in the sequence of the cones along its boundary, read from
-      // their points (cone_sequence()); S refers to `tile`
-      const std::vector<int> sequence = cc::cone_sequence(S, cone_index, points_of, to_tile);
-      std::vector<int> sequence_orders;
-      for(int i : sequence)
-        sequence_orders.push_back(orders[i]);
-      if(make_orbifold_tile(Orbifold_signature(type, sequence_orders), tile) != OK)
-        return fail(Status::failure(ERROR_NOT_HYPERBOLIC, "no tile for the cone orders given")); // (built above in another sequence)
-      if(framed)
-        tile = tile.transformed(frame);
-      certificate.expected_area = tile.area();
-    }
-    certificate.measured_cone_orders = cc::measure_cone_orders(S, cone_index, points_of, to_tile);
-    cc::check_charts(S);
-    cc::compute_tolerances(S);
-    const bool order_known = cc::check_cones(S, cone_index, points_of);
-    if(type == Sphere_type)
-      certificate.checks[Border_check].run = true; // nothing to check: no boundary
-    else if(order_known)
-      cc::check_border(S, cone_index, points_of);
-    cc::check_faces(S);
-    cc::check_angle_sums_and_area(S, cone_index);
-    cc::check_seams(S);
+    const Status checked = cc::check_matched_map(S, M, embedding, rotation, type, cone_index, orders, mixed, framed, frame,
+                                                 tile, certificate);
+    if(!checked)
+      return fail(checked);
   }
   msg = certificate.summary();
   return OK;

@@ -107,6 +107,43 @@ std::vector<int> cut_vertex_of_halfedges(const HalfedgeIndex& hindex, const CutV
   return index_of;
 }
 
+// certify_hyperbolic_orbifold_embedding(), genus g >= 1: the flat problem of the polygon of
+// the cut graph recovered from the map (`mesh`, cut open, `bhd` on its border), its corner 0
+// as the embedding's (the first path of parameters::cut_graph(), when given); on failure, the
+// error code and `why`
+template <class TriangleMesh, class Mesh, class NamedParameters>
+Error_code build_genus_cut_topology(const TriangleMesh& tm, Mesh& mesh,
+                                    typename boost::graph_traits<Mesh>::halfedge_descriptor bhd,
+                                    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+                                    int genus, const std::vector<int>& orders, const NamedParameters& np, Orbifold_tile<>& tile,
+                                    Flat_problem& P,
+                                    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& base_vertex,
+                                    std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& cut_vertices,
+                                    std::string& why)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  const int k = static_cast<int>(landmarks.size());
+  std::pair<int, int> start(-1, -1);
+  const auto paths = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cut_graph),
+                                                        std::vector<std::vector<vertex_descriptor> >());
+  if(!paths.empty()) {
+    if(paths[0].size() < 2) {
+      why = "the cut graph's first path has fewer than 2 vertices";
+      return ERROR_WRONG_PARAMETER;
+    }
+    const internal::Dense_index<vertex_descriptor> vindex(vertices(tm));
+    start = std::make_pair(static_cast<int>(vindex(paths[0][0])), static_cast<int>(vindex(paths[0][1])));
+  }
+  internal::Cut_polygon poly;
+  const Status t = internal::cut_graph_tile(mesh, bhd, landmarks, genus,
+                                            orders.empty() ? std::vector<int>(k, 2) : orders, start, tile, tile.traits(), poly);
+  if(!t) {
+    why = t.message;
+    return t.code;
+  }
+  return internal::build_cut_graph_topology(mesh, bhd, landmarks, start, tile, P, base_vertex, cut_vertices, why);
+}
+
 } // namespace internal
 
 /*!
@@ -199,23 +236,10 @@ Error_code certify_hyperbolic_orbifold_embedding(
   std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> cut_vertices;
   std::string why;
   Error_code ec = OK;
-  if(genus > 0) { // genus g >= 1: the polygon of the recovered cut graph, its corner 0 as the embedding's
-    std::pair<int, int> start(-1, -1);
-    const auto paths = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cut_graph),
-                                                          std::vector<std::vector<vertex_descriptor> >());
-    if(!paths.empty()) {
-      if(paths[0].size() < 2)
-        return fail(ERROR_WRONG_PARAMETER, "the cut graph's first path has fewer than 2 vertices");
-      const internal::Dense_index<vertex_descriptor> vindex(vertices(tm));
-      start = std::make_pair(static_cast<int>(vindex(paths[0][0])), static_cast<int>(vindex(paths[0][1])));
-    }
-    internal::Cut_polygon poly;
-    const Status t = internal::cut_graph_tile(mesh, bhd, landmarks, static_cast<int>(genus),
-                                              orders.empty() ? std::vector<int>(k, 2) : orders, start, tile, tile.traits(), poly);
-    if(!t)
-      return fail(t.code, t.message);
-    ec = internal::build_cut_graph_topology(mesh, bhd, landmarks, start, tile, P, base_vertex, cut_vertices, why);
-  } else
+  if(genus > 0) // genus g >= 1: the polygon of the recovered cut graph, its corner 0 as the embedding's
+    ec = internal::build_genus_cut_topology(tm, mesh, bhd, landmarks, static_cast<int>(genus), orders, np, tile, P,
+                                            base_vertex, cut_vertices, why);
+  else
     ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_vertex, cut_vertices, why);
   if(ec != OK)
     return fail(ec, why);

@@ -107,6 +107,46 @@ bool user_edge_weights(Flat_problem& P, const TriangleMesh& tm, const std::vecto
   return true;
 }
 
+// fixed_boundary_hyperbolic_Tutte_embedding(), both counterclockwise, corner 0 first: the
+// corner vertices' order (`landmarks`) reversed if they go clockwise around the mesh (with the
+// polygon's `corners`), the polygon mirrored if it then goes clockwise; whether it is mirrored
+template <class VertexDescriptor>
+bool make_counterclockwise(std::vector<VertexDescriptor>& landmarks, std::vector<std::complex<double> >& corners,
+                           bool ccw_polygon, bool ccw_corners)
+{
+  if(!ccw_corners) {
+    std::reverse(landmarks.begin() + 1, landmarks.end());
+    std::reverse(corners.begin() + 1, corners.end());
+  }
+  const bool mirrored = ccw_polygon != ccw_corners;
+  if(mirrored)
+    for(std::complex<double>& z : corners)
+      z = std::conj(z);
+  return mirrored;
+}
+
+// fixed_boundary_hyperbolic_Tutte_embedding(): the edge weights, the user's
+// (parameters::edge_weight_map(); false, `msg` saying which, when one is not usable) or
+// computed from the `points` (parameters::weight_type(), parameters::weight_epsilon())
+template <class TriangleMesh, class VertexDescriptor, class Point3, class NamedParameters>
+bool fixed_boundary_edge_weights(Flat_problem& P, const TriangleMesh& tm, const std::vector<VertexDescriptor>& base_vertex,
+                                 const std::vector<Point3>& points, const NamedParameters& np, std::string& msg)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
+    (void)points;
+    return internal::user_edge_weights(P, tm, base_vertex, get_parameter(np, internal_np::edge_weight_map), msg);
+  } else {
+    (void)tm;
+    (void)base_vertex;
+    (void)msg;
+    internal::compute_edge_weights(P, points, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
+                                   choose_parameter(get_parameter(np, internal_np::weight_epsilon), 1e-6));
+    return true;
+  }
+}
+
 // the start of the fixed-boundary solve: the orbifold's Tutte initialisation (boundary
 // vertices on their sides), then the boundary fixed at its place: the fraction of the side's
 // hyperbolic length that is the vertex's fraction of its side's 3D arc length
@@ -279,14 +319,7 @@ Error_code fixed_boundary_hyperbolic_Tutte_embedding(
   // 2. both counterclockwise, corner 0 first: the corner vertices' order reversed if they go
   // clockwise around the mesh (with the polygon's), the polygon mirrored if it then goes clockwise
   std::vector<vertex_descriptor> landmarks = corner_vertices;
-  if(!ccw_corners) {
-    std::reverse(landmarks.begin() + 1, landmarks.end());
-    std::reverse(corners.begin() + 1, corners.end());
-  }
-  const bool mirrored = ccw_polygon != ccw_corners;
-  if(mirrored)
-    for(C& z : corners)
-      z = std::conj(z);
+  const bool mirrored = internal::make_counterclockwise(landmarks, corners, ccw_polygon, ccw_corners);
   st.landmark_order_reversed = !ccw_corners;
   st.orientation_reversed = mirrored;
   const Domain domain(corners);
@@ -308,13 +341,8 @@ Error_code fixed_boundary_hyperbolic_Tutte_embedding(
   std::vector<typename boost::property_traits<VPM>::value_type> points;
   for(vertex_descriptor v : base_vertex)
     points.push_back(get(vpm, v));
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
-    if(!internal::user_edge_weights(P, tm, base_vertex, get_parameter(np, internal_np::edge_weight_map), msg))
-      return fail(ERROR_WRONG_PARAMETER, msg);
-  } else {
-    internal::compute_edge_weights(P, points, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
-                                   choose_parameter(get_parameter(np, internal_np::weight_epsilon), 1e-6));
-  }
+  if(!internal::fixed_boundary_edge_weights(P, tm, base_vertex, points, np, msg))
+    return fail(ERROR_WRONG_PARAMETER, msg);
   st.time_setup = seconds_since(t0);
 
   // 4. the start: the orbifold's Tutte initialisation (boundary vertices on their sides), then

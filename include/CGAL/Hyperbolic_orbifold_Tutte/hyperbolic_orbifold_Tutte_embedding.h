@@ -50,6 +50,36 @@ void set_solver_parameters(Parameterizer& parameterizer, const NamedParameters& 
   parameterizer.set_recentring(choose_parameter(get_parameter(np, internal_np::recentring), false));
 }
 
+// hyperbolic_orbifold_Tutte_embedding(): the cones' given `orders` in the order of the cut
+// (`landmark_order`); a failure when there is not one per landmark (here their number; the
+// orders themselves: the parameterizer's tile)
+inline Status cone_orders_in_cut_order(const std::vector<int>& orders, std::size_t number_of_landmarks,
+                                       const std::vector<std::size_t>& landmark_order, std::vector<int>& ordered_orders)
+{
+  Cone_order_check check;
+  if(check_cone_orders(orders, number_of_landmarks, &check) != OK && check.problem == Wrong_number_of_cone_orders)
+    return Status::failure(ERROR_WRONG_PARAMETER, check.message);
+  for(std::size_t i : landmark_order)
+    ordered_orders.push_back(orders[i]);
+  return Status();
+}
+
+// hyperbolic_orbifold_Tutte_embedding(), genus g >= 1: the cut graph's paths, in vertex indices,
+// into Embedding_statistics::cut_graph
+template <class TriangleMesh>
+void record_cut_graph(const TriangleMesh& tm,
+                      const std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& cut_paths,
+                      Embedding_statistics& st)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  const internal::Dense_index<vertex_descriptor> vindex(vertices(tm));
+  for(const auto& path : cut_paths) {
+    st.cut_graph.emplace_back();
+    for(vertex_descriptor v : path)
+      st.cut_graph.back().push_back(vindex(v));
+  }
+}
+
 } // namespace internal
 
 /*!
@@ -187,14 +217,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
                                             : choose_parameter(get_parameter(np, internal_np::landmark_order), Given_order),
                                   ordered, st.landmark_order);
   std::vector<int> ordered_orders; // (in the order of the cut)
-  if(r && !orders.empty()) {
-    Cone_order_check check; // (here their number; the orders themselves: the parameterizer's tile)
-    if(check_cone_orders(orders, landmarks.size(), &check) != OK && check.problem == Wrong_number_of_cone_orders)
-      r = Status::failure(ERROR_WRONG_PARAMETER, check.message);
-    else
-      for(std::size_t i : st.landmark_order)
-        ordered_orders.push_back(orders[i]);
-  }
+  if(r && !orders.empty())
+    r = internal::cone_orders_in_cut_order(orders, landmarks.size(), st.landmark_order, ordered_orders);
   if(r) {
     tell("input", 1.0);
     tell("cut", 0.0);
@@ -240,14 +264,8 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
     ec = parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), &st);
   st.landmark_order = order_used;
   st.time_setup += time_cut;
-  if(genus > 0) {
-    const internal::Dense_index<vertex_descriptor> vindex(vertices(tm));
-    for(const auto& path : cut_paths) {
-      st.cut_graph.emplace_back();
-      for(vertex_descriptor v : path)
-        st.cut_graph.back().push_back(vindex(v));
-    }
-  }
+  if(genus > 0)
+    internal::record_cut_graph(tm, cut_paths, st);
   if(ec != OK)
     return ec;
 

@@ -263,6 +263,37 @@ inline void tally_unreliable_vertices(const std::vector<char>& flagged, const st
   }
 }
 
+// map_reliability(): the corner of B's face holding `loc` nearest to it (largest barycentric
+// coordinate), as a vertex index of B
+template <class Locator>
+std::size_t landing_vertex(const Locator& locB, const typename Locator::Location& loc)
+{
+  int j = 0;
+  for(int k = 1; k < 3; ++k)
+    if(loc.barycentric[k] > loc.barycentric[j])
+      j = k;
+  return locB.corner_vertex_index(loc.face_index, j);
+}
+
+// map_reliability(): how far on B the image of a vertex of A (its location `loc`) moves under
+// the isometry `to_target` after `to_origin`: 0 when it was not located, infinity when the
+// moved image is not on the embedding
+template <class Locator, class VertexPointMapB>
+double moved_image_distance(const Locator& locB, const VertexPointMapB& vpmB, const typename Locator::Location& loc,
+                            const Hyperbolic_isometry_2<double>& to_origin, const Hyperbolic_isometry_2<double>& to_target)
+{
+  typedef typename Locator::Point_2 Point_2;
+  typedef std::complex<double> C;
+  if(!loc.success)
+    return 0.0;
+  const Point_2 z = locB.disk_point(loc);
+  const C w = to_target.apply(to_origin.apply(C(CGAL::to_double(z.x()), CGAL::to_double(z.y()))));
+  const typename Locator::Location moved = locB.locate(Point_2(w.real(), w.imag()));
+  if(!moved.success)
+    return std::numeric_limits<double>::infinity();
+  return std::sqrt(CGAL::to_double(CGAL::squared_distance(surface_point(loc, locB, vpmB), surface_point(moved, locB, vpmB))));
+}
+
 } // namespace internal
 
 /*!
@@ -417,13 +448,7 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
   std::vector<std::size_t> basin_a(n, internal::Embedding_scale<TriangleMeshA>::npos),
                            basin_b(b.verts.size(), internal::Embedding_scale<TriangleMeshB>::npos);
   // the corner of B's face holding a location nearest to it (largest barycentric coordinate)
-  auto landing = [&](const typename Locator::Location& loc) {
-    int j = 0;
-    for(int k = 1; k < 3; ++k)
-      if(loc.barycentric[k] > loc.barycentric[j])
-        j = k;
-    return locB.corner_vertex_index(loc.face_index, j);
-  };
+  auto landing = [&](const typename Locator::Location& loc) { return internal::landing_vertex(locB, loc); };
   std::vector<std::size_t> stack, seen;
   for(std::size_t r = 0; r < a.collapse.size(); ++r) {
     Squeezed_region region;
@@ -457,14 +482,7 @@ Map_reliability map_reliability(const TriangleMeshA& A, HalfedgeUVMapA uvA, cons
       const C from(CGAL::to_double(image.x()), CGAL::to_double(image.y()));
       const Isometry to_origin = Isometry::translation_to_origin(from), to_target = Isometry::translation_from_origin(target);
       auto uncertainty = [&](std::size_t i) {
-        if(!locations[i].success)
-          return 0.0;
-        const Point_2 z = locB.disk_point(locations[i]);
-        const C w = to_target.apply(to_origin.apply(C(CGAL::to_double(z.x()), CGAL::to_double(z.y()))));
-        const typename Locator::Location moved = locB.locate(Point_2(w.real(), w.imag()));
-        if(!moved.success)
-          return std::numeric_limits<double>::infinity();
-        return std::sqrt(CGAL::to_double(CGAL::squared_distance(surface_point(locations[i], locB, vpmB), surface_point(moved, locB, vpmB))));
+        return internal::moved_image_distance(locB, vpmB, locations[i], to_origin, to_target);
       };
       stack.clear();
       seen.clear();
