@@ -106,27 +106,39 @@ static void draw_errors(std::ostream& os, const SM& A, const std::vector<double>
   }
 }
 
-// embeds A in its landmarks' tour (`sa`; `ordered`: A's landmarks in cone order) and B in the same order
-static bool embed_pair(SM& A, const std::vector<SM_vertex>& lma, UV uvA, SM& B, const std::vector<SM_vertex>& lmb, UV uvB,
-                       HOT::Embedding_statistics& sa, std::vector<SM_vertex>& ordered)
+// A and B embedded in one landmark order (A's tour): the corners in property maps named `name`,
+// A's statistics, A's landmarks in cone order
+struct Embedded_pair
 {
+  UV uvA, uvB;
+  HOT::Embedding_statistics sa;
+  std::vector<SM_vertex> ordered;
+};
+
+static bool embed_pair(SM& A, const std::vector<SM_vertex>& lma, SM& B, const std::vector<SM_vertex>& lmb, const std::string& name,
+                       Embedded_pair& e)
+{
+  e.uvA = A.add_property_map<SM_halfedge, Point_2>(name, Point_2(0, 0)).first;
+  e.uvB = B.add_property_map<SM_halfedge, Point_2>(name, Point_2(0, 0)).first;
   HOT::Embedding_statistics sb;
-  if(HOT::hyperbolic_orbifold_Tutte_embedding(A, lma, uvA, HOT::parameters::embedding_statistics(&sa, HOT::parameters::landmark_order(HOT::Tsp_order))) != HOT::OK) {
-    std::printf("A refused: %s\n", sa.message.c_str());
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(A, lma, e.uvA, HOT::parameters::embedding_statistics(&e.sa, HOT::parameters::landmark_order(HOT::Tsp_order))) != HOT::OK) {
+    std::printf("A refused: %s\n", e.sa.message.c_str());
     return false;
   }
   std::vector<SM_vertex> lmb_o;
-  ordered.clear();
-  for(std::size_t i : sa.landmark_order) {
-    ordered.push_back(lma[i]);
+  e.ordered.clear();
+  for(std::size_t i : e.sa.landmark_order) {
+    e.ordered.push_back(lma[i]);
     lmb_o.push_back(lmb[i]);
   }
-  if(HOT::hyperbolic_orbifold_Tutte_embedding(B, lmb_o, uvB, HOT::parameters::embedding_statistics(&sb)) != HOT::OK) {
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(B, lmb_o, e.uvB, HOT::parameters::embedding_statistics(&sb)) != HOT::OK) {
     std::printf("B refused: %s\n", sb.message.c_str());
     return false;
   }
   return true;
 }
+
+static HOT::Orbifold_type orbifold_type_of(const SM& B) { return CGAL::is_closed(B) ? HOT::Sphere_type : HOT::Disk_type; }
 
 int main(int argc, char** argv)
 {
@@ -169,16 +181,12 @@ int main(int argc, char** argv)
   const std::size_t user_landmarks = lma.size();
   Figures plain; // (--augment --svg: the harmonic map with the user's landmarks only, drawn on the left)
   if(augment && !svg.empty()) {
-    UV uv0A = A.add_property_map<SM_halfedge, Point_2>("h:uv0", Point_2(0, 0)).first;
-    UV uv0B = B.add_property_map<SM_halfedge, Point_2>("h:uv0", Point_2(0, 0)).first;
-    HOT::Embedding_statistics s0;
-    std::vector<SM_vertex> ordered;
-    if(!embed_pair(A, lma, uv0A, B, lmb, uv0B, s0, ordered))
+    Embedded_pair e0;
+    if(!embed_pair(A, lma, B, lmb, "h:uv0", e0))
       return 1;
-    plain = measure(A, uv0A, B, Locator(B, uv0B, CGAL::is_closed(B) ? HOT::Sphere_type : HOT::Disk_type, static_cast<int>(lma.size()),
-                                        HOT::Hyperboloid_linear));
-    A.remove_property_map(uv0A);
-    B.remove_property_map(uv0B);
+    plain = measure(A, e0.uvA, B, Locator(B, e0.uvB, orbifold_type_of(B), static_cast<int>(lma.size()), HOT::Hyperboloid_linear));
+    A.remove_property_map(e0.uvA);
+    B.remove_property_map(e0.uvB);
   }
   const auto t0 = Clock::now();
   if(augment) {
@@ -198,13 +206,13 @@ int main(int argc, char** argv)
       lmb.push_back(xm.pairs[i].second);
     }
   }
-  UV uvA = A.add_property_map<SM_halfedge, Point_2>("h:uv", Point_2(0, 0)).first;
-  UV uvB = B.add_property_map<SM_halfedge, Point_2>("h:uv", Point_2(0, 0)).first;
-  HOT::Embedding_statistics sa;
-  std::vector<SM_vertex> lma_o;
-  if(!embed_pair(A, lma, uvA, B, lmb, uvB, sa, lma_o))
+  Embedded_pair e;
+  if(!embed_pair(A, lma, B, lmb, "h:uv", e))
     return 1;
-  const HOT::Orbifold_type type = CGAL::is_closed(B) ? HOT::Sphere_type : HOT::Disk_type;
+  UV uvA = e.uvA, uvB = e.uvB;
+  const HOT::Embedding_statistics& sa = e.sa;
+  const std::vector<SM_vertex>& lma_o = e.ordered;
+  const HOT::Orbifold_type type = orbifold_type_of(B);
   const Locator L(B, uvB, type, static_cast<int>(lma.size()), HOT::Hyperboloid_linear);
   const Figures before = measure(A, uvA, B, L);
   const double t_map = seconds_since(t0);
