@@ -77,18 +77,17 @@ int main(int argc, char** argv)
     B.point(v) = K::Point_3(p.x() + 0.35 * h * t * t, p.y(), p.z());
   }
   std::vector<vertex_descriptor> landmarks = HOT::select_landmarks(A, 9);
-  // one cone order for both meshes: the tour on A
-  UV_map uvA = A.add_property_map<halfedge_descriptor, K::Point_2>("h:uv").first;
-  UV_map uvB = B.add_property_map<halfedge_descriptor, K::Point_2>("h:uv").first;
+  // one cone order for both meshes: the tour on A. The results (Orbifold_embedding) hold the
+  // corner coordinates with what is needed to read them (the orbifold, the landmark order, ...)
+  HOT::Orbifold_embedding<Mesh, UV_map> embA(A, A.add_property_map<halfedge_descriptor, K::Point_2>("h:uv").first);
+  HOT::Orbifold_embedding<Mesh, UV_map> embB(B, B.add_property_map<halfedge_descriptor, K::Point_2>("h:uv").first);
   HOT::Embedding_statistics sa, sb;
-  if(HOT::hyperbolic_orbifold_Tutte_embedding(A, landmarks, uvA,
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(A, landmarks, embA,
        HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&sa))) != HOT::OK) {
     std::cerr << sa.message << std::endl;
     return EXIT_FAILURE;
   }
-  std::vector<vertex_descriptor> ordered;
-  for(std::size_t i : sa.landmark_order) ordered.push_back(landmarks[i]);
-  if(HOT::hyperbolic_orbifold_Tutte_embedding(B, ordered, uvB, HOT::parameters::embedding_statistics(&sb)) != HOT::OK) {
+  if(HOT::hyperbolic_orbifold_Tutte_embedding(B, embA.ordered_landmarks(), embB, HOT::parameters::embedding_statistics(&sb)) != HOT::OK) {
     std::cerr << sb.message << std::endl;
     return EXIT_FAILURE;
   }
@@ -100,8 +99,8 @@ int main(int argc, char** argv)
     put(colourA, v, K::Vector_3(0.2 + 0.8 * s, 0.3 + 0.5 * t, 1.0 - 0.8 * s));
   }
   // B's vertices located on A's embedding; A's colours interpolated there
-  const HOT::Embedding_locator<Mesh, UV_map> locA(A, uvA, HOT::Sphere_type, int(landmarks.size()));
-  const auto f = HOT::map_vertices(B, uvB, locA);
+  const HOT::Embedding_locator<Mesh, UV_map> locA(embA);
+  const auto f = HOT::map_vertices(embB, locA);
   auto colourB = B.add_property_map<vertex_descriptor, K::Vector_3>("v:colour").first;
   const std::size_t written = HOT::transfer_vertex_property(B, f, locA, colourA, colourB);
   // the map's accuracy: B is A bent, so a vertex should land near itself. Two bounds known

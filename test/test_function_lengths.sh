@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Issue 40: no function of the library, the application, the tools or the Python module over
-# 120 lines (scripts/function_lengths.py). Controls first: a planted function of 121 lines must
-# be found and one of 120 must not, else the scan itself is broken.
+# 120 lines (scripts/function_lengths.py), and no header of theirs over 600 lines. Controls
+# first: a planted function of 121 lines must be found and one of 120 must not, else the scan
+# itself is broken.
 set -u
 root="$1"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
@@ -18,4 +19,10 @@ python3 "$scan" "$tmp/long.h" > "$tmp/out" && fail "a function of 121 lines was 
 grep -q "planted 121" "$tmp/out" || fail "the planted function's length: $(cat "$tmp/out")"
 python3 "$scan" "$tmp/short.h" > "$tmp/out" || fail "a function of 120 lines was reported: $(cat "$tmp/out")"
 python3 "$scan" || fail "functions over 120 lines (above)"
+# headers: at most 600 lines (a planted one of 601 lines first)
+long_headers() { find "$@" -name '*.h' -exec awk 'END { if(NR > 600) print FILENAME ": " NR " lines" }' {} \; ; }
+seq 601 > "$tmp/long_header.h"
+[ -n "$(long_headers "$tmp")" ] || fail "a header of 601 lines was not found"
+over="$(long_headers "$root/include" "$root/application" "$root/tools" "$root/python/src")"
+[ -z "$over" ] || fail "headers over 600 lines: $over"
 echo ok

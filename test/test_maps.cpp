@@ -17,6 +17,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/disk_models.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
@@ -1770,6 +1771,115 @@ TEST_CASE(heavy_charts_capsule_300)
   double s = 0;
   check_tipped_capsule(300, s);
   CHECK_MSG(s > 0 && s < 1e-60, "smallest hyperbolic edge " << s);
+}
+
+// The result type (Orbifold_embedding): one object holds the coordinates and their layout, and
+// the locator, the maps and the certificate read it; it gives what the parts gave. On the
+// tipped capsule (written partly in charts) and its bent copy: the same corner coordinates as
+// the overload with maps, a layout equal to the statistics', the map onto the bent copy within
+// the 1% of the diagonal of the truth (same triangulation), the landmarks onto the
+// landmarks, a certificate that is bijective, and not bijective once the layout forgets the
+// charts; the refusals.
+TEST_CASE(result_type_reads_the_charted_capsule)
+{
+  typedef HOT::Orbifold_embedding<Mesh, UV_map, Chart_map> Result;
+  Capsule_pair p;
+  if(!make_capsule_pair(80, 40, true, p))
+    return;
+  auto result_of = [](Mesh& m, const std::vector<vertex_descriptor>& lm, const std::string& tag, HOT::Embedding_statistics& st) {
+    Result r(m, m.add_property_map<halfedge_descriptor, Point_2>("h:ruv_" + tag, Point_2(2, 2)).first,
+             m.add_property_map<halfedge_descriptor, HOT::Chart_point<Point_2> >("h:rchart_" + tag).first);
+    CHECK(!r.is_valid());
+    const HOT::Error_code ec = HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, r, HOT::parameters::embedding_statistics(&st));
+    CHECK_MSG(ec == HOT::OK && r.is_valid(), tag << ": " << st.message);
+    return r;
+  };
+  HOT::Embedding_statistics sa, sb;
+  const Result ra = result_of(p.capsule, p.landmarks, "a", sa), rb = result_of(p.bent, p.landmarks, "b", sb);
+  if(!ra.is_valid() || !rb.is_valid())
+    return;
+  // the same numbers as the overload with maps, and the layout is the statistics'
+  const Charted ea = embed_with_charts(p.capsule, p.landmarks, "parts");
+  bool same = ea.ec == HOT::OK;
+  for(halfedge_descriptor h : halfedges(p.capsule))
+    if(!is_border(h, p.capsule))
+      same = same && ra.point(h) == get(ea.uv, h) && get(ra.chart_map(), h).chart == get(ea.charts, h).chart &&
+             get(ra.chart_map(), h).point == get(ea.charts, h).point;
+  CHECK(same);
+  const HOT::Embedding_layout& la = ra.layout();
+  CHECK(la.type == HOT::Sphere_type && la.genus == 0 && ra.has_charts() && la.charts.size() == sa.charts.size() &&
+        la.chart_corners == sa.chart_corners && la.landmark_order == sa.landmark_order && la.cone_orders == sa.cone_orders &&
+        la.cone_orders == std::vector<int>(p.landmarks.size(), 2) && la.charted_faces == sa.charted_faces);
+  CHECK(ra.landmarks() == p.landmarks && ra.ordered_landmarks().size() == p.landmarks.size());
+  // the map onto the bent copy, from the result alone: vertex i is the truth
+  const Locator lb(rb);
+  CHECK_MSG(lb.is_valid() && lb.number_of_inverted_faces() == 0 && !lb.charts().empty(), lb.message());
+  const std::vector<Location> f = HOT::map_vertices(ra, lb);
+  const double db = bbox_diagonal(p.bent);
+  double err = 0;
+  std::size_t failed = 0;
+  for(vertex_descriptor v : vertices(p.capsule)) {
+    if(!f[v.idx()].success) { ++failed; continue; }
+    err = std::max(err, dist3(HOT::surface_point(f[v.idx()], lb, get(CGAL::vertex_point, p.bent)), p.bent.point(v)) / db);
+  }
+  CHECK_MSG(failed == 0 && err < 0.01, failed << " not located, worst error " << 100 * err << "% of the diagonal");
+  for(vertex_descriptor v : ra.ordered_landmarks()) // (a landmark onto its twin: within rounding)
+    CHECK(dist3(HOT::surface_point(f[v.idx()], lb, get(CGAL::vertex_point, p.bent)), p.bent.point(v)) < 1e-9 * db);
+  // the certificate from the result, and without the charts the tile coordinates alone fail
+  HOT::Embedding_certificate cert;
+  std::string why;
+  CHECK_MSG(HOT::certify_hyperbolic_orbifold_embedding(ra, cert, &why) == HOT::OK && cert.is_bijective(), why << " " << cert);
+  Result forgetful = ra;
+  forgetful.layout().charts.clear();
+  const HOT::Error_code fec = HOT::certify_hyperbolic_orbifold_embedding(forgetful, cert, &why);
+  CHECK(fec != HOT::OK || !cert.is_bijective());
+  // refusals: an object of another mesh, an empty object, too few landmarks (the object stays empty)
+  HOT::Embedding_statistics st;
+  Result of_bent(p.bent, rb.uv_map(), rb.chart_map());
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(p.capsule, p.landmarks, of_bent, HOT::parameters::embedding_statistics(&st)) ==
+        HOT::ERROR_WRONG_PARAMETER);
+  CHECK_MSG(st.message.find("another mesh") != std::string::npos, st.message);
+  Result empty;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(p.capsule, p.landmarks, empty, HOT::parameters::embedding_statistics(&st)) ==
+        HOT::ERROR_WRONG_PARAMETER);
+  CHECK(!Locator(empty).is_valid() && HOT::certify_hyperbolic_orbifold_embedding(empty, cert, &why) == HOT::ERROR_WRONG_PARAMETER);
+  Result few(p.capsule, ra.uv_map(), ra.chart_map());
+  const std::vector<vertex_descriptor> three(p.landmarks.begin(), p.landmarks.begin() + 3);
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(p.capsule, three, few) == HOT::ERROR_TOO_FEW_LANDMARKS && !few.is_valid());
+}
+
+// The result type on a closed mesh of genus 1 (elk, one cone): its locator is in the tile of the
+// cut graph's polygon, which the layout holds; mapped onto itself through it every vertex lands
+// on itself (the identity), and the certificate from the result (its cut graph) is bijective.
+TEST_CASE(result_type_genus_one_maps_onto_itself)
+{
+  typedef HOT::Orbifold_embedding<Mesh, UV_map> Result;
+  Mesh m;
+  CHECK(read_demo_mesh("elk", m));
+  if(num_vertices(m) == 0)
+    return;
+  Result r(m, m.add_property_map<halfedge_descriptor, Point_2>("h:ruv", Point_2(2, 2)).first);
+  HOT::Embedding_statistics st;
+  CHECK_MSG(HOT::hyperbolic_orbifold_Tutte_embedding(m, farthest_point_landmarks(m, 1), r, HOT::parameters::embedding_statistics(&st)) ==
+              HOT::OK, st.message);
+  if(!r.is_valid())
+    return;
+  CHECK(r.layout().genus == 1 && !r.layout().cut_corner_nodes.empty() && !r.cut_graph().empty() &&
+        r.signature().genus() == 1 && r.signature().number_of_cones() == 1);
+  const Locator loc(r);
+  CHECK_MSG(loc.is_valid() && loc.number_of_inverted_faces() == 0, loc.message());
+  const std::vector<Location> f = HOT::map_vertices(r, loc);
+  const double d = bbox_diagonal(m);
+  double worst = 0;
+  std::size_t failed = 0;
+  for(vertex_descriptor v : vertices(m)) {
+    if(!f[v.idx()].success) { ++failed; continue; }
+    worst = std::max(worst, dist3(HOT::surface_point(f[v.idx()], loc, get(CGAL::vertex_point, m)), m.point(v)) / d);
+  }
+  CHECK_MSG(failed == 0 && worst < 1e-9, failed << " not located, identity off by " << worst);
+  HOT::Embedding_certificate cert;
+  std::string why;
+  CHECK_MSG(HOT::certify_hyperbolic_orbifold_embedding(r, cert, &why) == HOT::OK && cert.is_bijective(), why << " " << cert);
 }
 
 // An octopus-like shape (test/octopus.awk: eight tentacles of lengths 12.5 to 25 and radius

@@ -92,9 +92,9 @@ inline double embed_collection_mesh(const Collection_job& job, const Collection_
   make_folder(job.dir);
   make_folder(job.parts());
   Output_files files;
-  const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
+  const Embedding_result result = embedding_result(m, uv, charts, st, ordered);
   files.write(job.refine > 0 ? job.embedded_path(i) : job.obj_path(i),
-              [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, addressed, &ch, &cones); });
+              [&](std::ostream& os) { hot_tools::write_embedding_obj(os, result, addressed, &cones); });
   files.write(job.mesh_part(i), [&](std::ostream& os) {
     os << "reversed " << (st.landmark_order_reversed ? 1 : 0) << "\n"
        << "order_from " << (co.from < job.size() ? "mesh " + std::to_string(co.from) : std::string("given")) << "\n"
@@ -213,7 +213,7 @@ inline HOT::Map_refinement_statistics read_refine_part(const Collection_job& job
 // the map f_ab of a collection from the stored embeddings; a point not located fails
 inline std::vector<Locator::Location> map_stored(const Stored_embedding& A, const Locator& lb, std::size_t a, std::size_t b)
 {
-  std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.chart_isometries, lb);
+  std::vector<Locator::Location> f = HOT::map_vertices(A.result(), lb);
   for(std::size_t v = 0; v < f.size(); ++v)
     if(!f[v].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(v) + " of mesh " + std::to_string(a) +

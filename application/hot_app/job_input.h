@@ -15,6 +15,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
 
 #include <optional>
 #include <string>
@@ -30,6 +32,32 @@ typedef boost::graph_traits<Surface_mesh>::face_descriptor SM_face;
 
 typedef Surface_mesh::Property_map<SM_halfedge, Kernel::Point_2> UV_map;
 typedef Surface_mesh::Property_map<SM_halfedge, HOT::Chart_point<Kernel::Point_2> > Chart_map;
+// an embedding with everything needed to read it (the library's result type), and its locator
+typedef HOT::Orbifold_embedding<Surface_mesh, UV_map, Chart_map> Embedding_result;
+typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
+
+// the result object of an embedding of `m` computed into `uv` and `charts`, read with `layout`
+// (the layout part of its statistics, or the one a file gives), of the landmarks as given to it
+// (`layout.landmark_order` orders them)
+inline Embedding_result embedding_result(const Surface_mesh& m, UV_map uv, Chart_map charts, const HOT::Embedding_layout& layout,
+                                         const std::vector<SM_vertex>& landmarks)
+{
+  Embedding_result r(m, uv, charts);
+  r.layout() = layout;
+  r.set_landmarks(landmarks);
+  r.set_valid();
+  return r;
+}
+
+// the locator of a map's target (or, for the colours, of its source): in its tile (of its cut
+// graph for genus g >= 1, of its signature otherwise), with its charts, the model the maps use
+inline Locator target_locator(const Embedding_result& r)
+{
+  Locator loc(r, HOT::Hyperboloid_linear);
+  if(!loc.is_valid() && r.layout().genus > 0)
+    throw Failure{HOT::ERROR_WRONG_PARAMETER, "the target's tile could not be built from its cut graph"};
+  return loc;
+}
 
 // a mesh file read for a job (as is, or prepared with --repair), its addressing by the file's
 // vertices, and the landmarks moved by --snap-landmarks

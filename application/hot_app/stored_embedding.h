@@ -46,6 +46,17 @@ struct Stored_embedding
   static constexpr std::size_t npos = std::size_t(-1);
 
   std::size_t number_of_cones() const { return cones.landmark.size(); }
+  // the embedding as the library's result type (genus 0: the file has no cut graph); its
+  // landmarks are not known here (a map needs none)
+  Embedding_result result() const
+  {
+    HOT::Embedding_layout layout;
+    layout.type = cones.type;
+    layout.cone_orders = cones.order;
+    layout.charts = chart_isometries;
+    layout.chart_corners = chart_corners;
+    return embedding_result(mesh, uv, charts, layout, std::vector<SM_vertex>());
+  }
   // the signature of the orbifold (cone orders in the order of the cut)
   HOT::Orbifold_signature signature() const { return HOT::Orbifold_signature(cones.type, cones.order); }
   bool all_orders_two() const
@@ -56,7 +67,6 @@ struct Stored_embedding
   }
 };
 
-typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
 
 // Reads the embedding `path`; a file without the orbifold line (not written by `embed` or
 // `collection` of this version), or faces that do not make a closed or disk mesh fail; so does
@@ -131,13 +141,10 @@ inline void read_stored_embedding(const std::string& path, Stored_embedding& e, 
   e.chart_corners = ce.chart_corners;
 }
 
-// the locator of a stored embedding (as a collection builds it: the regular signature when
-// every cone has order 2, else the signature of the orders)
+// the locator of a stored embedding (as a collection builds it: in the tile of its signature, with its charts)
 inline Locator stored_locator(const Stored_embedding& e)
 {
-  if(e.all_orders_two())
-    return Locator(e.mesh, e.uv, e.charts, e.chart_isometries, e.cones.type, static_cast<int>(e.number_of_cones()), HOT::Hyperboloid_linear);
-  return Locator(e.mesh, e.uv, e.charts, e.chart_isometries, e.signature(), HOT::Hyperboloid_linear);
+  return Locator(e.result(), HOT::Hyperboloid_linear);
 }
 
 // a map from `a` onto `b` joins cone c of `a` to cone c of `b`: the same orbifold, the same

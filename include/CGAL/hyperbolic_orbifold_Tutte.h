@@ -19,7 +19,9 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_layout.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_statistics.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>

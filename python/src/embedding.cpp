@@ -14,10 +14,10 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_tour.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/match_extremities.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/surface_maps.h>
 
+#include "hot_app/augment.h"
 #include "hot_app/embed_job.h"
 #include "hot_app/job_support.h"
 #include "hot_app/map_order.h"
@@ -255,11 +255,11 @@ void write_obj(const Embedding& e, py::handle path)
   const py::bytes b = py::module_::import("os").attr("fsencode")(path);
   const std::string p(b);
   py::gil_scoped_release release;
-  const hot_tools::Embedding_charts<Chart_map> ch{e.charts, e.stats.charts, e.stats.chart_corners};
+  const hot_cli::Embedding_result result = result_of(e);
   try {
     // as the CLI's `embed` writes OUT.obj (write_embed_outputs(), without --repair)
     const hot_tools::Embedding_cones cones = hot_cli::embedding_cones(e.type, e.stats, e.landmark_ids);
-    hot_cli::write_file_atomically(p, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, e.mesh, e.uv, nullptr, &ch, &cones); });
+    hot_cli::write_file_atomically(p, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, result, nullptr, &cones); });
   } catch(const std::runtime_error& x) {
     fail(HOT::ERROR_WRITE_FAILED, x.what());
   }
@@ -430,19 +430,16 @@ Example:
 
 namespace {
 
-typedef HOT::Embedding_locator<Surface_mesh, UV_map> Locator;
+typedef hot_cli::Locator Locator;
 
-// the locator of a map's target, as the command line's target_locator(): in the tile of its
-// cut graph (genus g >= 1), or of its signature (with its charts around cone images)
+// the locator of a map's target, the command line's target_locator()
 Locator target_locator(const Embedding& B)
 {
-  if(B.stats.genus > 0) {
-    Locator::Tile tile;
-    if(HOT::make_embedding_tile(B.type, B.stats, tile) != HOT::OK)
-      fail(HOT::ERROR_WRONG_PARAMETER, "the target's tile could not be built from its cut graph");
-    return Locator(B.mesh, B.uv, tile, HOT::Hyperboloid_linear);
+  try {
+    return hot_cli::target_locator(result_of(B));
+  } catch(const hot_cli::Failure& f) {
+    fail(f.code, f.message);
   }
-  return Locator(B.mesh, B.uv, B.charts, B.stats.charts, HOT::Orbifold_signature(B.type, B.stats.cone_orders), HOT::Hyperboloid_linear);
 }
 
 std::string list_string(const std::vector<std::size_t>& v)
@@ -539,7 +536,7 @@ void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int
       *refinement = st;
     f = HOT::map_vertices(A.mesh, uv, locB);
   } else
-    f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
+    f = HOT::map_vertices(result_of(A), locB);
   faces.resize(f.size());
   bary.resize(3 * f.size());
   for(std::size_t i = 0; i < f.size(); ++i) {
@@ -610,23 +607,19 @@ struct Mesh_map
 void augment_landmarks(Embedding& a0, Embedding& b0, std::vector<std::size_t>& ida, std::vector<std::size_t>& idb, Embed_options& opt,
                        std::vector<std::int64_t>& added)
 {
-  if(a0.type != HOT::Sphere_type || a0.genus != 0)
-    fail(HOT::ERROR_WRONG_PARAMETER, "augment adds landmarks inside closed meshes of genus 0 (sphere type); these meshes are not");
   if(opt.order == "explicit")
     fail(HOT::ERROR_WRONG_PARAMETER, "augment adds landmarks, so an order given as positions does not fit: give order \"auto\", \"tsp\" or \"given\"");
   HOT::Extremity_matching<SM_vertex> xm;
-  const HOT::Error_code ec = HOT::match_extremities(a0.mesh, a0.landmarks, b0.mesh, b0.landmarks, xm);
-  if(ec != HOT::OK)
-    fail(ec, "augment: " + xm.message);
+  try {
+    xm = hot_cli::augment_landmarks(a0.type, a0.genus, b0.genus, a0.mesh, a0.landmarks, b0.mesh, b0.landmarks, opt.cone_orders, "augment");
+  } catch(const hot_cli::Failure& f) {
+    fail(f.code, f.message);
+  }
   for(const std::pair<SM_vertex, SM_vertex>& p : xm.pairs) { // (the meshes' vertex i is row i of V)
-    a0.landmarks.push_back(p.first);
-    b0.landmarks.push_back(p.second);
     ida.push_back(static_cast<std::size_t>(p.first.idx()));
     idb.push_back(static_cast<std::size_t>(p.second.idx()));
     added.push_back(static_cast<std::int64_t>(p.first.idx()));
     added.push_back(static_cast<std::int64_t>(p.second.idx()));
-    if(!opt.cone_orders.empty())
-      opt.cone_orders.push_back(2);
   }
 }
 

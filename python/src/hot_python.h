@@ -177,6 +177,12 @@ struct Embedding
 
 typedef std::shared_ptr<Embedding> Embedding_ptr;
 
+// the embedding as the library's result type (its layout: the statistics')
+inline hot_cli::Embedding_result result_of(const Embedding& e)
+{
+  return hot_cli::embedding_result(e.mesh, e.uv, e.charts, e.stats, e.landmarks);
+}
+
 // what embed() is asked for, besides the mesh and the landmarks
 struct Embed_options
 {

@@ -22,13 +22,10 @@ typedef hot_cli::Locator Locator;
 // the locator of an embedding, as the module's map uses it (target_locator(), embedding.cpp)
 Locator embedding_locator(const Embedding& B)
 {
-  if(B.stats.genus > 0) {
-    Locator::Tile tile;
-    if(HOT::make_embedding_tile(B.type, B.stats, tile) != HOT::OK)
-      fail(HOT::ERROR_WRONG_PARAMETER, "view: the tile of a genus " + std::to_string(B.stats.genus) + " embedding could not be built");
-    return Locator(B.mesh, B.uv, tile, HOT::Hyperboloid_linear);
-  }
-  return Locator(B.mesh, B.uv, B.charts, B.stats.charts, HOT::Orbifold_signature(B.type, B.stats.cone_orders), HOT::Hyperboloid_linear);
+  const Locator loc(result_of(B), HOT::Hyperboloid_linear);
+  if(!loc.is_valid() && B.stats.genus > 0)
+    fail(HOT::ERROR_WRONG_PARAMETER, "view: the tile of a genus " + std::to_string(B.stats.genus) + " embedding could not be built");
+  return loc;
 }
 
 hot_cli::View_input view_input(const Embedding& e, const Locator& loc, const std::string& name)

@@ -134,7 +134,6 @@ inline void write_collection_files(const Collection_job& job, Collection& coll, 
   Output_files files;
   for(std::size_t i = 0; i < N; ++i) {
     const HOT::Embedding_statistics& st = coll.statistics(i);
-    const hot_tools::Embedding_charts<Collection::Chart_map> ch{coll.chart_map(i), st.charts, st.chart_corners};
     hot_tools::Embedding_cones cones;
     cones.type = type;
     cones.reversed = st.landmark_order_reversed;
@@ -144,7 +143,7 @@ inline void write_collection_files(const Collection_job& job, Collection& coll, 
       cones.order.push_back(coll.cone_orders().empty() ? 2 : coll.cone_orders()[c]);
     }
     files.write(job.obj_path(i),
-                [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.mesh(i), coll.uv_map(i), addressed(i), &ch, &cones); });
+                [&](std::ostream& os) { hot_tools::write_embedding_obj(os, coll.embedding(i), addressed(i), &cones); });
   }
   if(job.all_pairs)
     for(std::size_t a = 0; a < N; ++a)

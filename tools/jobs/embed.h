@@ -160,16 +160,16 @@ inline void write_embed_outputs(const Embed_command& job, const Surface_mesh& m,
                                 const std::vector<SM_vertex>& landmarks, const HOT::Embedding_statistics& st, const Input& in)
 {
   const HOT::Orbifold_type type = job.request.type;
+  const Embedding_result result = embedding_result(m, uv, charts, st, landmarks);
   HOT::Orbifold_tile<> tile;
-  HOT::make_embedding_tile(type, st, tile);
+  result.tile(tile);
   if(st.recentred)
     tile = tile.transformed(st.frame); // the tile of the written coordinates
 
   Output_files files;
-  const hot_tools::Embedding_charts<Chart_map> ch{charts, st.charts, st.chart_corners};
   const hot_tools::Embedding_cones cones = embedding_cones(type, st, job.request.cones);
   hot_tools::timings().phase("tile");
-  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, m, uv, in.file.repaired ? &in.file : nullptr, &ch, &cones); });
+  files.write(job.out_path, [&](std::ostream& os) { hot_tools::write_embedding_obj(os, result, in.file.repaired ? &in.file : nullptr, &cones); });
   hot_tools::timings().phase("write the OBJ");
   if(job.svg_path) {
     std::ostringstream title;

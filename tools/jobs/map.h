@@ -9,6 +9,7 @@
 // embeddings; the map file, its report, the prepared target and the colours.
 
 #include "jobs/map_pair.h"
+#include "hot_app/augment.h"
 #include "hot_app/io/map_files.h"
 #include "hot_app/io/reports.h"
 
@@ -16,7 +17,6 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/map_distortion.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
-#include <CGAL/Hyperbolic_orbifold_Tutte/match_extremities.h>
 
 #include <algorithm>
 #include <chrono>
@@ -105,7 +105,7 @@ inline int run_map_stored(const Options& opt)
   progress.step("map");
   const auto t0 = std::chrono::steady_clock::now();
   const Locator locB = stored_locator(B);
-  const std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.chart_isometries, locB);
+  const std::vector<Locator::Location> f = HOT::map_vertices(A.result(), locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(A.vertex_line[i]) + " of the source could not be located on the target"};
@@ -157,23 +157,14 @@ inline int run_map_stored(const Options& opt)
 // order 2 when --cone-orders is given); what was added goes into `summary`
 inline void augment_landmarks(Embedded& A, Embedded& B, std::vector<int>& orders, hot_tools::Map_summary& summary)
 {
-  if(A.type != HOT::Sphere_type || genus_of(A) != 0 || genus_of(B) != 0)
-    throw Failure{HOT::ERROR_WRONG_PARAMETER, "--augment adds landmarks inside closed meshes of genus 0 (sphere type); these meshes are not"};
-  HOT::Extremity_matching<SM_vertex> xm;
-  const HOT::Error_code ec = HOT::match_extremities(A.mesh, A.landmarks, B.mesh, B.landmarks, xm);
-  if(ec != HOT::OK)
-    throw Failure{ec, "--augment: " + xm.message};
+  const HOT::Extremity_matching<SM_vertex> xm =
+    augment_landmarks(A.type, genus_of(A), genus_of(B), A.mesh, A.landmarks, B.mesh, B.landmarks, orders, "--augment");
   summary.augmented = true;
   summary.source_extremities = xm.source_extremities;
   summary.target_extremities = xm.target_extremities;
   summary.seconds_augment = xm.seconds;
-  for(const std::pair<SM_vertex, SM_vertex>& p : xm.pairs) {
-    A.landmarks.push_back(p.first);
-    B.landmarks.push_back(p.second);
-    if(!orders.empty())
-      orders.push_back(2);
+  for(const std::pair<SM_vertex, SM_vertex>& p : xm.pairs)
     summary.added.emplace_back(hot_tools::output_vertex(p.first, addressing(A.in)), hot_tools::output_vertex(p.second, addressing(B.in)));
-  }
 }
 
 // `map` from the meshes, its first part: reads and checks both meshes (--repair, the handles of
@@ -217,7 +208,7 @@ inline HOT::Landmark_order_candidate embed_map_meshes(const Options& opt, const 
 // the images of the source's vertices on the target; a vertex not located fails (`when`: after what)
 inline std::vector<Locator::Location> map_source_vertices(const Embedded& A, const Locator& locB, const std::string& when = std::string())
 {
-  std::vector<Locator::Location> f = HOT::map_vertices(A.mesh, A.uv, A.charts, A.stats.charts, locB);
+  std::vector<Locator::Location> f = HOT::map_vertices(result_of(A), locB);
   for(std::size_t i = 0; i < f.size(); ++i)
     if(!f[i].success)
       throw Failure{HOT::ERROR_POINT_NOT_LOCATED, "vertex " + std::to_string(i) + " of the source could not be located on the target" + when};
@@ -254,7 +245,7 @@ inline void write_map_outputs(const Options& opt, const std::string& out, const 
   if(opt.has("colors-out")) {
     // a smooth colouring of A, carried to B by f_BA
     const Locator locA = target_locator(A);
-    const std::vector<Locator::Location> g = HOT::map_vertices(B.mesh, B.uv, B.charts, B.stats.charts, locA);
+    const std::vector<Locator::Location> g = HOT::map_vertices(result_of(B), locA);
     files.write(opt.get("colors-out"), [&](std::ostream& os) { hot_tools::write_coloured_ply(os, A.mesh, locA, B.mesh, g, addressing(B.in)); });
   }
   files.commit();

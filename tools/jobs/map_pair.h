@@ -83,16 +83,16 @@ inline long long genus_of(const Embedded& e)
   return e.type == HOT::Sphere_type ? HOT::closed_mesh_genus(e.mesh) : 0;
 }
 
-// the locator of a map's target (or, for the colours, of its source): in the tile of its cut graph (genus g >= 1), or of its signature
+// the embedding as the library's result type (its layout: the statistics')
+inline Embedding_result result_of(const Embedded& e)
+{
+  return embedding_result(e.mesh, e.uv, e.charts, e.stats, e.ordered);
+}
+
+// the locator of a map's target (or, for the colours, of its source)
 inline Locator target_locator(const Embedded& B)
 {
-  if(B.stats.genus > 0) {
-    Locator::Tile tile;
-    if(HOT::make_embedding_tile(B.type, B.stats, tile) != HOT::OK)
-      throw Failure{HOT::ERROR_WRONG_PARAMETER, "the target's tile could not be built from its cut graph"};
-    return Locator(B.mesh, B.uv, tile, HOT::Hyperboloid_linear);
-  }
-  return Locator(B.mesh, B.uv, B.charts, B.stats.charts, HOT::Orbifold_signature(B.type, B.stats.cone_orders), HOT::Hyperboloid_linear);
+  return target_locator(result_of(B));
 }
 
 // the source and the target of a map: the same topology and number of landmarks

@@ -12,6 +12,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
 
 #include <cstddef>
 #include "embedding_cones.h"
@@ -192,6 +193,17 @@ void write_embedding_obj(std::ostream& os, const CGAL::Surface_mesh<Point_3>& m,
       t.put(' ').put(output_vertex(target(h, m), in) + 1).put('/').put(corner_vt[h.idx()] + 1);
     t.put('\n');
   });
+}
+
+// Writes an embedding result (HOT::Orbifold_embedding) as OBJ: its corners, and its charts as
+// its layout gives them (write_embedding_obj() above).
+template <class Point_3, class HalfedgeUVMap, class HalfedgeChartMap>
+void write_embedding_obj(std::ostream& os,
+                         const CGAL::Hyperbolic_orbifold_Tutte::Orbifold_embedding<CGAL::Surface_mesh<Point_3>, HalfedgeUVMap, HalfedgeChartMap>& e,
+                         const Input_mesh* in = nullptr, const Embedding_cones* cones = nullptr)
+{
+  const Embedding_charts<HalfedgeChartMap> charts{e.chart_map(), e.layout().charts, e.layout().chart_corners};
+  write_embedding_obj(os, e.mesh(), e.uv_map(), in, &charts, cones);
 }
 
 } // namespace hot_tools

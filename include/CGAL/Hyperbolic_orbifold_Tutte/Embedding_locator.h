@@ -9,6 +9,7 @@
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Chart_point.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Poincare_disk_traits_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
@@ -188,6 +189,37 @@ public:
     Tile tile;
     if(set_up_tile(signature, model, tile))
       build_with_charts(tm, uv, chart_map, charts, tile);
+  }
+
+  /// builds the locator of an embedding result: in its tile (`make_embedding_tile()` of its
+  /// layout: the polygon of the cut graph for genus \f$ g \ge 1 \f$), with its charts when it
+  /// is written partly in charts. A recentred embedding (written in a moved frame) is refused
+  /// (`is_valid()` is `false`): maps are between embeddings in the tile itself.
+  template <class HalfedgeChartMap>
+  explicit Embedding_locator(const Orbifold_embedding<TriangleMesh, HalfedgeUVMap, HalfedgeChartMap>& embedding,
+                             Interpolation_model model = Hyperboloid_linear)
+  {
+    lt_.model = model;
+    Tile tile;
+    if(!embedding.is_valid()) {
+      lt_.fail("the embedding holds no coordinates (it was not computed)");
+      return;
+    }
+    if(embedding.layout().recentred) {
+      lt_.fail("the embedding is written in a moved frame (recentred): compute it without recentring to locate in it");
+      return;
+    }
+    if(embedding.layout().genus > 0) { // (the polygon of the cut graph)
+      if(embedding.tile(tile) != OK) {
+        lt_.fail("the tile of the cut graph's polygon could not be built");
+        return;
+      }
+    } else if(!set_up_tile(embedding.signature(), model, tile))
+      return;
+    if constexpr(Orbifold_embedding<TriangleMesh, HalfedgeUVMap, HalfedgeChartMap>::has_chart_map)
+      build_with_charts(embedding.mesh(), embedding.uv_map(), embedding.chart_map(), embedding.layout().charts, tile);
+    else
+      build(embedding.mesh(), embedding.uv_map(), tile);
   }
 
   /// \name Access

@@ -8,6 +8,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_certificate.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_layout.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_isometry_2.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 
@@ -66,8 +67,13 @@ struct Solver_statistics
 \ingroup PkgHyperbolicOrbifoldTutteMainClasses
 What a parameterization did: the solver's statistics, the sizes, the other timings
 (seconds) and the certificate.
+
+It derives from `Embedding_layout` (what is needed to read the coordinates: the orbifold, the
+landmark order, the frame, the charts, the cut) only so that code written against earlier
+versions, which read those fields here, compiles unchanged: that part is deprecated here, and
+new code reads it from the result, `Orbifold_embedding::layout()`.
 */
-struct Embedding_statistics : public Solver_statistics
+struct Embedding_statistics : public Solver_statistics, public Embedding_layout
 {
   int number_of_vertices = 0;         ///< vertices of the cut (seam) mesh
   int number_of_variables = 0;        ///< unknowns after eliminating seam twins
@@ -77,49 +83,6 @@ struct Embedding_statistics : public Solver_statistics
   /// CHOLMOD's own; otherwise each factors a matrix of its own)
   bool shared_factorization = false;
   int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
-  /// `true` when the coordinates were written in a moved frame (recentring allowed, and the
-  /// embedding in the canonical tile had triangles below what `double` resolves): the
-  /// written point of a vertex is `frame(z)`, where `z` is its position in the tile of
-  /// `make_orbifold_tile()`, and the embedding fills `tile.transformed(frame)`
-  bool recentred = false;
-  /// the isometry of the frame (the identity unless `recentred`): the translation that
-  /// moves the most squeezed region of the embedding to the origin
-  Hyperbolic_isometry_2<double> frame;
-  /// faces written in charts centred at cone images (0 unless a part of the mesh converges
-  /// onto a cone's image below what `double` resolves in the tile: a long protrusion ending
-  /// at a landmark); see `Chart_point`
-  std::size_t charted_faces = 0;
-  /// the charts (\ref HOT_Charts): chart `i` maps the tile's coordinates to its own, moving
-  /// the tile corner `chart_corners[i]` to the origin; empty when `charted_faces` is 0
-  std::vector<Hyperbolic_isometry_2<double> > charts;
-  /// the tile corner at the origin of each chart
-  std::vector<int> chart_corners;
-  bool landmark_order_reversed = false; ///< disk type: landmarks were given clockwise (fixed boundary: the corner vertices)
-  /// `fixed_boundary_hyperbolic_Tutte_embedding()`: the corner vertices go around the mesh
-  /// in the other direction than the polygon's corners around the polygon, so the map
-  /// reverses orientation (every face is clockwise in the output)
-  bool orientation_reversed = false;
-  std::vector<std::size_t> landmark_order; ///< one-call function: indices of the landmarks in the order used
-  /// the order of every cone of the tile (cone angle \f$2\pi/p\f$), in the order of the cut
-  /// (the landmarks as `landmark_order` lists them): 2 for all unless `cone_orders` was given
-  std::vector<int> cone_orders;
-  /// the genus of the mesh: 0 for the sphere and disk types; \f$ g \ge 1 \f$ for a closed
-  /// mesh cut open along a graph (\ref HOT_Genus)
-  int genus = 0;
-  /// \name Genus g >= 1: the polygon of the cut graph
-  /// The tile is `make_cut_graph_tile()` of `Orbifold_signature(genus, cone_orders)` and of these
-  /// (empty for genus 0): corner `i` of the tile is a copy of node `cut_corner_nodes[i]`, whose
-  /// mesh vertex is `cut_node_vertices[n]` (its index in `vertices(tm)`) and whose cone (in the
-  /// order of the cut) is `cut_node_cones[n]` or -1; side `i` is glued to side `cut_paired_sides[i]`.
-  /// @{
-  std::vector<int> cut_corner_nodes;  ///< the node of which each corner of the tile is a copy
-  std::vector<int> cut_node_vertices; ///< the mesh vertex of each node (its index in `vertices(tm)`)
-  std::vector<int> cut_node_cones;    ///< the cone of each node (in the order of the cut), or -1
-  std::vector<int> cut_paired_sides;  ///< the side glued to each side of the tile
-  /// the one-call function: the cut graph as vertex paths (vertex positions in `vertices(tm)`),
-  /// the given one or the computed one (`compute_cut_graph()`)
-  std::vector<std::vector<std::size_t> > cut_graph;
-  /// @}
   /// \var time_setup
   /// seconds spent checking the input, cutting the mesh and setting up the problem
   /// \var time_initialization
@@ -140,19 +103,32 @@ struct Embedding_statistics : public Solver_statistics
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
-the tile in which an embedding of type `type` with statistics `st` was computed, in the
-coordinates the embedding was computed in (a recentred embedding's written coordinates are
-`st.frame` applied to them: see `Orbifold_tile::transformed()`): `make_cut_graph_tile()` of the cut
+the tile in which an embedding with layout `layout` was computed, in the coordinates the
+embedding was computed in (a recentred embedding's written coordinates are `layout.frame`
+applied to them: see `Orbifold_tile::transformed()`): `make_cut_graph_tile()` of the cut
 graph's polygon for genus \f$ g \ge 1 \f$, `make_orbifold_tile()` of the signature with
-`st.cone_orders` otherwise.
+`layout.cone_orders` otherwise.
 */
 template <class Traits>
-Error_code make_embedding_tile(Orbifold_type type, const Embedding_statistics& st, Orbifold_tile<Traits>& tile,
+Error_code make_embedding_tile(const Embedding_layout& layout, Orbifold_tile<Traits>& tile, const Traits& traits = Traits())
+{
+  if(layout.genus > 0)
+    return make_cut_graph_tile(layout.signature(), layout.cut_corner_nodes, layout.cut_node_cones, layout.cut_paired_sides,
+                               tile, traits);
+  return make_orbifold_tile(layout.signature(), tile, traits);
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+`make_embedding_tile()` of the layout `st` with the type `type` (for statistics filled by
+code that does not set `Embedding_layout::type`).
+*/
+template <class Traits>
+Error_code make_embedding_tile(Orbifold_type type, const Embedding_layout& st, Orbifold_tile<Traits>& tile,
                                const Traits& traits = Traits())
 {
   if(st.genus > 0)
-    return make_cut_graph_tile(Orbifold_signature(st.genus, st.cone_orders), st.cut_corner_nodes, st.cut_node_cones,
-                               st.cut_paired_sides, tile, traits);
+    return make_embedding_tile(st, tile, traits); // (the cut graph's polygon: no type)
   return make_orbifold_tile(Orbifold_signature(type, st.cone_orders), tile, traits);
 }
 

@@ -247,6 +247,7 @@ public:
     Embedding_statistics local;
     Embedding_statistics& st = stats ? *stats : local;
     st = Embedding_statistics();
+    st.type = type_;
     const int k = static_cast<int>(landmarks.size());
     Tile tile;
     const long long genus = type_ == Sphere_type ? closed_mesh_genus(mesh.mesh()) : 0;

@@ -8,6 +8,8 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/maps/collection_support.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
@@ -96,6 +98,8 @@ public:
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<Chart_point<Point_2> > >::type Chart_map;
   /// the locator of each embedding
   typedef Embedding_locator<TriangleMesh, UV_map> Locator;
+  /// the embedding of each mesh as a result object (`embedding()`)
+  typedef Orbifold_embedding<TriangleMesh, UV_map, Chart_map> Embedding;
   /// a location on a mesh
   typedef typename Locator::Location Location;
 
@@ -168,6 +172,20 @@ public:
   const Chart_map& chart_map(std::size_t i) const { return items_[i].charts; }
   /// the statistics and certificate of the embedding of mesh `i`, with its timings
   const Embedding_statistics& statistics(std::size_t i) const { return items_[i].stats; }
+  /// the embedding of mesh `i` as the library's result type: its coordinates, their layout and
+  /// its landmarks in cone order, which the locator, the maps and the certificate take
+  /// \pre `embed()` returned `OK`
+  Embedding embedding(std::size_t i) const
+  {
+    const Item& it = items_[i];
+    Embedding e(*it.mesh, it.uv, it.charts);
+    e.layout() = it.stats;
+    std::vector<vertex_descriptor> ordered;
+    for(std::size_t c : order_) ordered.push_back(it.landmarks[c]);
+    e.set_landmarks(ordered);
+    e.set_valid();
+    return e;
+  }
   /// the cone order used: landmark `order()[c]` of every mesh is at cone `c`
   const std::vector<std::size_t>& order() const { return order_; }
   /// the orders `embed()` tried, in turn (the last one is `order()`); after a success the last
@@ -292,7 +310,7 @@ public:
     if(it == maps_.end()) {
       const Locator& lb = locator(b);
       const Clock::time_point t0 = Clock::now();
-      it = maps_.emplace(ab, map_vertices(*items_[a].mesh, items_[a].uv, items_[a].charts, items_[a].stats.charts, lb)).first;
+      it = maps_.emplace(ab, map_vertices(embedding(a), lb)).first;
       map_seconds_[ab] = seconds_since(t0);
       Reporter report(progress_, 1);
       report(Progress::Pair_mapped, a, b, map_seconds_[ab], OK);
@@ -324,8 +342,7 @@ public:
     Reporter report(progress_, pairs.size());
     auto run = [&](std::size_t p) {
       const Clock::time_point t0 = Clock::now();
-      const Item& a = items_[pairs[p].first];
-      results[p] = map_vertices(*a.mesh, a.uv, a.charts, a.stats.charts, *locators_.find(pairs[p].second)->second);
+      results[p] = map_vertices(embedding(pairs[p].first), *locators_.find(pairs[p].second)->second);
       seconds[p] = seconds_since(t0);
       report(Progress::Pair_mapped, pairs[p].first, pairs[p].second, seconds[p], OK);
     };
@@ -385,48 +402,14 @@ private:
     Embedding_statistics stats;
   };
 
-  // calls the progress callback, one thread at a time, counting the steps
-  class Reporter
-  {
-  public:
-    Reporter(const Progress_callback& callback, std::size_t total) : callback_(callback), total_(total) {}
-    void operator()(typename Progress::Stage stage, std::size_t source, std::size_t target, double seconds, Error_code code)
-    {
-      if(!callback_)
-        return;
-      std::lock_guard<std::mutex> lock(mutex_);
-      callback_(Progress{stage, ++done_, total_, source, target, seconds, code});
-    }
-
-  private:
-    const Progress_callback& callback_;
-    std::size_t total_, done_ = 0;
-    std::mutex mutex_;
-  };
+  typedef internal::Collection_reporter<Progress> Reporter;
 
   static double seconds_since(const Clock::time_point& t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-  // f(i) for i in [0, n), in parallel with Parallel_tag and TBB
   template <class F>
-  static void for_each_index(std::size_t n, const F& f)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value) {
-      tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { f(i); });
-      return;
-    }
-#endif
-    for(std::size_t i = 0; i < n; ++i)
-      f(i);
-  }
+  static void for_each_index(std::size_t n, const F& f) { internal::for_each_index<ConcurrencyTag>(n, f); }
 
-  std::unique_ptr<Locator> new_locator(std::size_t i) const
-  {
-    const Item& it = items_[i];
-    if(!orders_.empty())
-      return std::unique_ptr<Locator>(new Locator(*it.mesh, it.uv, it.charts, it.stats.charts, Orbifold_signature(type_, ordered_orders())));
-    return std::unique_ptr<Locator>(new Locator(*it.mesh, it.uv, it.charts, it.stats.charts, type_, static_cast<int>(order_.size())));
-  }
+  std::unique_ptr<Locator> new_locator(std::size_t i) const { return std::unique_ptr<Locator>(new Locator(embedding(i))); }
 
   // the locators of the pairs' targets that are not built yet, in parallel
   void build_locators(const std::vector<std::pair<std::size_t, std::size_t> >& pairs)

@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_tile.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/certificate.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/pipeline/cone_chart_solve.h>
@@ -294,6 +295,43 @@ Error_code certify_hyperbolic_orbifold_embedding(
   }
   certificate = internal::certify_flat(P, tile, uv);
   return OK;
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+`certify_hyperbolic_orbifold_embedding()` of an embedding result (`Orbifold_embedding`): its
+landmarks in the order of the cut, its corner coordinates, and what its layout says of them
+(the orbifold type and cone orders, the frame of a recentred embedding, the charts, the cut
+graph of a closed mesh of genus \f$ g \ge 1 \f$) as the named parameters of the other overload.
+
+\return as the other overload; `ERROR_WRONG_PARAMETER` for an embedding that holds no coordinates
+*/
+template <class TriangleMesh, class HalfedgeUVMap, class HalfedgeChartMap>
+Error_code certify_hyperbolic_orbifold_embedding(const Orbifold_embedding<TriangleMesh, HalfedgeUVMap, HalfedgeChartMap>& embedding,
+                                                 Embedding_certificate& certificate, std::string* message = nullptr)
+{
+  certificate = Embedding_certificate();
+  if(!embedding.is_valid()) {
+    if(message)
+      *message = "the embedding holds no coordinates (it was not computed)";
+    return ERROR_WRONG_PARAMETER;
+  }
+  const Embedding_layout& layout = embedding.layout();
+  const auto landmarks = embedding.ordered_landmarks();
+  auto certify = [&](const auto& np) {
+    if constexpr(Orbifold_embedding<TriangleMesh, HalfedgeUVMap, HalfedgeChartMap>::has_chart_map)
+      if(!layout.charts.empty())
+        return certify_hyperbolic_orbifold_embedding(embedding.mesh(), landmarks, embedding.uv_map(), certificate, message,
+                                                     parameters::chart_map(embedding.chart_map(), parameters::charts(layout.charts, np)));
+    return certify_hyperbolic_orbifold_embedding(embedding.mesh(), landmarks, embedding.uv_map(), certificate, message, np);
+  };
+  const auto np = parameters::cone_orders(layout.cone_orders, parameters::orbifold_type(layout.type));
+  if(layout.genus > 0)
+    return certify(parameters::cut_graph(embedding.cut_graph(), np));
+  if(layout.recentred)
+    return certify(parameters::frame(layout.frame, np));
+  return certify(np);
 }
 
 } // namespace Hyperbolic_orbifold_Tutte

@@ -10,6 +10,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/genus.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/landmark_checks.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Hyperbolic_orbifold_Tutte_parameterizer_3.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_graph.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/cut_through_landmarks.h>
@@ -278,6 +279,49 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
       if constexpr(with_charts)
         put(get_parameter(np, internal_np::chart_map), h, chart_points->at(vd));
     }
+  return OK;
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
+`hyperbolic_orbifold_Tutte_embedding()` into a result object: the coordinates go to
+`embedding.uv_map()` (and `embedding.chart_map()`, which allows charts, if it has one), and
+`embedding.layout()` receives what is needed to read them (the orbifold, the landmark order,
+the frame, the charts, the cut graph), `embedding.landmarks()` the landmarks. The statistics
+(times, counts, the message) still go to the named parameter `embedding_statistics` if given.
+
+\param tm the mesh: `embedding.mesh()` must be `tm` (`ERROR_WRONG_PARAMETER` otherwise)
+\param landmarks as for the other overload
+\param embedding built from `tm` and its maps; on success `is_valid()`, unchanged on failure
+\param np the named parameters of the other overload (`chart_map` is the embedding's)
+*/
+template <class TriangleMesh, class HalfedgeUVMap, class HalfedgeChartMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code hyperbolic_orbifold_Tutte_embedding(
+  const TriangleMesh& tm,
+  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+  Orbifold_embedding<TriangleMesh, HalfedgeUVMap, HalfedgeChartMap>& embedding,
+  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  Embedding_statistics local;
+  Embedding_statistics& st = internal::statistics_parameter(np, local);
+  if(!embedding.has_mesh())
+    return internal::record_failure(st, ERROR_WRONG_PARAMETER, "the embedding object has no mesh (build it from the mesh and its maps)");
+  if(&embedding.mesh() != &tm)
+    return internal::record_failure(st, ERROR_WRONG_PARAMETER, "the embedding object's maps belong to another mesh");
+  Error_code ec;
+  if constexpr(Orbifold_embedding<TriangleMesh, HalfedgeUVMap, HalfedgeChartMap>::has_chart_map)
+    ec = hyperbolic_orbifold_Tutte_embedding(
+      tm, landmarks, embedding.uv_map(),
+      parameters::embedding_statistics(&st, parameters::chart_map(embedding.chart_map(), np)));
+  else
+    ec = hyperbolic_orbifold_Tutte_embedding(tm, landmarks, embedding.uv_map(), parameters::embedding_statistics(&st, np));
+  if(ec != OK)
+    return ec;
+  embedding.layout() = st; // (the layout part of the statistics)
+  embedding.set_landmarks(landmarks);
+  embedding.set_valid();
   return OK;
 }
 

@@ -164,6 +164,28 @@ std::vector<typename Locator::Location> map_vertices(const TriangleMeshA& A, Hal
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
+`map_vertices()` from an embedding result of `A` (`Orbifold_embedding`): its corner coordinates,
+and its charts when it is written partly in charts. `A` must not be recentred (its points
+would be in a moved frame; `CGAL_precondition`).
+
+\tparam TriangleMeshA, HalfedgeUVMapA, HalfedgeChartMapA the parameters of `A`'s `Orbifold_embedding`
+\tparam Locator an `Embedding_locator` of `B` (e.g. built from `B`'s `Orbifold_embedding`)
+\return one `Locator::Location` per vertex of `A`
+*/
+template <class TriangleMeshA, class HalfedgeUVMapA, class HalfedgeChartMapA, class Locator>
+std::vector<typename Locator::Location> map_vertices(const Orbifold_embedding<TriangleMeshA, HalfedgeUVMapA, HalfedgeChartMapA>& A,
+                                                     const Locator& locB)
+{
+  CGAL_precondition(A.is_valid() && !A.layout().recentred);
+  if constexpr(Orbifold_embedding<TriangleMeshA, HalfedgeUVMapA, HalfedgeChartMapA>::has_chart_map)
+    return map_vertices(A.mesh(), A.uv_map(), A.chart_map(), A.layout().charts, locB);
+  else
+    return map_vertices(A.mesh(), A.uv_map(), locB);
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
 computes the sparse transfer matrix `T` of a vertex map computed by `map_vertices()`: one row
 per vertex of `A`, one column per vertex of `B` (in `vertices(B)` order), the three barycentric
 coordinates of the row's location at the columns of the face's corners (summed when corners
