@@ -277,6 +277,12 @@ difference of descriptors \f$\sqrt{2\|x-y\|^2/(\|x\|^2+\|y\|^2)}\f$, that differ
 the tolerance, and the second nearest on either side is at least 1.5 times farther and at
 least 0.015 away (two tips whose descriptors differ by less cannot be told apart; the map
 between the meshes is not used: near a protrusion without a landmark it is what is wrong).
+Both tests run over the other mesh's tips and its *rivals*: its other distinct maxima of the
+distance (at least 0.2 \f$d_{max}\f$; distinct: sweeping the distance down, the distance
+drops from it by at least the mean edge length before its region meets a higher maximum's)
+that are no tip's own; a tip nearest to a rival is not matched. So a tip whose ball hides a
+second feature almost as far (a claw beside a claw), which a deformation can make the
+farthest on the other mesh, is left out rather than matched onto the wrong one.
 The descriptors tell left from right as far as the landmarks do: mirror twins that the
 landmarks do not tell apart are left out, not guessed. A maximum on a ridge around a limb
 whose both ends hold landmarks can pass the area test too; it is matched by its descriptor
