@@ -62,13 +62,64 @@ constexpr double kIndistinct = 0.01;
 constexpr double kFarthest = 0.2;
 
 // one mesh's thin tips (dense vertex indices, farthest from the landmarks first), their
-// tipness and their descriptors (geodesic distances to the landmarks over sqrt(area))
+// tipness and their descriptors (geodesic distances to the landmarks over sqrt(area)); after
+// the `tips` tips, the rivals: the mesh's other distinct maxima (see distinct_maxima()), with
+// their descriptors (tipness 0), which a tip of the other mesh must not be nearer to
 struct Tips
 {
+  std::size_t tips = 0;
   std::vector<int> vertex;
   std::vector<double> tipness;
   std::vector<std::vector<double> > descriptor;
 };
+
+// The distinct maxima of `f` (a vertex function; `candidate[v]`: v is a local maximum worth
+// looking at) and, for every vertex, the distinct maximum whose feature holds it. Superlevel
+// sets {f >= t} are swept down (union-find over the vertices in decreasing f): where two
+// components meet, the one with the lower top dies, and its top's persistence is how far f
+// dropped from it, f(top) - t. A maximum whose persistence is below `noise` is not a feature
+// of its own: its feature is the one it merged into. The highest maximum never dies.
+template <class Graph>
+std::vector<int> distinct_maxima(const Graph& g, const std::vector<double>& f, const std::vector<char>& candidate,
+                                 double noise, std::vector<int>& feature)
+{
+  const std::size_t n = g.size();
+  std::vector<int> order(n);
+  for(std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
+  const auto higher = [&](int a, int b) { return f[a] > f[b] || (f[a] == f[b] && a < b); };
+  std::sort(order.begin(), order.end(), higher);
+  // (owner: the top of the component that a vertex joined when it was swept, or that a maximum
+  // merged into when it died with a persistence below `noise`; -1 for the distinct maxima)
+  std::vector<int> parent(n, -1), top(n, -1), owner(n, -1);
+  const auto find = [&](int x) {
+    while(parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for(int u : order) {
+    parent[u] = top[u] = u;
+    for(std::size_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
+      const int v = g.nbrs[e];
+      if(parent[v] < 0) continue; // (not swept yet)
+      const int a = find(u), b = find(v);
+      if(a == b) continue;
+      const bool a_higher = higher(top[a], top[b]);
+      const int survivor = a_higher ? top[a] : top[b], dead = a_higher ? top[b] : top[a];
+      if(f[dead] - f[u] < noise) owner[dead] = survivor;
+      parent[a_higher ? b : a] = a_higher ? a : b;
+    }
+  }
+  feature.assign(n, -1);
+  std::vector<int> distinct;
+  for(int u : order) { // (an owner is higher: settled before)
+    if(owner[u] >= 0)
+      feature[u] = feature[owner[u]];
+    else {
+      feature[u] = u;
+      if(candidate[u]) distinct.push_back(u);
+    }
+  }
+  return distinct;
+}
 
 template <class Graph, class TriangleMesh>
 std::vector<double> vertex_areas(const Graph& g, const TriangleMesh& tm, double& total)
@@ -121,13 +172,21 @@ Tips thin_tips(const Graph& g, const TriangleMesh& tm, const std::vector<int>& l
   double dmax = 0;
   for(double d : nearest.dist) dmax = (std::max)(dmax, d);
   std::vector<std::pair<double, int> > candidates; // (-distance, vertex)
+  std::vector<char> is_candidate(n, 0);
   for(std::size_t i = 0; i < n; ++i) {
     const double d = nearest.dist[i];
     bool top = d >= kFarthest * dmax;
     for(std::size_t e = g.offsets[i]; top && e < g.offsets[i + 1]; ++e)
       top = nearest.dist[g.nbrs[e]] <= d;
     if(top) candidates.emplace_back(-d, static_cast<int>(i));
+    is_candidate[i] = top;
   }
+  // the distinct maxima: edge path distances place a maximum only to about an edge, so a drop
+  // of less than the mean edge length between two maxima does not make them two features
+  double mean_edge = 0;
+  for(double l : g.lengths) mean_edge += l / g.lengths.size();
+  std::vector<int> feature;
+  const std::vector<int> distinct = distinct_maxima(g, nearest.dist, is_candidate, mean_edge, feature);
   std::sort(candidates.begin(), candidates.end());
   Dijkstra_workspace ws;
   ws.init(n);
@@ -146,9 +205,18 @@ Tips thin_tips(const Graph& g, const TriangleMesh& tm, const std::vector<int>& l
       tips.tipness.push_back(tipness);
     }
   }
-  // the descriptors: one search per landmark, stopped once every tip is settled
-  tips.descriptor.assign(tips.vertex.size(), std::vector<double>(landmarks.size()));
+  // the rivals: the distinct maxima that are no tip's feature
+  tips.tips = tips.vertex.size();
   std::vector<char> is_tip(n, 0);
+  for(int t : tips.vertex) is_tip[feature[t]] = 1;
+  for(int m : distinct)
+    if(!is_tip[m]) {
+      tips.vertex.push_back(m);
+      tips.tipness.push_back(0.);
+    }
+  // the descriptors: one search per landmark, stopped once every tip and rival is settled
+  tips.descriptor.assign(tips.vertex.size(), std::vector<double>(landmarks.size()));
+  std::fill(is_tip.begin(), is_tip.end(), 0);
   for(int t : tips.vertex) is_tip[t] = 1;
   const double scale = 1 / std::sqrt(total_area);
   for(std::size_t j = 0; j < landmarks.size() && !tips.vertex.empty(); ++j) {
@@ -209,6 +277,12 @@ difference of descriptors \f$\sqrt{2\|x-y\|^2/(\|x\|^2+\|y\|^2)}\f$, that differ
 the tolerance, and the second nearest on either side is at least 1.5 times farther and at
 least 0.015 away (two tips whose descriptors differ by less cannot be told apart; the map
 between the meshes is not used: near a protrusion without a landmark it is what is wrong).
+Both tests run over the other mesh's tips and its *rivals*: its other distinct maxima of the
+distance (at least 0.2 \f$d_{max}\f$; distinct: sweeping the distance down, the distance
+drops from it by at least the mean edge length before its region meets a higher maximum's)
+that are no tip's own; a tip nearest to a rival is not matched. So a tip whose ball hides a
+second feature almost as far (a claw beside a claw), which a deformation can make the
+farthest on the other mesh, is left out rather than matched onto the wrong one.
 The descriptors tell left from right as far as the landmarks do: mirror twins that the
 landmarks do not tell apart are left out, not guessed. A maximum on a ridge around a limb
 whose both ends hold landmarks can pass the area test too; it is matched by its descriptor
@@ -278,14 +352,14 @@ Error_code match_extremities(const TriangleMesh& A,
     tips[m] = X::thin_tips(g, *mesh[m], ids, radius, threshold);
     verts[m] = g.verts;
   }
-  result.source_extremities = tips[0].vertex.size();
-  result.target_extremities = tips[1].vertex.size();
+  result.source_extremities = tips[0].tips;
+  result.target_extremities = tips[1].tips;
   std::vector<char> taken(tips[1].vertex.size(), 0);
-  for(std::size_t a = 0; a < tips[0].vertex.size() && !tips[1].vertex.empty(); ++a) {
+  for(std::size_t a = 0; a < tips[0].tips && tips[1].tips > 0; ++a) {
     double d1, d2, e1, e2;
     const std::size_t b = X::nearest_tip(tips[1], tips[0].descriptor[a], d1, d2);
-    if(d1 > tolerance || d2 < X::kRatio * (std::max)(d1, X::kIndistinct) || taken[b])
-      continue;
+    if(b >= tips[1].tips || d1 > tolerance || d2 < X::kRatio * (std::max)(d1, X::kIndistinct) || taken[b])
+      continue; // (nearest to a rival: not a tip of the other mesh)
     if(X::nearest_tip(tips[0], tips[1].descriptor[b], e1, e2) != a || e2 < X::kRatio * (std::max)(e1, X::kIndistinct))
       continue;
     taken[b] = 1;
