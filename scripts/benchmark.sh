@@ -36,8 +36,8 @@
 #     ground truth, TOSCA's wolves with 7 and 21 landmarks (../shared/data, read in place,
 #     when present), each pair both ways, without and with --augment (match_extremities()):
 #     error and distortion before/after, the independent certificate, the times; SHREC'07's
-#     humans (no vertex truth): the symmetric Dirichlet energy of map, map --refine and
-#     map --augment --refine; and the whole `map` process against `map --refine`
+#     humans (no vertex truth): the distortion of map, map --refine --no-augment and
+#     map --refine (which augments); and the whole `map` process against `map --refine`
 #     on libcgal-demo meshes onto bent copies (test/bend.awk): the ratio of the times.
 # Prints the machine first.
 # Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine]
@@ -229,7 +229,7 @@ refine_section() {
     echo "(../shared/data/collections/tosca_wolf not found: the TOSCA pairs are skipped)"
   fi
   echo "== map against map --refine, whole processes (7 landmarks from 'landmarks'; onto a copy bent by test/bend.awk, radius 4 heights)"
-  printf '%-16s %9s %9s %9s %7s  %s\n' mesh vertices map_s refine_s ratio "worst error % (map, map --refine; map --augment --refine, pairs added)"
+  printf '%-16s %9s %9s %9s %7s  %s\n' mesh vertices map_s refine_s ratio "worst error % (map, map --refine --no-augment; map --refine, which augments: pairs added)"
   for m in bear cow bull armadillo; do
     local off="$build/data/meshes/$m.off"
     [ -f "$off" ] || continue
@@ -239,9 +239,9 @@ refine_section() {
     local args=(--source "$off" --source-cones "$work/$m.c7" --target "$work/$m-bent.off" --target-cones "$work/$m.c7")
     local t0 t1 t2
     t0=$(now); "$cli" map "${args[@]}" --out "$work/m0.txt" >/dev/null 2>&1 || continue
-    t1=$(now); "$cli" map "${args[@]}" --out "$work/m1.txt" --refine >/dev/null 2>&1 || continue
+    t1=$(now); "$cli" map "${args[@]}" --out "$work/m2.txt" --refine > "$work/m2.out" 2>&1 || continue
     t2=$(now)
-    "$cli" map "${args[@]}" --out "$work/m2.txt" --augment --refine > "$work/m2.out" 2>&1 || continue
+    "$cli" map "${args[@]}" --out "$work/m1.txt" --refine --no-augment >/dev/null 2>&1 || continue
     local e0 e1 e2
     e0=$(awk -f "$root/test/off_reader.awk" -f "$root/test/map_error.awk" "$work/m0.txt" "$work/$m-bent.off" "$work/$m-bent.off" | awk '{ printf "%.2f", 100 * $6 }')
     e1=$(awk -f "$root/test/off_reader.awk" -f "$root/test/map_error.awk" "$work/m1.txt" "$work/$m-bent.off" "$work/$m-bent.off" | awk '{ printf "%.2f", 100 * $6 }')
@@ -252,7 +252,7 @@ refine_section() {
   done
   local human="$root/../shared/data/collections/shrec07_human"
   if [ -f "$human/shrec07_human.suggested_rows7.txt" ]; then
-    echo "== SHREC'07 humans (no vertex truth), 7 landmarks: map, map --refine, map --augment --refine; conformal p90 and area p90 (a few sliver faces make the energy meaningless), whole-process times"
+    echo "== SHREC'07 humans (no vertex truth), 7 landmarks: map, map --refine --no-augment, map --refine (which augments); conformal p90 and area p90 (a few sliver faces make the energy meaningless), whole-process times"
     printf '%-10s %20s %20s %20s %8s %8s %8s  %s\n' pair "conf/area map" "conf/area refine" "conf/area augment" map_s refine_s augm_s added
     for p in "001 002" "003 004" "001 003" "002 004" "001 004" "002 003"; do
       set -- $p
@@ -264,7 +264,7 @@ refine_section() {
       local args=(--source "$human/shrec07_human_$1.off" --source-cones "$work/h$1.c7" --target "$human/shrec07_human_$2.off" --target-cones "$work/h$2.c7")
       local t0 t1 t2 t3
       t0=$(now); "$cli" map "${args[@]}" --out "$work/m0.txt" --report "$work/r0.json" >/dev/null 2>&1 || continue
-      t1=$(now); "$cli" map "${args[@]}" --out "$work/m1.txt" --report "$work/r1.json" --refine >/dev/null 2>&1 || continue
+      t1=$(now); "$cli" map "${args[@]}" --out "$work/m1.txt" --report "$work/r1.json" --refine --no-augment >/dev/null 2>&1 || continue
       t2=$(now); "$cli" map "${args[@]}" --out "$work/m2.txt" --report "$work/r2.json" --augment --refine >/dev/null 2>&1 || continue
       t3=$(now)
       python3 - "$work" "$1-$2" "$(seconds "$t0" "$t1")" "$(seconds "$t1" "$t2")" "$(seconds "$t2" "$t3")" <<'PY' || true

@@ -387,9 +387,12 @@ case "$case_name" in
     awk -v R=3 -f "$d/bend.awk" "$data/meshes/bear.off" > "$tmp/bent.off"
     echo "10138 5326 2877 3940 7260 13588 121" > "$tmp/bear.cones"
     args=(--source "$data/meshes/bear.off" --source-cones "$tmp/bear.cones" --target "$tmp/bent.off" --target-cones "$tmp/bear.cones")
-    "$prog" map "${args[@]}" --out "$tmp/m0.txt" --report "$tmp/r0.json" > /dev/null || fail "map failed"
+    # (--augment: the landmarks --refine adds by default, so that r0 is the map it starts from)
+    "$prog" map "${args[@]}" --out "$tmp/m0.txt" --report "$tmp/r0.json" --augment > /dev/null || fail "map failed"
     "$prog" map "${args[@]}" --out "$tmp/m1.txt" --report "$tmp/r1.json" --refine 20 > "$tmp/stdout" || fail "map --refine failed"
     grep -q '^refined: [0-9]* certified iterations' "$tmp/stdout" || fail "stdout does not say what the refinement did"
+    "$prog" map "${args[@]}" --out "$tmp/m3.txt" --report "$tmp/r3.json" --refine 20 --no-augment > /dev/null || fail "map --refine --no-augment failed"
+    ! grep -q '"augmentation"' "$tmp/r3.json" || fail "--no-augment: the report has an augmentation block"
     e0=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m0.txt" "$tmp/bent.off" "$tmp/bent.off")
     e1=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m1.txt" "$tmp/bent.off" "$tmp/bent.off")
     echo "harmonic: $e0; refined: $e1"
@@ -407,7 +410,9 @@ assert 4 - 1e-9 <= f["symmetric_dirichlet_energy_after"] < f["symmetric_dirichle
 assert f["distortion_before"]["conformal"] == r0["distortion"]["conformal"], (f["distortion_before"], r0["distortion"])
 assert f["distortion_before"]["symmetric_dirichlet_energy"] == r0["distortion"]["symmetric_dirichlet_energy"]
 assert r1["distortion"]["symmetric_dirichlet_energy"] < r0["distortion"]["symmetric_dirichlet_energy"]
-assert f["free_vertices"] == r1["source_vertices"] - 7 and f["seconds"] > 0
+assert f["free_vertices"] == r1["source_vertices"] - r1["landmarks"] and f["seconds"] > 0
+# --refine adds the matched extremities, as --augment does (the same pairs)
+assert r1["augmentation"]["added"] == r0["augmentation"]["added"] and r1["landmarks"] == 7 + len(r0["augmentation"]["added"])
 PY
     # usage errors: exit 2, no file left
     for bad in -1 x 1.5; do
@@ -468,6 +473,8 @@ PY
     expect_error "$tmp/m2.txt" map --source "$data/meshes/mushroom.off" --source-cones "$tmp/m.cones" --target "$data/meshes/mushroom.off" \
       --target-cones "$tmp/m.cones" --out "$tmp/m2.txt" --augment
     grep -q "augment" "$tmp/stderr" || fail "the disk's refusal does not name --augment"
+    "$prog" map "${args[@]}" --out "$tmp/m2.txt" --augment --no-augment 2> "$tmp/stderr"; [ $? -eq 2 ] || fail "--augment --no-augment: not a usage error"
+    [ ! -e "$tmp/m2.txt" ] || fail "--augment --no-augment: MAP.txt left behind"
     echo ok ;;
   collection_refine)
     # collection --refine: cow.off and two copies bent by bend.awk (radii 4 and 6 times its

@@ -132,7 +132,7 @@ class _MeshMap(TypedDict):
 
 def map_meshes(VA: ArrayLike, FA: ArrayLike, landmarks_a: _Indices, VB: ArrayLike, FB: ArrayLike, landmarks_b: _Indices, *,
                orbifold: _Orbifold = "auto", weights: _Weights = "cotan", order: Literal["auto", "tsp", "given"] | _Indices = "auto",
-               cone_orders: _Indices | None = None, unreliable: bool = False, refine: int = 0, augment: bool = False,
+               cone_orders: _Indices | None = None, unreliable: bool = False, refine: int = 0, augment: bool | None = None,
                progress: Callable[[str, float], object] | None = None) -> _MeshMap: ...
 
 class _DistortionSummary(TypedDict):

@@ -598,10 +598,11 @@ struct Mesh_map
   std::vector<std::string> refusals;
   std::vector<std::int64_t> faces, flagged;
   std::vector<double> bary;
-  std::vector<std::int64_t> added; // augment=True: (source vertex, target vertex) per pair added
+  bool augmented = false;
+  std::vector<std::int64_t> added; // augmented: (source vertex, target vertex) per pair added
 };
 
-// augment=True: the thin tips the landmarks leave out, matched across the meshes
+// augmented: the thin tips the landmarks leave out, matched across the meshes
 // (match_extremities(), as map --augment), appended to both meshes' landmarks (and an order 2
 // to the cone orders when some are given)
 void augment_landmarks(Embedding& a0, Embedding& b0, std::vector<std::size_t>& ida, std::vector<std::size_t>& idb, Embed_options& opt,
@@ -635,8 +636,8 @@ std::function<void(const char*, double)> told_as(const char* who, const std::fun
 // embeddings in that order, the next order when one is refused for a reason the order may cause,
 // the map)
 void compute_mesh_map(const Double_array& VA, const Index_array& FA, std::vector<std::size_t> ida, const Double_array& VB,
-                      const Index_array& FB, std::vector<std::size_t> idb, Embed_options opt, bool unreliable, int refine, bool augment,
-                      Mesh_map& r)
+                      const Index_array& FB, std::vector<std::size_t> idb, Embed_options opt, bool unreliable, int refine,
+                      std::optional<bool> augment, Mesh_map& r)
 {
   const auto rows = [](const auto& a) { return static_cast<std::size_t>(a.shape(0)); };
   const auto cols = [](const auto& a) { return static_cast<std::size_t>(a.shape(1)); };
@@ -670,7 +671,9 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, std::vector
     fail(HOT::ERROR_WRONG_PARAMETER, "the meshes have genus " + std::to_string(a0.genus) +
                                        " and not the same faces: a map between them depends on corresponding cut graphs;"
                                        " embed both with corresponding cut_graph= and call map()");
-  if(augment)
+  // augment=None: with refine > 0 on closed genus-0 meshes (as map --refine without --no-augment)
+  r.augmented = augment ? *augment : refine > 0 && a0.type == HOT::Sphere_type && a0.genus == 0 && b0.genus == 0 && opt.order != "explicit";
+  if(r.augmented)
     augment_landmarks(a0, b0, ida, idb, opt, r.added);
   const std::vector<HOT::Landmark_order_candidate> candidates = map_meshes_orders(opt, a0, b0);
   const char* embedding = "source"; // (the one being embedded)
@@ -717,7 +720,7 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, std::vector
 
 py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::handle VB, py::handle FB, py::handle landmarks_b,
                     const std::string& orbifold, const std::string& weights, py::handle order, py::handle cone_orders, bool unreliable,
-                    int refine, bool augment, py::handle progress)
+                    int refine, std::optional<bool> augment, py::handle progress)
 {
   Progress_relay relay(progress);
   const Double_array Va = vertex_array(VA, "VA"), Vb = vertex_array(VB, "VB");
@@ -747,7 +750,7 @@ py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::ha
   for(const std::string& x : r.refusals) refused.append(x);
   d["refused"] = refused;
   const py::ssize_t p = static_cast<py::ssize_t>(r.added.size() / 2);
-  d["added"] = augment ? py::object(owning_array(std::move(r.added), {p, 2})) : py::object(py::none());
+  d["added"] = r.augmented ? py::object(owning_array(std::move(r.added), {p, 2})) : py::object(py::none());
   return d;
 }
 
@@ -757,9 +760,9 @@ void register_maps(py::module_& m)
 {
   m.def("map_meshes", &map_meshes, py::arg("VA"), py::arg("FA"), py::arg("landmarks_a"), py::arg("VB"), py::arg("FB"), py::arg("landmarks_b"),
         py::kw_only(), py::arg("orbifold") = "auto", py::arg("weights") = "cotan", py::arg("order") = "auto",
-        py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0, py::arg("augment") = false,
+        py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0, py::arg("augment") = py::none(),
         py::arg("progress") = py::none(),
-        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0, augment=False, progress=None) -> dict
+        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0, augment=None, progress=None) -> dict
 
 Maps mesh A = (VA, FA) onto mesh B = (VB, FB) in one call, as the command line's `map`
 does: landmark i of landmarks_a corresponds to landmark i of landmarks_b; both meshes are
@@ -781,6 +784,8 @@ augment: True adds to both meshes' landmarks the thin tips the landmarks leave o
   heel), matched by their geodesic distances to the landmarks, as `map --augment` does
   (closed meshes of genus 0; an order 2 is appended to cone_orders when given); the added
   pairs come after the given landmarks (positions k, k+1, ... in "landmark_order").
+  None (the default): True when refine > 0 on closed genus-0 meshes and order is not a
+  sequence (as `map --refine`), else False; False: never.
 progress: as embed()'s, the phases of the two embeddings named "source: PHASE" and
   "target: PHASE" (a mesh embedded again in another order tells its phases again).
 
@@ -793,7 +798,7 @@ Returns a dict (the map() result and how it was made):
       landmark_order); "landmark_order_from": "source", "target" (whose tour it is) or
       "given"; "orders_tried": 1, or 2 when the first order was refused; "refused": the
       refusals' messages (a list of str, empty when the first order was taken);
-  "added": with augment=True, the pairs added (int64 (p, 2): source vertex, target vertex,
+  "added": when augmented, the pairs added (int64 (p, 2): source vertex, target vertex,
       possibly none); else None.
 The same numbers as the two-step call embed(VA, FA, landmarks_a, order=o),
 embed(VB, FB, landmarks_b, order=o), map() with o = the returned landmark_order.

@@ -79,11 +79,16 @@ def test_same_as_the_two_step_call(bear_pair):
     faces, bary = hot.map(a, b)
     assert np.array_equal(faces, r["faces"]) and np.array_equal(bary, r["bary"])
     assert np.array_equal(a.uv, r["source"].uv) and np.array_equal(b.uv, r["target"].uv)
-    # unreliable=True and refine=N are map()'s
-    r2 = hot.map_meshes(V, F, lm, W, F, lm, unreliable=True, refine=3)
+    # unreliable=True and refine=N are map()'s (without the landmarks refine adds by default)
+    r2 = hot.map_meshes(V, F, lm, W, F, lm, unreliable=True, refine=3, augment=False)
     faces2, bary2, flagged = hot.map(a, b, unreliable=True, refine=3)
     assert np.array_equal(r2["faces"], faces2) and np.array_equal(r2["bary"], bary2)
-    assert np.array_equal(r2["unreliable"], flagged)
+    assert np.array_equal(r2["unreliable"], flagged) and r2["added"] is None
+    # refine=N augments by default on a closed genus-0 pair: the same as augment=True
+    r3 = hot.map_meshes(V, F, lm, W, F, lm, refine=3)
+    r4 = hot.map_meshes(V, F, lm, W, F, lm, refine=3, augment=True)
+    assert r3["added"] is not None and np.array_equal(r3["added"], r4["added"])
+    assert np.array_equal(r3["faces"], r4["faces"]) and np.array_equal(r3["bary"], r4["bary"])
 
 
 def test_order_given_and_tsp(bear_pair):

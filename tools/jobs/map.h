@@ -182,7 +182,10 @@ inline HOT::Landmark_order_candidate embed_map_meshes(const Options& opt, const 
   match_genus_zero(opt, repair, A, B, minimum_landmarks(orders));
   progress.done("read");
   check_map_pair(A, B);
-  if(opt.has("augment")) {
+  // --augment, or --refine without --no-augment on closed genus-0 meshes (elsewhere --refine
+  // does not augment: the added landmarks would not fit the orbifold)
+  const bool closed_genus_0 = A.type == HOT::Sphere_type && genus_of(A) == 0 && genus_of(B) == 0;
+  if(opt.has("augment") || (opt.has("refine") && !opt.has("no-augment") && closed_genus_0)) {
     progress.step("augment");
     augment_landmarks(A, B, orders, summary);
     progress.done("augment");
@@ -288,17 +291,23 @@ inline int run_map(int argc, char** argv)
 {
   std::set<std::string> flags = with_progress_flag(repair_flags());
   flags.insert("augment");
+  flags.insert("no-augment");
   const Options opt(argc, argv, 2,
                     {"source", "source-cones", "target", "target-cones", "out", "colors-out", "prepared-target", "report", "max-hole", "target-genus", "max-handle",
                      "cone-orders", "source-cut-graph", "target-cut-graph", "source-embedding", "target-embedding", "order"},
                     flags, {"refine"});
   if(opt.has("source-embedding") || opt.has("target-embedding")) {
-    if(opt.has("refine") || opt.has("augment"))
-      throw Usage_error{std::string("--") + (opt.has("refine") ? "refine refines" : "augment adds landmarks to") +
-                        " a map computed from the meshes, not from stored embeddings"};
+    if(opt.has("refine") || opt.has("augment") || opt.has("no-augment"))
+      throw Usage_error{opt.has("refine") ? "--refine refines a map computed from the meshes, not from stored embeddings"
+                                          : "--augment and --no-augment choose the landmarks of a map computed from the meshes, not of stored embeddings"};
     return run_map_stored(opt);
   }
-  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 100 : static_cast<int>(opt.get_int("refine", 0, 100000));
+  if(opt.has("augment") && opt.has("no-augment"))
+    throw Usage_error{"--augment and --no-augment do not go together"};
+  // (--refine without N: 40 iterations; with the landmarks it adds, the error no longer changes
+  // after about 40 on the TOSCA wolves and the demo meshes, and 40 keep map --refine within 10
+  // times map: benchmark.sh --refine)
+  const int refine = !opt.has("refine") ? 0 : opt.get("refine").empty() ? 40 : static_cast<int>(opt.get_int("refine", 0, 100000));
   const std::string out = opt.get("out");
   const hot_tools::Repair_options repair = parse_repair_options(opt);
   std::vector<int> orders = parse_cone_orders(opt); // (landmark i of both files: a cone of order orders[i])
