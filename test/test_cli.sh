@@ -391,7 +391,7 @@ case "$case_name" in
     "$prog" map "${args[@]}" --out "$tmp/m0.txt" --report "$tmp/r0.json" --augment > /dev/null || fail "map failed"
     "$prog" map "${args[@]}" --out "$tmp/m1.txt" --report "$tmp/r1.json" --refine 20 > "$tmp/stdout" || fail "map --refine failed"
     grep -q '^refined: [0-9]* certified iterations' "$tmp/stdout" || fail "stdout does not say what the refinement did"
-    "$prog" map "${args[@]}" --out "$tmp/m3.txt" --report "$tmp/r3.json" --refine 20 --no-augment > /dev/null || fail "map --refine --no-augment failed"
+    "$prog" map "${args[@]}" --out "$tmp/m3.txt" --report "$tmp/r3.json" --refine 1 --no-augment > /dev/null || fail "map --refine --no-augment failed"
     ! grep -q '"augmentation"' "$tmp/r3.json" || fail "--no-augment: the report has an augmentation block"
     e0=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m0.txt" "$tmp/bent.off" "$tmp/bent.off")
     e1=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m1.txt" "$tmp/bent.off" "$tmp/bent.off")
