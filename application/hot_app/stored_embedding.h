@@ -59,12 +59,6 @@ struct Stored_embedding
   }
   // the signature of the orbifold (cone orders in the order of the cut)
   HOT::Orbifold_signature signature() const { return HOT::Orbifold_signature(cones.type, cones.order); }
-  bool all_orders_two() const
-  {
-    for(int p : cones.order)
-      if(p != 2) return false;
-    return true;
-  }
 };
 
 
