@@ -39,11 +39,17 @@
 #     humans (no vertex truth): the distortion of map, map --refine --no-augment and
 #     map --refine (which augments); and the whole `map` process against `map --refine`
 #     on libcgal-demo meshes onto bent copies (test/bend.awk): the ratio of the times.
+# 12. landmark transfer (bench_transfer), the measure of the scan correspondence benchmarks:
+#     every ordered pair of SHREC'07's humans, four-legged animals and hands (../shared/data,
+#     read in place, when present) mapped with the class's 7 suggested landmarks by `map`,
+#     `map --refine --no-augment` and `map --refine`; at the benchmark's other landmarks, the
+#     geodesic error as a fraction of the target's geodesic diameter: mean, % within 0.025, the
+#     area under the cumulative error curve over [0, 0.1] (AUC, 1 at best), worst; the times.
 # Prints the machine first.
-# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine]
+# Usage: scripts/benchmark.sh [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine] [--transfer]
 #   --whole: only section 7; --io: only section 6; --scaling: only section 8; --fifty: only
 #   section 1's 50-landmark table; --reliability: only section 9; --scans: only section 10;
-#   --refine: only section 11 (each runs alone in a few
+#   --refine: only sections 11 and 12; --transfer: only section 12 (each runs alone in a few
 #   minutes; --scaling --large in about 25)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -52,7 +58,8 @@ for a in "$@"; do
   case "$a" in
     --large) large=1 ;; --quick) quick=1 ;; --whole) only=whole ;; --io) only=io ;; --scaling) only=scaling ;;
     --fifty) only=fifty ;; --reliability) only=reliability ;; --scans) only=scans ;; --refine) only=refine ;;
-    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine]" >&2; exit 2 ;;
+    --transfer) only=transfer ;;
+    *) echo "usage: $0 [--large] [--quick] [--whole] [--io] [--scaling] [--fifty] [--reliability] [--scans] [--refine] [--transfer]" >&2; exit 2 ;;
   esac
 done
 "$root/scripts/install-deps.sh" >/dev/null
@@ -63,8 +70,9 @@ case "$only" in
   fifty) targets=(bench_parameterizer) ;;
   reliability) targets=(bench_reliability hyperbolic_orbifold_tutte) ;;
   scans) targets=(hyperbolic_orbifold_tutte) ;;
-  refine) targets=(bench_refine hyperbolic_orbifold_tutte) ;;
-  *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte bench_reliability bench_refine) ;;
+  refine) targets=(bench_refine bench_transfer hyperbolic_orbifold_tutte) ;;
+  transfer) targets=(bench_transfer hyperbolic_orbifold_tutte) ;;
+  *) targets=(bench_parameterizer bench_collection bench_tiles bench_input_checks bench_io cgal_euclidean_orbifold hyperbolic_orbifold_tutte bench_reliability bench_refine bench_transfer) ;;
 esac
 "$root/scripts/build.sh" "${targets[@]}" >/dev/null
 build="${HOT_BUILD_DIR:-$root/build}"
@@ -291,7 +299,39 @@ PY
     command -v rsvg-convert >/dev/null && rsvg-convert -w 1000 "$build/refine_bear_errors.svg" -o "$build/refine_bear_errors.png" && echo "  wrote $build/refine_bear_errors.png"
   fi
 }
-if [ "$only" = refine ]; then refine_section; exit 0; fi
+transfer_section() {
+  echo "== landmark transfer: SHREC'07 classes, every ordered pair, the class's 7 suggested landmarks; at the benchmark's other landmarks, geodesic error / target's geodesic diameter"
+  printf '%-16s %-24s %6s %8s %8s %7s %7s %9s\n' class map points mean "<=0.025" AUC worst seconds
+  local cls
+  for cls in shrec07_human shrec07_fourleg shrec07_hand; do
+    local d="$root/../shared/data/collections/$cls"
+    [ -f "$d/$cls.suggested_rows7.txt" ] || { echo "($d not found: skipped)"; continue; }
+    local ids=() f
+    for f in "$d/${cls}"_*.off; do ids+=("$(basename "$f" .off | sed "s/^${cls}_//")"); done
+    local i
+    for i in "${ids[@]}"; do
+      awk 'NR == FNR { r[$1 + 1] = 1; next } (FNR in r)' "$d/$cls.suggested_rows7.txt" "$d/${cls}_$i.landmarks.txt" > "$work/t$i.c7"
+    done
+    local variant
+    for variant in "map" "map --refine --no-augment" "map --refine"; do
+      rm -f "$work/terrors.txt"
+      local failed=0 a b t0 t1 total=0
+      for a in "${ids[@]}"; do for b in "${ids[@]}"; do
+        [ "$a" = "$b" ] && continue
+        t0=$(now)
+        if ! "$cli" $variant --source "$d/${cls}_$a.off" --source-cones "$work/t$a.c7" --target "$d/${cls}_$b.off" \
+             --target-cones "$work/t$b.c7" --out "$work/tmap.txt" >/dev/null 2>&1; then failed=$((failed + 1)); continue; fi
+        t1=$(now); total=$(awk -v s="$total" -v x="$t0" -v y="$t1" 'BEGIN { printf "%.3f", s + y - x }')
+        "$build/bin/bench_transfer" "$work/tmap.txt" "$d/${cls}_$b.off" "$d/${cls}_$a.landmarks.txt" "$d/${cls}_$b.landmarks.txt" \
+          "$d/$cls.suggested_rows7.txt" --errors "$work/terrors.txt" >/dev/null || true
+      done; done
+      awk -v c="$cls" -v v="$variant" -v s="$total" -v fl="$failed" '{ n++; m += $1; if($1 <= 0.025) w++; if($1 < 0.1) a += (0.1 - $1) / 0.1; if($1 > x) x = $1 }
+        END { if(n) printf "%-16s %-24s %6d %8.4f %7.1f%% %7.3f %7.3f %9s%s\n", c, v, n, m / n, 100 * w / n, a / n, x, s, (fl ? "  (" fl " pairs failed)" : "") }' "$work/terrors.txt"
+    done
+  done
+}
+if [ "$only" = refine ]; then refine_section; transfer_section; exit 0; fi
+if [ "$only" = transfer ]; then transfer_section; exit 0; fi
 if [ "$only" = reliability ]; then reliability_section; exit 0; fi
 if [ "$only" = scans ]; then scans_section; exit 0; fi
 if [ "$only" = whole ]; then whole_section; exit 0; fi
@@ -354,3 +394,4 @@ scaling_section
 reliability_section
 scans_section
 refine_section
+transfer_section

@@ -15,6 +15,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/refine_orbifold_map.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/Orbifold_collection.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/match_extremities.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/map_distortion.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -22,10 +23,16 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
+
+#include <unistd.h> // (getpid)
 
 namespace HOT = CGAL::Hyperbolic_orbifold_Tutte;
 using namespace hot_test;
@@ -126,6 +133,63 @@ TEST_CASE(refinement_moves_a_map_towards_the_isometry)
   CHECK(HOT::certify_hyperbolic_orbifold_embedding(p.a, p.landmarks, p.uva, cert, &why, HOT::parameters::frame(p.sa.frame)) == HOT::OK);
   CHECK_MSG(cert.is_bijective(), why);
   CHECK(cert.flipped_faces == 0 && cert.twin_failures == 0);
+}
+
+// A protrusion without a landmark that the embeddings squeeze beyond what double resolves (as
+// the fingers of SHREC'07's humans with 7 landmarks): an octopus (test/octopus.awk, L=6) with
+// landmarks at the poles and at seven of its eight tips, onto a copy twirled about the z axis
+// (TWIRL=0.25; vertex i is the truth). The free tentacle's faces have densities of 1e9 and
+// more: the untempered energy is theirs, the refinement would read no decrease anywhere else
+// and stop at once (as before the tempering: 5 iterations, the mean error up from 3.8% to 4.0%
+// of the diagonal). Facts from outside the code: the truth; the target of an area
+// distortion p99 at least 30% below the harmonic map's.
+TEST_CASE(refinement_is_not_stalled_by_a_squeezed_protrusion)
+{
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hot_test_refine_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string src = HOT_SOURCE_DIR "/test/";
+  const std::string a_off = (dir / "a.off").string(), b_off = (dir / "b.off").string(), cones = (dir / "a.cones").string();
+  Pair p;
+  const bool ok = std::system(("awk -v L=6 -f '" + src + "octopus.awk' > '" + a_off + "' 2> '" + cones + "'").c_str()) == 0 &&
+                  std::system(("awk -v L=6 -v TWIRL=0.25 -f '" + src + "octopus.awk' > '" + b_off + "' 2> /dev/null").c_str()) == 0 &&
+                  CGAL::IO::read_polygon_mesh(a_off, p.a) && CGAL::IO::read_polygon_mesh(b_off, p.b);
+  std::vector<std::size_t> all; // the poles and every tentacle's tip and base (octopus.awk)
+  std::ifstream in(cones);
+  for(std::size_t i = 0; in >> i;)
+    all.push_back(i);
+  std::filesystem::remove_all(dir);
+  CHECK(ok && all.size() == 18 && num_vertices(p.a) == num_vertices(p.b));
+  if(!ok || all.size() != 18)
+    return;
+  std::vector<vertex_descriptor> given; // the poles and the tips of tentacles 1 to 7
+  for(std::size_t k : {0, 1, 3, 5, 7, 9, 11, 13, 17})
+    given.push_back(vertex_descriptor(static_cast<Mesh::size_type>(all[k])));
+  for(std::size_t j : HOT::compute_landmark_tour(p.a, given))
+    p.landmarks.push_back(given[j]);
+  p.uva = p.a.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  p.uvb = p.b.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(p.a, p.landmarks, p.uva, HOT::parameters::embedding_statistics(&p.sa)) == HOT::OK);
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(p.b, p.landmarks, p.uvb) == HOT::OK);
+  const CGAL::Bbox_3 bb = CGAL::Polygon_mesh_processing::bbox(p.b);
+  p.diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) + CGAL::square(bb.zmax() - bb.zmin()));
+  const Locator L(p.b, p.uvb, HOT::Sphere_type, static_cast<int>(p.landmarks.size()));
+  const std::pair<double, double> before = error_against_truth(p, L);
+  const double area_before = HOT::map_distortion(p.a, p.b, L, HOT::map_vertices(p.a, p.uva, L)).area_summary.p99;
+  HOT::Map_refinement_statistics st;
+  CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, L, st, HOT::parameters::refine(20, HOT::parameters::frame(p.sa.frame))) == HOT::OK);
+  const std::pair<double, double> after = error_against_truth(p, L);
+  const double area_after = HOT::map_distortion(p.a, p.b, L, HOT::map_vertices(p.a, p.uva, L)).area_summary.p99;
+  std::cout << "  error mean " << 100 * before.first << "% -> " << 100 * after.first << "%; area p99 " << area_before << " -> " << area_after
+            << "; energy " << st.energy_before << " -> " << st.energy_after << ", tempered " << st.tempered_energy_before << " -> "
+            << st.tempered_energy_after << " in " << st.iterations << " iterations (" << st.message << ")" << std::endl;
+  CHECK(st.energy_before > 1e6); // (the free tentacle is squeezed: otherwise nothing is tested)
+  CHECK(st.iterations >= 10 && st.tempered_energy_after < st.tempered_energy_before && st.tempered_energy_after >= 4 - 1e-9);
+  CHECK(after.first < 0.92 * before.first);
+  CHECK(area_after < 0.7 * area_before);
+  HOT::Embedding_certificate cert;
+  std::string why;
+  CHECK(HOT::certify_hyperbolic_orbifold_embedding(p.a, p.landmarks, p.uva, cert, &why, HOT::parameters::frame(p.sa.frame)) == HOT::OK);
+  CHECK_MSG(cert.is_bijective(), why);
 }
 
 TEST_CASE(refinement_refusals_leave_the_embedding)
@@ -232,8 +296,12 @@ TEST_CASE(heavy_refined_collection_is_cycle_consistent)
     const HOT::Map_refinement_statistics st = coll.refinement_statistics(i);
     const double after = collection_error(coll, m, i, 0);
     std::cout << "  mesh " << i << " -> 0: error mean " << 100 * before[i] << "% -> " << 100 * after << "%, energy " << st.energy_before
-              << " -> " << st.energy_after << ", " << st.iterations << " iterations" << std::endl;
-    CHECK(st.iterations >= 1 && st.energy_after < st.energy_before && st.energy_after >= 4 - 1e-9);
+              << " -> " << st.energy_after << ", tempered " << st.tempered_energy_before << " -> " << st.tempered_energy_after << ", "
+              << st.iterations << " iterations" << std::endl;
+    // (the energy the iterations lower is the tempered one: the cows' squeezed ears and tails
+    // can make the untempered one rise)
+    CHECK(st.iterations >= 1 && st.tempered_energy_after < st.tempered_energy_before && st.tempered_energy_after >= 4 - 1e-9);
+    CHECK(st.energy_after >= 4 - 1e-9);
     CHECK(after < before[i]);
   }
   // maps compose through the one orbifold: f_bc(f_ab(x)) = f_ac(x) to rounding, over all triples

@@ -185,7 +185,8 @@ inline double refine_collection_mesh(const Collection_job& job, std::size_t i)
   files.write(job.refine_part(i), [&](std::ostream& os) {
     os.precision(17);
     os << "iterations " << st.iterations << "\nstop " << static_cast<int>(st.stop) << "\nenergy_before " << st.energy_before
-       << "\nenergy_after " << st.energy_after << "\nfree_vertices " << st.free_vertices << "\nundone_moves " << st.undone_moves
+       << "\nenergy_after " << st.energy_after << "\ntempered_energy_before " << st.tempered_energy_before
+       << "\ntempered_energy_after " << st.tempered_energy_after << "\nfree_vertices " << st.free_vertices << "\nundone_moves " << st.undone_moves
        << "\nseconds " << st.seconds << "\nseconds_certificate " << st.seconds_certificate << "\nmessage " << st.message << "\n";
   });
   files.commit();
@@ -200,6 +201,7 @@ inline HOT::Map_refinement_statistics read_refine_part(const Collection_job& job
   std::string key;
   int stop = -1;
   if(!(is >> key) || key != "iterations" || !(is >> st.iterations >> key >> stop >> key >> st.energy_before >> key >> st.energy_after >> key >>
+                                              st.tempered_energy_before >> key >> st.tempered_energy_after >> key >>
                                               st.free_vertices >> key >> st.undone_moves >> key >> st.seconds >> key >> st.seconds_certificate >> key) ||
      key != "message" || stop < HOT::Refinement_not_run || stop > HOT::Refinement_solver)
     throw Failure{HOT::ERROR_READ_FAILED, job.refine_part(i) + ": missing or unreadable: mesh " + std::to_string(i) +

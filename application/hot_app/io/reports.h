@@ -290,6 +290,10 @@ inline void write_refinement_fields(std::ostream& os, const HOT::Map_refinement_
   write_json_number(os, r.energy_before);
   os << ", \"symmetric_dirichlet_energy_after\": ";
   write_json_number(os, r.energy_after);
+  os << ", \"tempered_energy_before\": ";
+  write_json_number(os, r.tempered_energy_before);
+  os << ", \"tempered_energy_after\": ";
+  write_json_number(os, r.tempered_energy_after);
   os << ", \"free_vertices\": " << r.free_vertices << ", \"undone_moves\": " << r.undone_moves << "," << sep
      << "\"seconds\": " << r.seconds << ", \"seconds_certificate\": " << r.seconds_certificate;
 }

@@ -36,6 +36,8 @@ struct Map_refinement_statistics
   int iterations = 0;                ///< accepted iterations (each one certified)
   double energy_before = 0;          ///< the symmetric Dirichlet energy of the map before (see `refine_orbifold_map()`; 4 for an isometry up to scale)
   double energy_after = 0;           ///< and after
+  double tempered_energy_before = 0; ///< the energy the iterations lower: as `energy_before`, with the density above 100 (faces squeezed about 10 times or more) counted as \f$100 (1 + \log(d / 100))\f$ (see `refine_orbifold_map()`)
+  double tempered_energy_after = 0;  ///< and after (below `tempered_energy_before` when an iteration was accepted)
   std::size_t free_vertices = 0;     ///< vertices that may move (not landmarks, not on a border)
   std::size_t undone_moves = 0;      ///< in the last accepted iteration: moves undone so that no face turns over
   double seconds = 0;                ///< the time of the refinement

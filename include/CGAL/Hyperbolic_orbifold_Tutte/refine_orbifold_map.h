@@ -44,7 +44,12 @@ the orbifold's side pairings, landmarks and border vertices stay, a move that wo
 face of `A` over is undone (with its face's other moves), the step is halved until the
 iterate lowers the symmetric Dirichlet energy \f$ \sum_f |f| (\sigma_1^2 + \sigma_2^2 +
 \sigma_1^{-2} + \sigma_2^{-2}) / |A| \f$ (singular values of \f$J_f / s\f$; 4 for an isometry
-up to the scale \f$s\f$, infinite for a degenerate image), and the iterate is accepted only if
+up to the scale \f$s\f$, infinite for a degenerate image), tempered: a face's density
+\f$d > 100\f$ (a face squeezed about 10 times or more) counts as \f$100 (1 + \log(d / 100))\f$,
+so that a few faces the target's embedding squeezes beyond what `double` resolves (a protrusion
+without a landmark) neither dominate the sum nor stiffen the step, and still resist collapse
+(`stats.tempered_energy_before`, `stats.tempered_energy_after`; the untempered energy, in
+`stats.energy_before` and `stats.energy_after`, can rise where such faces dominate it); and the iterate is accepted only if
 it passes `certify_hyperbolic_orbifold_embedding()` (exact). So the map
 stays a bijection that interpolates the landmarks and is seamless through the orbifold, and
 `uvA` always holds the last certified iterate.

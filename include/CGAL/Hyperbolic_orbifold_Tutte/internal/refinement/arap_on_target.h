@@ -102,20 +102,33 @@ struct Arap_source
   // to the scale s, infinite for a face whose image is degenerate. With the columns c0, c1 of
   // J / s: s1^2 + s2^2 = |c0|^2 + |c1|^2 and s1 s2 = |c0 x c1|, so the density is
   // (|c0|^2 + |c1|^2) (1 + 1 / |c0 x c1|^2), no SVD needed.
-  double symmetric_dirichlet(const std::vector<Eigen::Vector3d>& q, double s) const
+  double symmetric_dirichlet(const std::vector<Eigen::Vector3d>& q, double s, double cap = std::numeric_limits<double>::infinity()) const
   {
     double e = 0;
     for(std::size_t f = 0; f < corners.size(); ++f) {
       if(!(areas[f] > 0))
         continue;
-      const Eigen::Matrix<double, 3, 2> J = jacobian(f, q) / s;
-      const double area2 = J.col(0).cross(J.col(1)).squaredNorm();
-      if(!(area2 > 0))
-        return std::numeric_limits<double>::infinity();
-      e += areas[f] * J.squaredNorm() * (1 + 1 / area2);
+      const double d = density(jacobian(f, q), s);
+      if(!(d < std::numeric_limits<double>::infinity()))
+        return d;
+      e += areas[f] * tempered(d, cap);
     }
     return e / total_area;
   }
+
+  // the energy density of face Jacobian J (infinite for a degenerate image)
+  static double density(const Eigen::Matrix<double, 3, 2>& J0, double s)
+  {
+    const Eigen::Matrix<double, 3, 2> J = J0 / s;
+    const double area2 = J.col(0).cross(J.col(1)).squaredNorm();
+    if(!(area2 > 0))
+      return std::numeric_limits<double>::infinity();
+    return J.squaredNorm() * (1 + 1 / area2);
+  }
+
+  // the density tempered above `cap`: itself below, cap (1 + log(d / cap)) above (C1)
+  static double tempered(double d, double cap) { return d <= cap ? d : cap * (1 + std::log(d / cap)); }
+
 };
 
 // The global step: with the rotations of the current images q frozen, the moves d (2 per
@@ -138,7 +151,8 @@ public:
   // false when the factorisation fails (then d is zero); the vertices of `held` are tied to
   // d = 0 by a stiff spring (the pattern stays the one analysed)
   bool solve(const std::vector<Eigen::Vector3d>& q, const std::vector<Eigen::Matrix<double, 3, 2> >& T, double s,
-             const std::vector<char>& held, std::vector<Eigen::Vector2d>& d, bool symmetric_dirichlet = true)
+             const std::vector<char>& held, std::vector<Eigen::Vector2d>& d, bool symmetric_dirichlet = true,
+             double cap = std::numeric_limits<double>::infinity())
   {
     symmetric_dirichlet_ = symmetric_dirichlet;
     if(H_.rows() == 0)
@@ -151,10 +165,15 @@ public:
       Face_block& b = blocks_[f];
       const auto& c = src_.corners[f];
       const auto& g = src_.gradients[f];
-      const double a = src_.areas[f];
+      double a = src_.areas[f];
       if(!(a > 0))
         return;
       const Eigen::Matrix<double, 3, 2> J = src_.jacobian(f, q);
+      if(symmetric_dirichlet) {
+        const double e = Arap_source::density(J, s);
+        if(e > cap)
+          a *= cap / e; // the tempered energy's gradient
+      }
       const Eigen::Matrix<double, 3, 2> r = Arap_source::rotation(J, s) - J;
       const Eigen::Matrix3d M = weights(J, s);
       for(int i = 0; i < 3; ++i) {
