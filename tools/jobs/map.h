@@ -273,7 +273,8 @@ inline void print_map_result(const Options& opt, const std::string& out, const E
   }
   if(refine > 0)
     std::cout << "refined: " << refinement.iterations << " certified iterations, symmetric Dirichlet energy " << refinement.energy_before
-              << " -> " << refinement.energy_after << " (4 for an isometry), " << refinement.seconds << " s; " << refinement.message << std::endl;
+              << " -> " << refinement.energy_after << " (4 for an isometry; tempered, as the iterations lower it: " << refinement.tempered_energy_before
+              << " -> " << refinement.tempered_energy_after << "), " << refinement.seconds << " s; " << refinement.message << std::endl;
   std::cout << "mapped " << num_vertices(A.mesh) << " vertices of " << opt.get("source") << " onto "
             << opt.get("target") << "; wrote " << out << std::endl;
   if(!summary.unreliable.empty())
