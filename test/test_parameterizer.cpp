@@ -2642,6 +2642,40 @@ TEST_CASE(flipped_face_at_the_resolution_of_double)
   std::cout << "  cow k=5: repaired " << r.st.repaired_vertices << ", polishing " << r.st.polishing_iterations << std::endl;
 }
 
+// Tutte's theorem holds for positive weights. With a negative clamp (weight_epsilon), the
+// cotangent weights of cow.off's obtuse angles stay negative and the embedding folds: asked
+// for explicitly, it is refused (ERROR_NO_1_TO_1_MAPPING); with the default weights the
+// function embeds again with the mean value weights (always positive), and the result is that
+// embedding bit for bit, certified by the independent certificate, and said in the statistics.
+TEST_CASE(default_weights_fall_back_to_mean_value_when_the_cotangent_embedding_folds)
+{
+  Mesh m;
+  CHECK(read_demo_mesh("cow", m));
+  const std::vector<vertex_descriptor> lm = farthest_point_landmarks(m, 7);
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  HOT::Embedding_statistics explicit_cotangent, fallback, mean_value;
+  const auto np = [](HOT::Embedding_statistics& st) {
+    return HOT::parameters::weight_epsilon(-1e300, HOT::parameters::landmark_order(HOT::Tsp_order, HOT::parameters::embedding_statistics(&st)));
+  };
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, uv, HOT::parameters::weight_type(HOT::Cotangent, np(explicit_cotangent))) ==
+        HOT::ERROR_NO_1_TO_1_MAPPING); // (otherwise nothing is tested)
+  CHECK(!explicit_cotangent.mean_value_fallback);
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, uv, np(fallback)) == HOT::OK);
+  CHECK(fallback.mean_value_fallback && fallback.fallback_reason == explicit_cotangent.message);
+  std::vector<Point_2> corners;
+  for(halfedge_descriptor h : halfedges(m)) corners.push_back(uv[h]);
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, uv, HOT::parameters::weight_type(HOT::Mean_value, np(mean_value))) == HOT::OK);
+  std::size_t same = 0, k = 0;
+  for(halfedge_descriptor h : halfedges(m)) same += uv[h] == corners[k++] ? 1 : 0;
+  CHECK_MSG(same == corners.size(), same << " of " << corners.size() << " corners equal");
+  CHECK(!mean_value.mean_value_fallback);
+  std::vector<vertex_descriptor> used;
+  for(std::size_t i : fallback.landmark_order) used.push_back(lm[i]);
+  HOT::Embedding_certificate c;
+  std::string why;
+  CHECK_MSG(HOT::certify_hyperbolic_orbifold_embedding(m, used, uv, c, &why) == HOT::OK && c.is_bijective(), why);
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 // The energy, gradient and Hessian are summed in a fixed order: one thread or many give the
 // same embedding bit for bit (bear: 41K edges, above the size where the sums run in parallel).

@@ -68,6 +68,8 @@ inline hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A,
   };
   m.seconds_source = seconds(A.stats);
   m.seconds_target = seconds(B.stats);
+  m.source_weights = A.stats.mean_value_fallback ? "mvc" : "cotan";
+  m.target_weights = B.stats.mean_value_fallback ? "mvc" : "cotan";
   m.source_input = addressing(A.in);
   m.target_input = addressing(B.in);
   const std::vector<SM_vertex> va(vertices(A.mesh).begin(), vertices(A.mesh).end());
@@ -264,6 +266,10 @@ inline void print_map_result(const Options& opt, const std::string& out, const E
   std::cout << " (" << order_origin(chosen);
   for(const std::string& r : refusals) std::cout << "; " << r;
   std::cout << ")" << std::endl;
+  for(const auto& w : {std::make_pair("source", &summary.source_weights), std::make_pair("target", &summary.target_weights)})
+    if(*w.second == "mvc")
+      std::cout << "weights: the " << w.first << "'s embedding with the cotangent weights failed the certificate; it is embedded with the"
+                << " mean value weights" << std::endl;
   if(summary.augmented) {
     std::cout << "augmented: " << summary.added.size() << " matched extremities added to the landmarks (of "
               << summary.source_extremities << " thin tips on the source, " << summary.target_extremities << " on the target)";

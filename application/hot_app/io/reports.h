@@ -238,6 +238,9 @@ struct Map_summary
   std::vector<std::size_t> landmark_order;
   std::string landmark_order_from;
   std::size_t orders_tried = 0;
+  // the weights of each mesh's embedding: "cotan", or "mvc" when the cotangent weights'
+  // embedding failed the certificate (Embedding_statistics::mean_value_fallback)
+  std::string source_weights = "cotan", target_weights = "cotan";
   // the source's vertices (file numbers, increasing) whose image lies on a face the target's
   // repair added to close a hole (Mesh_preparation::filled_faces): not a point of the target
   // file's surface
@@ -313,7 +316,8 @@ inline void write_map_report(std::ostream& os, const Map_summary& m)
   os.precision(17);
   os << "{\n  \"source\": \"" << json_escape(m.source_path) << "\",\n  \"target\": \"" << json_escape(m.target_path) << "\",\n"
      << "  \"source_vertices\": " << m.source_vertices << ",\n  \"target_vertices\": " << m.target_vertices << ",\n"
-     << "  \"orbifold\": \"" << (m.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"landmarks\": " << m.landmarks << ",\n";
+     << "  \"orbifold\": \"" << (m.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n  \"landmarks\": " << m.landmarks << ",\n"
+     << "  \"weights\": {\"source\": \"" << m.source_weights << "\", \"target\": \"" << m.target_weights << "\"},\n";
   if(m.orders_tried > 0) {
     os << "  \"landmark_order\": [";
     for(std::size_t i = 0; i < m.landmark_order.size(); ++i) os << (i ? ", " : "") << m.landmark_order[i];
@@ -386,7 +390,8 @@ inline std::string collection_mesh_entry(std::size_t i, const std::string& mesh_
   os << "{\"index\": " << i << ", \"mesh\": \"" << json_escape(mesh_path) << "\", \"vertices\": " << vertices
      << ", \"embedding_seconds\": " << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate
      << ", \"iterations\": " << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
-     << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false");
+     << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false")
+     << ", \"weights\": \"" << (st.mean_value_fallback ? "mvc" : "cotan") << "\"";
   if(input && input->repaired) {
     os << ",\n     \"repair\": ";
     write_repair_json(os, input->prep, "     ");

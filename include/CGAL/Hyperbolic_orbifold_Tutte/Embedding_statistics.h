@@ -83,6 +83,11 @@ struct Embedding_statistics : public Solver_statistics, public Embedding_layout
   /// CHOLMOD's own; otherwise each factors a matrix of its own)
   bool shared_factorization = false;
   int repaired_vertices = 0;          ///< vertices moved by the one-ring repair (paper, section 5)
+  /// `true` when the embedding is the mean value weights' one: `hyperbolic_orbifold_Tutte_embedding()`
+  /// without `weight_type` and `edge_weight_map` embeds with the cotangent weights, and again
+  /// with the mean value weights when that embedding fails the certificate
+  bool mean_value_fallback = false;
+  std::string fallback_reason;        ///< then, why the cotangent weights' embedding was refused (its message)
   /// \var time_setup
   /// seconds spent checking the input, cutting the mesh and setting up the problem
   /// \var time_initialization

@@ -81,6 +81,31 @@ void record_cut_graph(const TriangleMesh& tm,
   }
 }
 
+// Runs `solve(weights)` (an embedding with those weights, its statistics in `st`). Tutte's
+// theorem holds for any positive weights: with `fallback` (the default weights), an embedding
+// that fails the certificate is computed again with the mean value weights (positive, bounded
+// away from 0 on any triangle, unlike the clamped cotangent weights) and kept if certified,
+// `st` saying so; if that one fails too, the first failure is returned with both reasons.
+template <class Solve>
+Error_code solve_with_mean_value_fallback(const Solve& solve, Weight_type weights, bool fallback, Embedding_statistics& st)
+{
+  const Embedding_statistics before_solve = st;
+  Error_code ec = solve(weights);
+  if(!fallback || ec != ERROR_NO_1_TO_1_MAPPING)
+    return ec;
+  const Embedding_statistics failed = st;
+  st = before_solve;
+  if(solve(Mean_value) == OK) {
+    st.mean_value_fallback = true;
+    st.fallback_reason = failed.message;
+    return OK;
+  }
+  const std::string mean_value_failure = st.message;
+  st = failed;
+  st.message += " (with the mean value weights too: " + mean_value_failure + ")";
+  return ERROR_NO_1_TO_1_MAPPING;
+}
+
 } // namespace internal
 
 /*!
@@ -116,7 +141,9 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
   \cgalParamNBegin{orbifold_type} \cgalParamDescription{`Sphere_type` or `Disk_type`}
     \cgalParamDefault{`Sphere_type` for a closed mesh, `Disk_type` for a mesh with one boundary loop} \cgalParamNEnd
   \cgalParamNBegin{weight_type} \cgalParamDescription{`Cotangent`, `Mean_value` or `Uniform`}
-    \cgalParamDefault{`Cotangent`} \cgalParamNEnd
+    \cgalParamDefault{`Cotangent`; when neither this nor `edge_weight_map` is given and the cotangent
+    weights' embedding fails the certificate, the mean value weights' one if it passes
+    (`Embedding_statistics::mean_value_fallback`, `fallback_reason`)} \cgalParamNEnd
   \cgalParamNBegin{edge_weight_map} \cgalParamDescription{a readable property map from `edge_descriptor`
     to positive `double` weights, used instead of `weight_type`} \cgalParamDefault{unused} \cgalParamNEnd
   \cgalParamNBegin{weight_epsilon} \cgalParamDescription{lower clamp of cotangent weights}
@@ -241,28 +268,32 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   // 3. solve, certify and mend (the parameterizer runs the pipeline's solve stage)
   typedef Hyperbolic_orbifold_Tutte_parameterizer_3<Mesh> Parameterizer;
   typedef typename Parameterizer::Point_2 Point_2;
-  Parameterizer parameterizer(type, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
-                              choose_parameter(get_parameter(np, internal_np::weight_epsilon), 1e-6));
-  internal::set_solver_parameters(parameterizer, np);
-  parameterizer.set_cone_orders(ordered_orders);
-  parameterizer.set_progress(progress);
-  if(genus > 0) // the tile's corner 0: where the border runs along the cut graph's first edge
-    parameterizer.set_cut_graph_start(cut_paths[0][0], cut_paths[0][1]);
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
-    const auto wmap = get_parameter(np, internal_np::edge_weight_map);
-    parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });
-  }
   internal::Seam_vertex_points<Mesh, Point_2> canonical(tm);
   constexpr bool with_charts = !is_default_parameter<NamedParameters, internal_np::chart_map_t>::value;
   std::optional<internal::Seam_vertex_points<Mesh, Chart_point<Point_2> > > chart_points;
-  std::vector<std::size_t> order_used = st.landmark_order;
-  Error_code ec;
-  if constexpr(with_charts) {
+  if constexpr(with_charts)
     chart_points.emplace(tm);
-    ec = parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), chart_points->map(), &st);
-  }
-  else
-    ec = parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), &st);
+  const std::vector<std::size_t> order_used = st.landmark_order;
+  const auto solve = [&](Weight_type weights) {
+    Parameterizer parameterizer(type, weights, choose_parameter(get_parameter(np, internal_np::weight_epsilon), 1e-6));
+    internal::set_solver_parameters(parameterizer, np);
+    parameterizer.set_cone_orders(ordered_orders);
+    parameterizer.set_progress(progress);
+    if(genus > 0) // the tile's corner 0: where the border runs along the cut graph's first edge
+      parameterizer.set_cut_graph_start(cut_paths[0][0], cut_paths[0][1]);
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value) {
+      const auto wmap = get_parameter(np, internal_np::edge_weight_map);
+      parameterizer.set_edge_weights([wmap](const edge_descriptor& e) { return static_cast<double>(get(wmap, e)); });
+    }
+    if constexpr(with_charts)
+      return parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), chart_points->map(), &st);
+    else
+      return parameterizer.parameterize(mesh, bhd, ordered, canonical.map(), &st);
+  };
+  constexpr bool default_weights = is_default_parameter<NamedParameters, internal_np::weight_type_t>::value &&
+                                   is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value;
+  Error_code ec = internal::solve_with_mean_value_fallback(solve, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
+                                                           default_weights, st);
   st.landmark_order = order_used;
   st.time_setup += time_cut;
   if(genus > 0)
