@@ -262,9 +262,7 @@ inline void run_collection_refine_stage(const Collection_job& job, std::pair<std
     }
     if(i > 0) {
       const HOT::Map_refinement_statistics st = read_refine_part(job, i);
-      log << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << ": " << st.iterations
-          << " certified iterations, symmetric Dirichlet energy " << st.energy_before << " -> " << st.energy_after << " (tempered "
-          << st.tempered_energy_before << " -> " << st.tempered_energy_after << "; " << t << " s)" << std::endl;
+      log << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << ": " << hot_tools::refinement_line(st, t) << std::endl;
     }
     ++done;
   });
@@ -348,9 +346,7 @@ inline int run_collection_in_memory(const Collection_job& job)
       throw Failure{ec, "--refine: " + coll.message()};
     for(std::size_t i = 1; i < job.size(); ++i) {
       const HOT::Map_refinement_statistics st = coll.refinement_statistics(i);
-      std::cerr << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << ": " << st.iterations
-                << " certified iterations, symmetric Dirichlet energy " << st.energy_before << " -> " << st.energy_after << " (tempered "
-                << st.tempered_energy_before << " -> " << st.tempered_energy_after << "; " << st.seconds << " s)" << std::endl;
+      std::cerr << "  refined " << job.entries[i].first << " onto " << job.entries[0].first << ": " << hot_tools::refinement_line(st, st.seconds) << std::endl;
     }
   }
   const Collection_maps maps = map_collection(coll, job.all_pairs);

@@ -68,8 +68,8 @@ inline hot_tools::Map_summary map_summary(const Options& opt, const Embedded& A,
   };
   m.seconds_source = seconds(A.stats);
   m.seconds_target = seconds(B.stats);
-  m.source_weights = A.stats.mean_value_fallback ? "mvc" : "cotan";
-  m.target_weights = B.stats.mean_value_fallback ? "mvc" : "cotan";
+  m.source_weights = hot_tools::weights_name(A.stats);
+  m.target_weights = hot_tools::weights_name(B.stats);
   m.source_input = addressing(A.in);
   m.target_input = addressing(B.in);
   const std::vector<SM_vertex> va(vertices(A.mesh).begin(), vertices(A.mesh).end());

@@ -380,6 +380,19 @@ struct Collection_maps
   std::size_t triples = 0;
 };
 
+// the weights of an embedding computed with the default ones, as the reports name them: "cotan",
+// or "mvc" when the cotangent embedding failed the certificate (Embedding_statistics::mean_value_fallback)
+inline const char* weights_name(const HOT::Embedding_statistics& st) { return st.mean_value_fallback ? "mvc" : "cotan"; }
+
+// one line of what a refinement did (the collection's logs)
+inline std::string refinement_line(const HOT::Map_refinement_statistics& st, double seconds)
+{
+  std::ostringstream os;
+  os << st.iterations << " certified iterations, symmetric Dirichlet energy " << st.energy_before << " -> " << st.energy_after
+     << " (tempered " << st.tempered_energy_before << " -> " << st.tempered_energy_after << "; " << seconds << " s)";
+  return os.str();
+}
+
 // The entry of mesh i in the report of `collection`: its file, size, embedding time and verdict
 // (and what --repair did), as one JSON object (the collection's jobs write it for the merge).
 inline std::string collection_mesh_entry(std::size_t i, const std::string& mesh_path, std::size_t vertices,
@@ -391,7 +404,7 @@ inline std::string collection_mesh_entry(std::size_t i, const std::string& mesh_
      << ", \"embedding_seconds\": " << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate
      << ", \"iterations\": " << st.iterations << ", \"relative_gradient_norm\": " << st.relative_gradient_norm
      << ", \"bijective\": " << (st.certificate.is_bijective() ? "true" : "false")
-     << ", \"weights\": \"" << (st.mean_value_fallback ? "mvc" : "cotan") << "\"";
+     << ", \"weights\": \"" << weights_name(st) << "\"";
   if(input && input->repaired) {
     os << ",\n     \"repair\": ";
     write_repair_json(os, input->prep, "     ");
