@@ -452,6 +452,7 @@ aug = r1["augmentation"]
 added = aug["added"]
 assert r1["landmarks"] == 7 + len(added) and sorted(r1["landmark_order"]) == list(range(7 + len(added))), r1["landmark_order"]
 assert aug["source_extremities"] >= len(added) and aug["target_extremities"] >= len(added) and aug["seconds"] >= 0
+assert 0 <= aug["matched_along_map"] <= len(added), aug
 for t in tips:  # one pair on each tip's cap, on both meshes
     on_cap = [(a, b) for a, b in added if t - 64 <= a <= t]
     assert len(on_cap) == 1 and t - 64 <= on_cap[0][1] <= t, (t, added)

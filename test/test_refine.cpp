@@ -447,18 +447,29 @@ TEST_CASE(a_sphere_has_no_thin_tips)
   CHECK(xm.source_extremities == 0 && xm.target_extremities == 0 && xm.pairs.empty());
 }
 
-TEST_CASE(mirror_twins_are_not_guessed)
+TEST_CASE(mirror_twins_are_told_apart_by_the_map_alone)
 {
   // spikes at +y and -y, landmarks on the plane y = 0 (+z, -z, +x, -x): the reflection y -> -y
-  // maps the mesh and every landmark onto itself and swaps the spikes, so nothing intrinsic tells
-  // them apart: both are found, neither is matched (not even onto itself, on the mesh itself:
-  // its mirror twin's descriptor is as near)
+  // maps the mesh and every landmark onto itself and swaps the spikes, so no geodesic distance
+  // tells them apart: by descriptors alone (match_along_map(false)) both are found and neither is
+  // matched. The reflection reverses orientation, which an orbifold map never does: along the
+  // map onto a similar copy (turned, scaled, moved: vertex i is the truth) each spike is matched
+  // onto its own apex.
   const Mesh a = spiked_sphere(8, {Y, -Y});
+  const Mesh b = similar_copy(a);
   const std::vector<vertex_descriptor> lm = {toward(8, Z), toward(8, -Z), toward(8, X), toward(8, -X)};
   HOT::Extremity_matching<vertex_descriptor> xm;
-  CHECK(HOT::match_extremities(a, lm, a, lm, xm) == HOT::OK);
+  CHECK(HOT::match_extremities(a, lm, b, lm, xm, HOT::parameters::match_along_map(false)) == HOT::OK);
   CHECK(xm.source_extremities == 2 && xm.target_extremities == 2);
-  CHECK(xm.pairs.empty());
+  CHECK(xm.pairs.empty() && xm.matched_along_map == 0);
+  CHECK(HOT::match_extremities(a, lm, b, lm, xm) == HOT::OK);
+  CHECK_MSG(xm.pairs.size() == 2 && xm.matched_along_map == 2, std::to_string(xm.pairs.size()) + " pairs");
+  std::set<vertex_descriptor> apices = {toward(8, Y), toward(8, -Y)};
+  for(std::size_t i = 0; i < xm.pairs.size(); ++i) {
+    CHECK_MSG(xm.pairs[i].first == xm.pairs[i].second, "a pair off the truth");
+    CHECK(apices.erase(xm.pairs[i].first) == 1);
+    CHECK(xm.source_tipness[i] < 0.65 && xm.target_tipness[i] < 0.65 && xm.descriptor_difference[i] <= 0.1);
+  }
 }
 
 TEST_CASE(a_fork_whose_prongs_swap_is_not_matched_across)

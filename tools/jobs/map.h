@@ -163,6 +163,7 @@ inline void augment_landmarks(Embedded& A, Embedded& B, std::vector<int>& orders
     augment_landmarks(A.type, genus_of(A), genus_of(B), A.mesh, A.landmarks, B.mesh, B.landmarks, orders, "--augment");
   summary.augmented = true;
   summary.source_extremities = xm.source_extremities;
+  summary.matched_along_map = xm.matched_along_map;
   summary.target_extremities = xm.target_extremities;
   summary.seconds_augment = xm.seconds;
   for(const std::pair<SM_vertex, SM_vertex>& p : xm.pairs)
@@ -272,7 +273,8 @@ inline void print_map_result(const Options& opt, const std::string& out, const E
                 << " mean value weights" << std::endl;
   if(summary.augmented) {
     std::cout << "augmented: " << summary.added.size() << " matched extremities added to the landmarks (of "
-              << summary.source_extremities << " thin tips on the source, " << summary.target_extremities << " on the target)";
+              << summary.source_extremities << " thin tips on the source, " << summary.target_extremities << " on the target; "
+              << summary.matched_along_map << " of the pairs matched along the map)";
     for(const std::pair<std::size_t, std::size_t>& p : summary.added)
       std::cout << "; " << p.first << " -> " << p.second;
     std::cout << std::endl;
@@ -346,6 +348,7 @@ inline int run_map(int argc, char** argv)
   summary.augmented = augmentation.augmented;
   summary.added = augmentation.added;
   summary.source_extremities = augmentation.source_extremities;
+  summary.matched_along_map = augmentation.matched_along_map;
   summary.target_extremities = augmentation.target_extremities;
   summary.seconds_augment = augmentation.seconds_augment;
   add_reliability_tests(summary, reliability);

@@ -255,7 +255,7 @@ struct Map_summary
   // thin tips found on each mesh and the time; not written when `augmented` is false
   bool augmented = false;
   std::vector<std::pair<std::size_t, std::size_t> > added;
-  std::size_t source_extremities = 0, target_extremities = 0;
+  std::size_t source_extremities = 0, target_extremities = 0, matched_along_map = 0;
   double seconds_augment = 0;
 };
 
@@ -266,7 +266,7 @@ inline void write_augmentation_json(std::ostream& os, const Map_summary& m)
   for(std::size_t i = 0; i < m.added.size(); ++i)
     os << (i ? ", " : "") << "[" << m.added[i].first << ", " << m.added[i].second << "]";
   os << "], \"source_extremities\": " << m.source_extremities << ", \"target_extremities\": " << m.target_extremities
-     << ", \"seconds\": " << m.seconds_augment << "},\n";
+     << ", \"matched_along_map\": " << m.matched_along_map << ", \"seconds\": " << m.seconds_augment << "},\n";
 }
 
 // map --refine's block of the report: the refinement's statistics and the distortion before it

@@ -7,10 +7,16 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/Embedding_locator.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/mesh_graph.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/maps/extremity_tips.h>
+
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Kernel_traits.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -46,6 +52,7 @@ struct Extremity_matching
   std::vector<double> descriptor_difference; ///< per pair: the relative difference of the two descriptors
   std::size_t source_extremities = 0;        ///< the thin tips found on the source (matched or not)
   std::size_t target_extremities = 0;        ///< the thin tips found on the target
+  std::size_t matched_along_map = 0;         ///< of the pairs, those matched along the map (the last ones)
   double seconds = 0;                        ///< the time taken
   std::string message;                       ///< on failure, why (one line)
 };
@@ -53,205 +60,112 @@ struct Extremity_matching
 namespace internal {
 namespace extremities {
 
-// a ratio test: the best candidate's descriptor difference is at most 1/kRatio of the second's,
-// and the second's is at least kRatio * kIndistinct (descriptors within 1% of each other cannot
-// tell two tips apart: edge path distances are off by more than that)
-constexpr double kRatio = 1.5;
-constexpr double kIndistinct = 0.01;
-// an extremity is at least this fraction of the largest distance to the landmarks away from them
-constexpr double kFarthest = 0.2;
-
-// one mesh's thin tips (dense vertex indices, farthest from the landmarks first), their
-// tipness and their descriptors (geodesic distances to the landmarks over sqrt(area)); after
-// the `tips` tips, the rivals: the mesh's other distinct maxima (see distinct_maxima()), with
-// their descriptors (tipness 0), which a tip of the other mesh must not be nearer to
-struct Tips
+// One mesh of the matching along the map: its graph, landmarks (dense indices), field, tips,
+// the vertices already matched, its embedding and locator.
+template <class TriangleMesh>
+struct Side
 {
-  std::size_t tips = 0;
-  std::vector<int> vertex;
-  std::vector<double> tipness;
-  std::vector<std::vector<double> > descriptor;
+  typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type Vertex_point_map;
+  typedef typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel::Point_2 Point_2;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<Point_2> >::const_type UV_map;
+  typedef Embedding_locator<TriangleMesh, UV_map> Locator;
+
+  const TriangleMesh* mesh = nullptr;
+  const Mesh_graph<TriangleMesh>* g = nullptr;
+  std::vector<int> landmarks;
+  Distance_field field;
+  Tips tips;
+  std::vector<char> used; // per vertex: in a pair
+  UV_map uv;
+  Locator locator;
+
+  // the vertex nearest to the image of vertex v of `from` (the corner with the largest barycentric
+  // coordinate of the face where one of v's corners lands), -1 if it is not located
+  int image(const Side& from, int v) const
+  {
+    const TriangleMesh& tm = *from.mesh;
+    for(auto h : halfedges_around_target(halfedge(from.g->verts[v], tm), tm)) {
+      if(is_border(h, tm)) continue;
+      const typename Locator::Location loc = locator.locate(get(from.uv, h));
+      if(!loc.success) return -1;
+      int best = 0, i = 0, corner = -1;
+      for(auto w : vertices_around_face(halfedge(loc.face, *mesh), *mesh)) {
+        if(loc.barycentric[i] >= loc.barycentric[best]) { best = i; corner = static_cast<int>(g->index(w)); }
+        ++i;
+      }
+      return corner;
+    }
+    return -1;
+  }
 };
 
-// The distinct maxima of `f` (a vertex function; `candidate[v]`: v is a local maximum worth
-// looking at) and, for every vertex, the distinct maximum whose feature holds it. Superlevel
-// sets {f >= t} are swept down (union-find over the vertices in decreasing f): where two
-// components meet, the one with the lower top dies, and its top's persistence is how far f
-// dropped from it, f(top) - t. A maximum whose persistence is below `noise` is not a feature
-// of its own: its feature is the one it merged into. The highest maximum never dies.
-template <class Graph>
-std::vector<int> distinct_maxima(const Graph& g, const std::vector<double>& f, const std::vector<char>& candidate,
-                                 double noise, std::vector<int>& feature)
+// embeds both meshes with their landmarks (the source in the tour order, the target in the same
+// order) into the side's dynamic maps and builds their locators; false if either is refused
+template <class TriangleMesh>
+bool embed_sides(Side<TriangleMesh>& A, const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& la,
+                 Side<TriangleMesh>& B, const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& lb)
 {
-  const std::size_t n = g.size();
-  std::vector<int> order(n);
-  for(std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
-  const auto higher = [&](int a, int b) { return f[a] > f[b] || (f[a] == f[b] && a < b); };
-  std::sort(order.begin(), order.end(), higher);
-  // (owner: the top of the component that a vertex joined when it was swept, or that a maximum
-  // merged into when it died with a persistence below `noise`; -1 for the distinct maxima)
-  std::vector<int> parent(n, -1), top(n, -1), owner(n, -1);
-  const auto find = [&](int x) {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for(int u : order) {
-    parent[u] = top[u] = u;
-    for(std::size_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
-      const int v = g.nbrs[e];
-      if(parent[v] < 0) continue; // (not swept yet)
-      const int a = find(u), b = find(v);
-      if(a == b) continue;
-      const bool a_higher = higher(top[a], top[b]);
-      const int survivor = a_higher ? top[a] : top[b], dead = a_higher ? top[b] : top[a];
-      if(f[dead] - f[u] < noise) owner[dead] = survivor;
-      parent[a_higher ? b : a] = a_higher ? a : b;
-    }
+  typedef typename Side<TriangleMesh>::Point_2 Point_2;
+  A.uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), *A.mesh);
+  B.uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), *B.mesh);
+  Embedding_statistics sa, sb;
+  // (cones of order 2, or of order 4 below the 5 landmarks that order 2 needs on a sphere)
+  const std::vector<int> orders(la.size(), la.size() < 5 ? 4 : 2);
+  if(hyperbolic_orbifold_Tutte_embedding(*A.mesh, la, A.uv, parameters::embedding_statistics(&sa, parameters::landmark_order(Tsp_order, parameters::cone_orders(orders)))) != OK)
+    return false;
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> oa, ob;
+  for(std::size_t i : sa.landmark_order) {
+    oa.push_back(la[i]);
+    ob.push_back(lb[i]);
   }
-  feature.assign(n, -1);
-  std::vector<int> distinct;
-  for(int u : order) { // (an owner is higher: settled before)
-    if(owner[u] >= 0)
-      feature[u] = feature[owner[u]];
-    else {
-      feature[u] = u;
-      if(candidate[u]) distinct.push_back(u);
-    }
-  }
-  return distinct;
+  if(hyperbolic_orbifold_Tutte_embedding(*B.mesh, ob, B.uv, parameters::embedding_statistics(&sb, parameters::cone_orders(orders))) != OK ||
+     !sa.charts.empty() || !sb.charts.empty())
+    return false;
+  A.locator = typename Side<TriangleMesh>::Locator(*A.mesh, A.uv, sa.signature());
+  B.locator = typename Side<TriangleMesh>::Locator(*B.mesh, B.uv, sb.signature());
+  return A.locator.is_valid() && B.locator.is_valid();
 }
 
-template <class Graph, class TriangleMesh>
-std::vector<double> vertex_areas(const Graph& g, const TriangleMesh& tm, double& total)
+// The matching along the map, from the tips of `from` left unmatched to `to`: the thin maximum
+// m of `to`'s distance nearest to the tip's image (nearest_thin_maximum(), within the ball
+// radius r) is matched to the tip if its descriptor is within `tolerance` of the tip's and no
+// tip or rival of `to` farther than r / 4 from m is nearer to it by more than kIndistinct (the
+// descriptors would clearly prefer another feature: the map is wrong there), no pair holds a vertex
+// within r / 2 of m, and the way back (m's image, then the nearest thin maximum of `from`)
+// ends within r / 4 of the tip. Calls `add(tip, m, tipness of m, descriptor difference)` for
+// each such pair (which marks both vertices used and paired).
+template <class TriangleMesh, class Add>
+void match_from(const Side<TriangleMesh>& from, const Side<TriangleMesh>& to, const std::vector<int>& paired_to,
+                double threshold, double tolerance, const Add& add)
 {
-  std::vector<double> area(g.size(), 0.);
-  total = 0;
-  for(auto f : faces(tm)) {
-    int c[3], n = 0;
-    for(auto v : vertices_around_face(halfedge(f, tm), tm))
-      if(n < 3) c[n++] = static_cast<int>(g.index(v));
-    if(n < 3) continue;
-    const double* p = &g.xyz[3 * c[0]];
-    const double* q = &g.xyz[3 * c[1]];
-    const double* r = &g.xyz[3 * c[2]];
-    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
-    const double a = 0.5 * std::sqrt(x * x + y * y + z * z);
-    total += a;
-    for(int i = 0; i < 3; ++i) area[c[i]] += a / 3;
-  }
-  return area;
-}
-
-// the vertices within geodesic (edge path) distance `r` of `s`
-template <class Graph>
-std::vector<int> geodesic_ball(const Graph& g, Dijkstra_workspace& ws, int s, double r)
-{
-  std::vector<int> ball;
-  bool beyond = false;
-  ws.begin_run();
-  dijkstra(g, ws, s, [&](int u) { if(ws.distance(u) <= r) ball.push_back(u); else beyond = true; },
-           [&]() { return beyond; });
-  return ball;
-}
-
-// The thin tips of a mesh: the local maxima of the geodesic distance to the landmarks (at least
-// kFarthest of its largest value), each the largest within its geodesic ball of radius
-// `radius` times that largest value, whose ball has an area under `threshold` times the flat
-// disk's pi r^2 (a cone of half-angle alpha gives sin(alpha); a flat or convex region about 1).
-template <class Graph, class TriangleMesh>
-Tips thin_tips(const Graph& g, const TriangleMesh& tm, const std::vector<int>& landmarks, double radius, double threshold)
-{
-  Tips tips;
-  const std::size_t n = g.size();
-  double total_area = 0;
-  const std::vector<double> area = vertex_areas(g, tm, total_area);
-  Dijkstra_distances nearest(n); // to the nearest landmark
-  for(int l : landmarks)
-    dijkstra(g, nearest, l, [](int) {}, []() { return false; });
-  double dmax = 0;
-  for(double d : nearest.dist) dmax = (std::max)(dmax, d);
-  std::vector<std::pair<double, int> > candidates; // (-distance, vertex)
-  std::vector<char> is_candidate(n, 0);
-  for(std::size_t i = 0; i < n; ++i) {
-    const double d = nearest.dist[i];
-    bool top = d >= kFarthest * dmax;
-    for(std::size_t e = g.offsets[i]; top && e < g.offsets[i + 1]; ++e)
-      top = nearest.dist[g.nbrs[e]] <= d;
-    if(top) candidates.emplace_back(-d, static_cast<int>(i));
-    is_candidate[i] = top;
-  }
-  // the distinct maxima: edge path distances place a maximum only to about an edge, so a drop
-  // of less than the mean edge length between two maxima does not make them two features
-  double mean_edge = 0;
-  for(double l : g.lengths) mean_edge += l / g.lengths.size();
-  std::vector<int> feature;
-  const std::vector<int> distinct = distinct_maxima(g, nearest.dist, is_candidate, mean_edge, feature);
-  std::sort(candidates.begin(), candidates.end());
   Dijkstra_workspace ws;
-  ws.init(n);
-  std::vector<char> covered(n, 0);
-  const double r = radius * dmax;
-  for(const std::pair<double, int>& c : candidates) {
-    if(covered[c.second]) continue;
-    double a = 0;
-    for(int u : geodesic_ball(g, ws, c.second, r)) {
-      covered[u] = 1;
-      a += area[u];
-    }
-    const double tipness = a / (CGAL_PI * r * r);
-    if(tipness < threshold) {
-      tips.vertex.push_back(c.second);
-      tips.tipness.push_back(tipness);
-    }
+  ws.init((std::max)(from.g->size(), to.g->size()));
+  const auto within = [&](const Mesh_graph<TriangleMesh>& g, int s, double r, const std::vector<int>& targets) {
+    const std::vector<int> ball = geodesic_ball(g, ws, s, r);
+    for(int t : targets)
+      if(std::find(ball.begin(), ball.end(), t) != ball.end()) return true;
+    return false;
+  };
+  for(std::size_t t = 0; t < from.tips.tips; ++t) {
+    const int a = from.tips.vertex[t];
+    if(from.used[a]) continue;
+    const int v = to.image(from, a);
+    double tipness = 0, back_tipness = 0;
+    const int m = v < 0 ? -1 : nearest_thin_maximum(*to.g, to.field, v, threshold, tipness);
+    if(m < 0 || within(*to.g, m, 0.5 * to.field.r, paired_to)) continue;
+    const int w = from.image(to, m);
+    const int back = w < 0 ? -1 : nearest_thin_maximum(*from.g, from.field, w, threshold, back_tipness);
+    if(back < 0 || !within(*from.g, back, 0.25 * from.field.r, {a})) continue;
+    const std::vector<double>& x = from.tips.descriptor[t];
+    const double d = descriptor_difference(x, descriptor_at(*to.g, ws, to.field, to.landmarks, m));
+    bool nearest = d <= tolerance;
+    const std::vector<int> same = geodesic_ball(*to.g, ws, m, 0.25 * to.field.r);
+    for(std::size_t k = 0; nearest && k < to.tips.vertex.size(); ++k)
+      nearest = descriptor_difference(x, to.tips.descriptor[k]) >= d - kIndistinct ||
+                std::find(same.begin(), same.end(), to.tips.vertex[k]) != same.end();
+    if(nearest)
+      add(t, m, tipness, d);
   }
-  // the rivals: the distinct maxima that are no tip's feature
-  tips.tips = tips.vertex.size();
-  std::vector<char> is_tip(n, 0);
-  for(int t : tips.vertex) is_tip[feature[t]] = 1;
-  for(int m : distinct)
-    if(!is_tip[m]) {
-      tips.vertex.push_back(m);
-      tips.tipness.push_back(0.);
-    }
-  // the descriptors: one search per landmark, stopped once every tip and rival is settled
-  tips.descriptor.assign(tips.vertex.size(), std::vector<double>(landmarks.size()));
-  std::fill(is_tip.begin(), is_tip.end(), 0);
-  for(int t : tips.vertex) is_tip[t] = 1;
-  const double scale = 1 / std::sqrt(total_area);
-  for(std::size_t j = 0; j < landmarks.size() && !tips.vertex.empty(); ++j) {
-    std::size_t settled = 0;
-    ws.begin_run();
-    dijkstra(g, ws, landmarks[j], [&](int u) { settled += is_tip[u]; }, [&]() { return settled == tips.vertex.size(); });
-    for(std::size_t t = 0; t < tips.vertex.size(); ++t)
-      tips.descriptor[t][j] = ws.distance(tips.vertex[t]) * scale;
-  }
-  return tips;
-}
-
-// the relative difference of two descriptors, sqrt(2 |x - y|^2 / (|x|^2 + |y|^2))
-inline double descriptor_difference(const std::vector<double>& x, const std::vector<double>& y)
-{
-  double num = 0, den = 0;
-  for(std::size_t j = 0; j < x.size(); ++j) {
-    num += (x[j] - y[j]) * (x[j] - y[j]);
-    den += x[j] * x[j] + y[j] * y[j];
-  }
-  return den > 0 ? std::sqrt(2 * num / den) : 0.;
-}
-
-// the tip of `to` whose descriptor is the nearest to `x`: its position, and the differences of
-// the nearest and the second nearest
-inline std::size_t nearest_tip(const Tips& to, const std::vector<double>& x, double& first, double& second)
-{
-  std::size_t best = 0;
-  first = second = std::numeric_limits<double>::infinity();
-  for(std::size_t t = 0; t < to.vertex.size(); ++t) {
-    const double d = descriptor_difference(to.descriptor[t], x);
-    if(d < first) { second = first; first = d; best = t; }
-    else if(d < second) second = d;
-  }
-  return best;
 }
 
 } // namespace extremities
@@ -283,8 +197,19 @@ drops from it by at least the mean edge length before its region meets a higher 
 that are no tip's own; a tip nearest to a rival is not matched. So a tip whose ball hides a
 second feature almost as far (a claw beside a claw), which a deformation can make the
 farthest on the other mesh, is left out rather than matched onto the wrong one.
-The descriptors tell left from right as far as the landmarks do: mirror twins that the
-landmarks do not tell apart are left out, not guessed. A maximum on a ridge around a limb
+The descriptors tell left from right only as far as the landmarks do: mirror twins that the
+landmarks tell apart weakly or not at all are left out by these tests.
+
+The orbifold map tells them apart: it never reverses orientation. So, unless
+`match_along_map` is `false`, the tips still unmatched on either mesh are then matched
+*along the map*: both meshes are embedded with the landmarks and the pairs found (cones of order
+2, or 4 below 5 landmarks; the source in its tour order), and a tip is matched to the thin
+maximum m of the other mesh's distance nearest to the tip's image (a local maximum, at least 0.2
+\f$d_{max}\f$, whose ball's area is below the threshold; within geodesic distance \f$r\f$ of the
+image), when their descriptors differ by at most the tolerance, no pair already holds a vertex
+within \f$r/2\f$ of m, and the way back (m's image, then the nearest thin maximum there) ends
+within \f$r/4\f$ of the tip. The maxima that the balls of other tips hid (an ear beside an ear)
+are found this way too. If either embedding is refused, nothing is matched along the map. A maximum on a ridge around a limb
 whose both ends hold landmarks can pass the area test too; it is matched by its descriptor
 like a tip, which places it around the limb less precisely.
 
@@ -301,13 +226,16 @@ like a tip, which places it around the limb less precisely.
   - `tip_threshold` (`double`, default 0.65): \f$\tau\f$, in (0, 1]
   - `descriptor_tolerance` (`double`, default 0.1): the largest relative difference of the
     descriptors of a matched pair, in (0, 1]
+  - `match_along_map` (`bool`, default `true`): whether the tips left unmatched are matched
+    along the map
 
 \return `OK` (possibly with no pair), or the failure of `check_mesh()` (sphere type) or
 `check_landmark_vertices()` on either mesh, `ERROR_WRONG_PARAMETER` for landmark lists of
 different sizes or a parameter out of its range; `result.message` says why.
 
 Time: \f$O((k + m)\, n \log n)\f$ for \f$k\f$ landmarks and \f$m\f$ local maxima examined, in
-practice a few full searches per landmark (0.01 to 0.03 s for 7 or 21 landmarks on 4,344 vertices).
+practice a few full searches per landmark (0.01 to 0.03 s for 7 or 21 landmarks on 4,344
+vertices), and, when tips are left unmatched, the embeddings of both meshes (0.2 to 0.3 s there).
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code match_extremities(const TriangleMesh& A,
@@ -335,38 +263,72 @@ Error_code match_extremities(const TriangleMesh& A,
   if(landmarks_A.size() != landmarks_B.size())
     return fail(Status::failure(ERROR_WRONG_PARAMETER, std::to_string(landmarks_A.size()) + " landmarks on the source and " +
                                                          std::to_string(landmarks_B.size()) + " on the target"), "");
+  const bool along_map = choose_parameter(get_parameter(np, internal_np::match_along_map), true);
   const TriangleMesh* mesh[2] = {&A, &B};
   const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>* lm[2] = {&landmarks_A, &landmarks_B};
-  X::Tips tips[2];
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> verts[2];
   for(int m = 0; m < 2; ++m) {
-    const char* which = m == 0 ? "the source: " : "the target: ";
     Status s = check_mesh(*mesh[m], Sphere_type);
     if(s)
       s = check_landmark_vertices(*mesh[m], *lm[m], Sphere_type, 3);
     if(!s)
-      return fail(s, which);
-    const internal::Mesh_graph<TriangleMesh> g(*mesh[m], get(CGAL::vertex_point, *mesh[m]));
-    std::vector<int> ids;
-    internal::landmark_indices(g, *lm[m], ids); // (checked above)
-    tips[m] = X::thin_tips(g, *mesh[m], ids, radius, threshold);
-    verts[m] = g.verts;
+      return fail(s, m == 0 ? "the source: " : "the target: ");
   }
-  result.source_extremities = tips[0].tips;
-  result.target_extremities = tips[1].tips;
-  std::vector<char> taken(tips[1].vertex.size(), 0);
-  for(std::size_t a = 0; a < tips[0].tips && tips[1].tips > 0; ++a) {
+  const internal::Mesh_graph<TriangleMesh> gA(A, get(CGAL::vertex_point, A)), gB(B, get(CGAL::vertex_point, B));
+  X::Side<TriangleMesh> side[2];
+  const internal::Mesh_graph<TriangleMesh>* graph[2] = {&gA, &gB};
+  for(int m = 0; m < 2; ++m) {
+    X::Side<TriangleMesh>& S = side[m];
+    S.mesh = mesh[m];
+    S.g = graph[m];
+    internal::landmark_indices(*S.g, *lm[m], S.landmarks); // (checked above)
+    S.tips = X::thin_tips(*S.g, *S.mesh, S.landmarks, radius, threshold, S.field);
+    S.used.assign(S.g->size(), 0);
+  }
+  const X::Tips* tips[2] = {&side[0].tips, &side[1].tips};
+  result.source_extremities = tips[0]->tips;
+  result.target_extremities = tips[1]->tips;
+  std::vector<int> paired[2];
+  const auto add = [&](int a, int b, double ta, double tb, double d) {
+    side[0].used[a] = side[1].used[b] = 1;
+    paired[0].push_back(a);
+    paired[1].push_back(b);
+    result.pairs.emplace_back(gA.verts[a], gB.verts[b]);
+    result.source_tipness.push_back(ta);
+    result.target_tipness.push_back(tb);
+    result.descriptor_difference.push_back(d);
+  };
+  std::vector<char> taken(tips[1]->vertex.size(), 0);
+  for(std::size_t a = 0; a < tips[0]->tips && tips[1]->tips > 0; ++a) {
     double d1, d2, e1, e2;
-    const std::size_t b = X::nearest_tip(tips[1], tips[0].descriptor[a], d1, d2);
-    if(b >= tips[1].tips || d1 > tolerance || d2 < X::kRatio * (std::max)(d1, X::kIndistinct) || taken[b])
+    const std::size_t b = X::nearest_tip(*tips[1], tips[0]->descriptor[a], d1, d2);
+    if(b >= tips[1]->tips || d1 > tolerance || d2 < X::kRatio * (std::max)(d1, X::kIndistinct) || taken[b])
       continue; // (nearest to a rival: not a tip of the other mesh)
-    if(X::nearest_tip(tips[0], tips[1].descriptor[b], e1, e2) != a || e2 < X::kRatio * (std::max)(e1, X::kIndistinct))
+    if(X::nearest_tip(*tips[0], tips[1]->descriptor[b], e1, e2) != a || e2 < X::kRatio * (std::max)(e1, X::kIndistinct))
       continue;
     taken[b] = 1;
-    result.pairs.emplace_back(verts[0][tips[0].vertex[a]], verts[1][tips[1].vertex[b]]);
-    result.source_tipness.push_back(tips[0].tipness[a]);
-    result.target_tipness.push_back(tips[1].tipness[b]);
-    result.descriptor_difference.push_back(d1);
+    add(tips[0]->vertex[a], tips[1]->vertex[b], tips[0]->tipness[a], tips[1]->tipness[b], d1);
+  }
+  // the tips left unmatched, along the map computed with the landmarks and the pairs found
+  bool left[2] = {false, false};
+  for(int m = 0; m < 2; ++m)
+    for(std::size_t t = 0; t < tips[m]->tips; ++t)
+      left[m] = left[m] || !side[m].used[tips[m]->vertex[t]];
+  if(along_map && (left[0] || left[1])) {
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> la = landmarks_A, lb = landmarks_B;
+    for(const auto& p : result.pairs) {
+      la.push_back(p.first);
+      lb.push_back(p.second);
+    }
+    const std::size_t before = result.pairs.size();
+    if(X::embed_sides(side[0], la, side[1], lb)) {
+      X::match_from(side[0], side[1], paired[1], threshold, tolerance, [&](std::size_t t, int b, double tb, double d) {
+        add(tips[0]->vertex[t], b, tips[0]->tipness[t], tb, d);
+      });
+      X::match_from(side[1], side[0], paired[0], threshold, tolerance, [&](std::size_t t, int a, double ta, double d) {
+        add(a, tips[1]->vertex[t], ta, tips[1]->tipness[t], d);
+      });
+    }
+    result.matched_along_map = result.pairs.size() - before;
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return OK;

@@ -54,6 +54,7 @@ enum progress_t { progress };
 enum extremity_radius_t { extremity_radius };
 enum tip_threshold_t { tip_threshold };
 enum descriptor_tolerance_t { descriptor_tolerance };
+enum match_along_map_t { match_along_map };
 } // namespace internal_np
 
 namespace parameters {
@@ -165,6 +166,9 @@ CGAL_HOT_NAMED_PARAMETER(tip_threshold)
 /// `double`: for `match_extremities()`, the largest relative difference of the descriptors of
 /// a matched pair (default 0.1)
 CGAL_HOT_NAMED_PARAMETER(descriptor_tolerance)
+/// `bool`: for `match_extremities()`, whether the tips that the descriptors leave unmatched are
+/// matched along the orbifold map computed with the landmarks and the pairs found (default `true`)
+CGAL_HOT_NAMED_PARAMETER(match_along_map)
 
 #undef CGAL_HOT_NAMED_PARAMETER
 
