@@ -206,7 +206,9 @@ The orbifold map tells them apart: it never reverses orientation. So, unless
 2, or 4 below 5 landmarks; the source in its tour order), and a tip is matched to the thin
 maximum m of the other mesh's distance nearest to the tip's image (a local maximum, at least 0.2
 \f$d_{max}\f$, whose ball's area is below the threshold; within geodesic distance \f$r\f$ of the
-image), when their descriptors differ by at most the tolerance, no pair already holds a vertex
+image), when their descriptors differ by at most the tolerance and no other tip or rival of
+that mesh has a descriptor nearer by more than 0.01 (near a protrusion without a landmark the
+map can be wrong: a horn's image beside the ear), no pair already holds a vertex
 within \f$r/2\f$ of m, and the way back (m's image, then the nearest thin maximum there) ends
 within \f$r/4\f$ of the tip. The maxima that the balls of other tips hid (an ear beside an ear)
 are found this way too. If either embedding is refused, nothing is matched along the map. A maximum on a ridge around a limb
