@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_orbifold_Tutte/check_input.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/error_code.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/hyperbolic_orbifold_Tutte_embedding.h>
+#include <CGAL/Hyperbolic_orbifold_Tutte/map_reliability.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/parameters.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/core/mesh_graph.h>
 #include <CGAL/Hyperbolic_orbifold_Tutte/internal/maps/extremity_tips.h>
@@ -79,22 +80,16 @@ struct Side
   UV_map uv;
   Locator locator;
 
-  // the vertex nearest to the image of vertex v of `from` (the corner with the largest barycentric
-  // coordinate of the face where one of v's corners lands), -1 if it is not located
+  // the vertex nearest to the image of vertex v of `from` (landing_vertex(): the corner with the
+  // largest barycentric coordinate of the face where one of v's corners lands), -1 if it is not located
   int image(const Side& from, int v) const
   {
     const TriangleMesh& tm = *from.mesh;
-    for(auto h : halfedges_around_target(halfedge(from.g->verts[v], tm), tm)) {
-      if(is_border(h, tm)) continue;
-      const typename Locator::Location loc = locator.locate(get(from.uv, h));
-      if(!loc.success) return -1;
-      int best = 0, i = 0, corner = -1;
-      for(auto w : vertices_around_face(halfedge(loc.face, *mesh), *mesh)) {
-        if(loc.barycentric[i] >= loc.barycentric[best]) { best = i; corner = static_cast<int>(g->index(w)); }
-        ++i;
+    for(auto h : halfedges_around_target(halfedge(from.g->verts[v], tm), tm))
+      if(!is_border(h, tm)) {
+        const typename Locator::Location loc = locator.locate(get(from.uv, h));
+        return loc.success ? static_cast<int>(landing_vertex(locator, loc)) : -1;
       }
-      return corner;
-    }
     return -1;
   }
 };
