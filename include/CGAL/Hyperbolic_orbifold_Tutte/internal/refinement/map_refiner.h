@@ -194,6 +194,13 @@ public:
   // is then a descent direction of the energy), and the last two rounds with the ARAP proxy,
   // whose weights do not blow up on nearly degenerate images. False when it stops (the last
   // certified iterate kept, stats.stop set).
+  //
+  // The vertices a step had to hold are held from the start of the next iterations (a pass that
+  // fails is solved again free): on a squeezed protrusion the same few vertices are undone at
+  // every iteration, and solving each step twice, the free one failing at every halving, made
+  // most of the refinement's time (SHREC'07 hands: 0.35 s an iteration against 0.04 s held).
+  // Every `free_period_` iterations a step is tried free again; the period doubles each time
+  // that one still needs vertices held.
   bool iterate()
   {
     // the tangent bases at the images: the previous one projected onto the plane of the
@@ -205,44 +212,57 @@ public:
     const std::vector<C> old = corners_, old_located = located_;
     const std::vector<Location> old_locs = locs_;
     const std::vector<Eigen::Vector3d> old_q = q_;
-    std::vector<char> held(vidx_.size(), 0);
-    bool accepted = false, certificate_failed = false, solved = true;
+    const bool carried = !carried_.empty() && stats_.iterations < next_free_;
+    const bool free_try = !carried_.empty() && !carried; // (a scheduled one)
+    std::vector<char> held = carried ? carried_ : std::vector<char>(vidx_.size(), 0), solve_held;
+    bool accepted = false, certificate_failed = false, solved = true, needed_held = false;
     double e = tempered_;
     std::size_t undone = 0;
-    for(int round = 0; round < 4 && !accepted; ++round) {
-      std::vector<Eigen::Vector2d> d;
-      if(!step_->solve(q_, T_, s_, held, d, round < 2, cap_)) {
-        solved = false; // (a round with the ARAP proxy may still solve)
-        continue;
-      }
-      solved = true;
-      std::vector<C> from(vidx_.size()), to(vidx_.size());
-      std::vector<double> alpha(vidx_.size(), 0.0);
-      for(std::size_t i = 0; i < vidx_.size(); ++i)
-        if(!fixed_[i] && !held[i]) {
-          from[i] = corners_[hidx_(moves_->primary(i))];
-          alpha[i] = refinement_move(locs_[i], locB_, get(vertex_point, B_), q_[i], T_[i] * d[i], to[i]) ? 1.0 : 0.0;
-        }
-      std::vector<char> undone_flag(vidx_.size(), 0);
-      for(int attempt = 0; attempt < 8 && !accepted; ++attempt) {
+    for(int pass = carried ? 0 : 1; pass < 2 && !accepted; ++pass) {
+      if(pass == 1 && carried) { // the held pass failed: the same iteration, free
+        std::fill(held.begin(), held.end(), 0);
         corners_ = old;
-        std::vector<double> a = alpha;
-        for(double& x : a)
-          x = std::ldexp(x, -attempt);
-        undone = moves_->move(from, to, a, old, corners_, sign_, undone_flag);
-        e = locate() ? src_.symmetric_dirichlet(q_, s_, cap_) : std::numeric_limits<double>::infinity();
-        if(!(e < tempered_))
-          continue;
-        std::string why;
-        if(certified(why) == OK)
-          accepted = true;
-        else {
-          certificate_failed = true;
-          stats_.message = why;
-        }
+        locs_ = old_locs;
+        located_ = old_located;
+        q_ = old_q;
       }
-      for(std::size_t i = 0; i < held.size(); ++i)
-        held[i] = held[i] || undone_flag[i];
+      for(int round = 0; round < 4 && !accepted; ++round) {
+        std::vector<Eigen::Vector2d> d;
+        solve_held = held;
+        needed_held = pass == 0 || round > 0;
+        if(!step_->solve(q_, T_, s_, held, d, round < 2, cap_)) {
+          solved = false; // (a round with the ARAP proxy may still solve)
+          continue;
+        }
+        solved = true;
+        std::vector<C> from(vidx_.size()), to(vidx_.size());
+        std::vector<double> alpha(vidx_.size(), 0.0);
+        for(std::size_t i = 0; i < vidx_.size(); ++i)
+          if(!fixed_[i] && !held[i]) {
+            from[i] = corners_[hidx_(moves_->primary(i))];
+            alpha[i] = refinement_move(locs_[i], locB_, get(vertex_point, B_), q_[i], T_[i] * d[i], to[i]) ? 1.0 : 0.0;
+          }
+        std::vector<char> undone_flag(vidx_.size(), 0);
+        for(int attempt = 0; attempt < 8 && !accepted; ++attempt) {
+          corners_ = old;
+          std::vector<double> a = alpha;
+          for(double& x : a)
+            x = std::ldexp(x, -attempt);
+          undone = moves_->move(from, to, a, old, corners_, sign_, undone_flag);
+          e = locate() ? src_.symmetric_dirichlet(q_, s_, cap_) : std::numeric_limits<double>::infinity();
+          if(!(e < tempered_))
+            continue;
+          std::string why;
+          if(certified(why) == OK)
+            accepted = true;
+          else {
+            certificate_failed = true;
+            stats_.message = why;
+          }
+        }
+        for(std::size_t i = 0; i < held.size(); ++i)
+          held[i] = held[i] || undone_flag[i];
+      }
     }
     if(!accepted) {
       corners_ = old;
@@ -256,6 +276,16 @@ public:
     // 1e-6 (one is not enough: a nearly degenerate image can make the first steps small
     // against a huge energy, and the later ones large)
     small_steps_ = e > tempered_ * (1 - 1e-6) ? small_steps_ + 1 : 0;
+    if(!needed_held)
+      carried_.clear();
+    else {
+      carried_ = solve_held;
+      if(!carried) { // a free step needed vertices held: held until the next free try
+        if(free_try)
+          free_period_ *= 2;
+        next_free_ = stats_.iterations + 1 + free_period_;
+      }
+    }
     tempered_ = stats_.tempered_energy_after = e;
     stats_.energy_after = src_.symmetric_dirichlet(q_, s_);
     stats_.undone_moves = undone;
@@ -355,6 +385,9 @@ private:
   static constexpr double cap_ = 100;
   double tempered_ = 0; // the tempered energy of the current iterate
   int small_steps_ = 0; // iterations in a row that lowered the energy by less than a relative 1e-6
+  std::vector<char> carried_; // the vertices the last step held, when it needed them (else empty)
+  int next_free_ = 0;         // the iteration of the next free try
+  int free_period_ = 8;
 };
 
 } // namespace internal
