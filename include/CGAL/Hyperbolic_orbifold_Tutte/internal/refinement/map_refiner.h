@@ -212,6 +212,12 @@ public:
     const std::vector<C> old = corners_, old_located = located_;
     const std::vector<Location> old_locs = locs_;
     const std::vector<Eigen::Vector3d> old_q = q_;
+    const auto restore = [&]() {
+      corners_ = old;
+      locs_ = old_locs;
+      located_ = old_located;
+      q_ = old_q;
+    };
     const bool carried = !carried_.empty() && stats_.iterations < next_free_;
     const bool free_try = !carried_.empty() && !carried; // (a scheduled one)
     std::vector<char> held = carried ? carried_ : std::vector<char>(vidx_.size(), 0), solve_held;
@@ -221,10 +227,7 @@ public:
     for(int pass = carried ? 0 : 1; pass < 2 && !accepted; ++pass) {
       if(pass == 1 && carried) { // the held pass failed: the same iteration, free
         std::fill(held.begin(), held.end(), 0);
-        corners_ = old;
-        locs_ = old_locs;
-        located_ = old_located;
-        q_ = old_q;
+        restore();
       }
       for(int round = 0; round < 4 && !accepted; ++round) {
         std::vector<Eigen::Vector2d> d;
@@ -265,10 +268,7 @@ public:
       }
     }
     if(!accepted) {
-      corners_ = old;
-      locs_ = old_locs;
-      located_ = old_located;
-      q_ = old_q;
+      restore();
       stats_.stop = !solved ? Refinement_solver : certificate_failed ? Refinement_certificate : Refinement_converged;
       return false;
     }
