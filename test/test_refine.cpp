@@ -237,6 +237,70 @@ TEST_CASE(refinement_refusals_leave_the_embedding)
   CHECK(st.message.find("genus 1") != std::string::npos);
 }
 
+// The refinement certifies each iterate with internal::Corner_map_certifier, which recovers the
+// cut from the corners once and again only when the seams change: its verdict on every map must
+// be certify_hyperbolic_orbifold_embedding()'s. Maps whose faults are known from their
+// construction, in an order that reuses the recovered cut and then changes it: the embedding
+// (bijective), two neighbours off the cut swapped (the same seams: faces flipped), one corner of
+// an inner vertex moved alone (a new seam: not bijective, or the cut refused), the embedding
+// again (bijective).
+TEST_CASE(iterates_certificate_is_the_certificate_of_each_map)
+{
+  Pair p;
+  CHECK(make_pair(p));
+  if(p.landmarks.empty())
+    return;
+  const auto np = HOT::parameters::frame(p.sa.frame);
+  HOT::internal::Corner_map_certifier<Mesh, decltype(np)> certifier(p.a, p.landmarks, np);
+  const auto agree = [&](const char* what, bool bijective) {
+    HOT::Embedding_certificate c1, c2;
+    std::string w1, w2;
+    const HOT::Error_code e1 = certifier(p.uva, c1, w1), e2 = HOT::certify_hyperbolic_orbifold_embedding(p.a, p.landmarks, p.uva, c2, &w2, np);
+    std::cout << "  " << what << ": " << HOT::error_message(e1) << ", " << c1 << std::endl;
+    CHECK_MSG(e1 == e2 && w1 == w2, what << ": " << w1 << " / " << w2);
+    CHECK_MSG(c1.is_bijective() == bijective && c2.is_bijective() == bijective, what);
+    CHECK(c1.flipped_faces == c2.flipped_faces && c1.degenerate_faces == c2.degenerate_faces && c1.twin_failures == c2.twin_failures &&
+          c1.angle_sum_failures == c2.angle_sum_failures && c1.cone_failures == c2.cone_failures && c1.number_of_faces == c2.number_of_faces);
+    return c1;
+  };
+  const std::vector<Point_2> original = corners(p);
+  agree("the embedding", true);
+  // two neighbours off the cut (each with one point at all its corners), not landmarks
+  const auto plain = [&](vertex_descriptor v) {
+    if(std::find(p.landmarks.begin(), p.landmarks.end(), v) != p.landmarks.end())
+      return false;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, p.a), p.a))
+      if(p.uva[h] != p.uva[halfedge(v, p.a)])
+        return false;
+    return true;
+  };
+  vertex_descriptor u, w;
+  for(vertex_descriptor v : vertices(p.a))
+    if(plain(v))
+      for(vertex_descriptor x : vertices_around_target(halfedge(v, p.a), p.a))
+        if(u == Mesh::null_vertex() && plain(x)) {
+          u = v;
+          w = x;
+        }
+  CHECK(u != Mesh::null_vertex());
+  if(u == Mesh::null_vertex())
+    return;
+  const Point_2 pu = p.uva[halfedge(u, p.a)], pw = p.uva[halfedge(w, p.a)];
+  for(halfedge_descriptor h : halfedges_around_target(halfedge(u, p.a), p.a))
+    p.uva[h] = pw;
+  for(halfedge_descriptor h : halfedges_around_target(halfedge(w, p.a), p.a))
+    p.uva[h] = pu;
+  const HOT::Embedding_certificate swapped = agree("two neighbours swapped", false);
+  CHECK(swapped.flipped_faces > 0); // (the faces of edge uw at least turn over)
+  // one corner of u moved alone (back to its place, its other corners at w's): a seam that no
+  // side pairing explains
+  p.uva[halfedge(u, p.a)] = pu;
+  agree("one corner moved alone", false);
+  for(std::size_t i = 0; i < original.size(); ++i)
+    p.uva[*std::next(halfedges(p.a).begin(), i)] = original[i];
+  agree("the embedding again", true);
+}
+
 // a copy of m bent along its z axis into an arc of radius R in the x-z plane (as test/bend.awk:
 // the axis is not stretched, so the copy is near an isometry of m for R large against m's width)
 static Mesh bent(const Mesh& m, double R)

@@ -67,18 +67,22 @@ Status tile_to_certify(Orbifold_type type, int k, const std::vector<int>& orders
   return Status();
 }
 
-// the seams of a corner map: the edges whose two sides disagree on a shared corner (or, in a
-// chart, on the chart point)
-template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters, class Mesh>
-void add_seams_of_corner_map(const TriangleMesh& tm, HalfedgeUVMap uvmap, const NamedParameters& np, Mesh& mesh)
+// the seams of a corner map: per edge of `tm` (in the order of edges(tm)), whether its two
+// sides disagree on a shared corner (or, in a chart, on the chart point)
+template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>
+std::vector<char> seams_of_corner_map(const TriangleMesh& tm, HalfedgeUVMap uvmap, const NamedParameters& np)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  std::vector<char> seam;
+  seam.reserve(num_edges(tm));
   for(edge_descriptor e : edges(tm)) {
     const halfedge_descriptor h = halfedge(e, tm), o = opposite(h, tm);
-    if(is_border(h, tm) || is_border(o, tm))
+    if(is_border(h, tm) || is_border(o, tm)) {
+      seam.push_back(0);
       continue;
+    }
     // corner of target(h) in face(h) vs in face(o); corner of source(h) likewise
     bool differ = get(uvmap, h) != get(uvmap, prev(o, tm)) || get(uvmap, prev(h, tm)) != get(uvmap, o);
     if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value) {
@@ -90,9 +94,9 @@ void add_seams_of_corner_map(const TriangleMesh& tm, HalfedgeUVMap uvmap, const 
       };
       differ = differ || other(h, prev(o, tm)) || other(prev(h, tm), o);
     }
-    if(differ)
-      mesh.add_seam(source(h, tm), target(h, tm));
+    seam.push_back(differ ? 1 : 0);
   }
+  return seam;
 }
 
 // the first cut-mesh vertex (position in `cut_vertices`) of each halfedge of the mesh, or -1
@@ -145,6 +149,107 @@ Error_code build_genus_cut_topology(const TriangleMesh& tm, Mesh& mesh,
   return internal::build_cut_graph_topology(mesh, bhd, landmarks, start, tile, P, base_vertex, cut_vertices, why);
 }
 
+// What certify_hyperbolic_orbifold_embedding() recovers from a corner map before it checks it:
+// the tile, the flat problem of the cut (the edges whose sides disagree) and the vertex of that
+// problem at each face corner. It depends on the corners only through the seams, so maps with
+// the same seams (the refinement's iterates: every move keeps the cut) share it.
+struct Certificate_topology
+{
+  Orbifold_tile<> tile;
+  Flat_problem P;
+  std::vector<char> seams;         // per edge (seams_of_corner_map())
+  std::vector<int> corner_vertex;  // per halfedge (in the order of halfedges(tm)): its corner's vertex of P (-1: border)
+};
+
+// certify_hyperbolic_orbifold_embedding()'s recovery of `topo` from the corners `uvmap`: OK, or
+// the error and `why`
+template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>
+Error_code recover_certificate_topology(const TriangleMesh& tm,
+                                        const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
+                                        HalfedgeUVMap uvmap, const NamedParameters& np, Certificate_topology& topo, std::string& why)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  Orbifold_type type = Sphere_type;
+  const Status r = prepare_mesh(tm, get_const_property_map(vertex_point, tm), np, type);
+  if(!r) {
+    why = r.message;
+    return r.code;
+  }
+  const int k = static_cast<int>(landmarks.size());
+  const std::vector<int> orders =
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cone_orders), std::vector<int>());
+  const long long genus = type == Sphere_type ? closed_mesh_genus(tm) : 0;
+  const Status t = tile_to_certify(type, k, orders, genus, np, topo.tile);
+  if(!t) {
+    why = t.message;
+    return t.code;
+  }
+
+  // the cut: edges whose two sides disagree on a shared corner
+  Seam_mesh_storage<TriangleMesh> storage(tm);
+  typedef typename Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
+  Mesh& mesh = storage.mesh;
+  topo.seams = seams_of_corner_map(tm, uvmap, np);
+  std::size_t e = 0;
+  for(const auto ed : edges(tm))
+    if(topo.seams[e++])
+      mesh.add_seam(source(halfedge(ed, tm), tm), target(halfedge(ed, tm), tm));
+  typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
+  if(!storage.border_halfedge(bhd)) {
+    why = "the map has no cut: a closed mesh must be cut open through the landmarks";
+    return ERROR_CUT_FAILED;
+  }
+
+  std::vector<vertex_descriptor> base_vertex;
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> cut_vertices;
+  const Error_code ec =
+    genus > 0 // genus g >= 1: the polygon of the recovered cut graph, its corner 0 as the embedding's
+      ? build_genus_cut_topology(tm, mesh, bhd, landmarks, static_cast<int>(genus), orders, np, topo.tile, topo.P, base_vertex,
+                                 cut_vertices, why)
+      : build_flat_topology(mesh, bhd, landmarks, topo.tile, topo.P, base_vertex, cut_vertices, why);
+  if(ec != OK)
+    return ec;
+
+  const Dense_index<halfedge_descriptor> hindex(halfedges(tm));
+  const std::vector<int> index_of = cut_vertex_of_halfedges(hindex, cut_vertices, topo.P.n);
+  topo.corner_vertex.clear();
+  topo.corner_vertex.reserve(hindex.size());
+  for(halfedge_descriptor h : halfedges(tm)) {
+    if(is_border(h, tm)) {
+      topo.corner_vertex.push_back(-1);
+      continue;
+    }
+    const auto vd = target(typename boost::graph_traits<Mesh>::halfedge_descriptor(h, false), mesh);
+    const std::size_t kd = hindex(vd.hd.tmhd);
+    if(kd == hindex.npos || index_of[kd] < 0) {
+      why = "a corner could not be matched to a vertex of the cut mesh";
+      return ERROR_CUT_FAILED;
+    }
+    topo.corner_vertex.push_back(index_of[kd]);
+  }
+  return OK;
+}
+
+// the points of the corners `uvmap` per vertex of topo.P (any corner of a vertex: they agree off
+// the cut)
+template <class TriangleMesh, class HalfedgeUVMap>
+std::vector<std::complex<double> > corner_points(const TriangleMesh& tm, HalfedgeUVMap uvmap, const Certificate_topology& topo)
+{
+  std::vector<std::complex<double> > uv(topo.P.n, std::complex<double>(2.0, 0.0));
+  std::size_t i = 0;
+  for(auto h : halfedges(tm)) {
+    const int v = topo.corner_vertex[i++];
+    if(v >= 0) {
+      const auto p = get(uvmap, h);
+      uv[v] = std::complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    }
+  }
+  return uv;
+}
+
 } // namespace internal
 
 /*!
@@ -195,11 +300,7 @@ Error_code certify_hyperbolic_orbifold_embedding(
   std::string* message = nullptr,
   const NamedParameters& np = CGAL::parameters::default_values())
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
-  typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
 
   certificate = Embedding_certificate();
   std::string local;
@@ -210,75 +311,32 @@ Error_code certify_hyperbolic_orbifold_embedding(
     return ec;
   };
 
-  Orbifold_type type = Sphere_type;
-  const Status r = internal::prepare_mesh(tm, get_const_property_map(vertex_point, tm), np, type);
-  if(!r)
-    return fail(r.code, r.message);
-  const int k = static_cast<int>(landmarks.size());
-  Orbifold_tile<> tile;
-  const std::vector<int> orders =
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::cone_orders), std::vector<int>());
-  const long long genus = type == Sphere_type ? closed_mesh_genus(tm) : 0;
-  const Status t = internal::tile_to_certify(type, k, orders, genus, np, tile);
-  if(!t)
-    return fail(t.code, t.message);
-
-  // the cut: edges whose two sides disagree on a shared corner
-  internal::Seam_mesh_storage<TriangleMesh> seams(tm);
-  typedef typename internal::Seam_mesh_storage<TriangleMesh>::Mesh Mesh;
-  Mesh& mesh = seams.mesh;
-  internal::add_seams_of_corner_map(tm, uvmap, np, mesh);
-  typename boost::graph_traits<Mesh>::halfedge_descriptor bhd;
-  if(!seams.border_halfedge(bhd))
-    return fail(ERROR_CUT_FAILED, "the map has no cut: a closed mesh must be cut open through the landmarks");
-
-  internal::Flat_problem P;
-  std::vector<vertex_descriptor> base_vertex;
-  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> cut_vertices;
-  std::string why;
-  Error_code ec = OK;
-  if(genus > 0) // genus g >= 1: the polygon of the recovered cut graph, its corner 0 as the embedding's
-    ec = internal::build_genus_cut_topology(tm, mesh, bhd, landmarks, static_cast<int>(genus), orders, np, tile, P,
-                                            base_vertex, cut_vertices, why);
-  else
-    ec = internal::build_flat_topology(mesh, bhd, landmarks, tile, P, base_vertex, cut_vertices, why);
+  internal::Certificate_topology topo;
+  const Error_code ec = internal::recover_certificate_topology(tm, landmarks, uvmap, np, topo, msg);
   if(ec != OK)
-    return fail(ec, why);
-
-  // the point of each cut-mesh vertex, from any of its corners (they agree off the cut)
-  const internal::Dense_index<halfedge_descriptor> hindex(halfedges(tm));
-  const std::vector<int> index_of = internal::cut_vertex_of_halfedges(hindex, cut_vertices, P.n);
-  std::vector<std::complex<double> > uv(P.n, std::complex<double>(2.0, 0.0));
-  constexpr bool with_charts = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value;
-  std::vector<int> chart_of(with_charts ? P.n : 0, -2); // (-2: not seen yet)
-  std::vector<std::complex<double> > chart_local(with_charts ? P.n : 0);
-  std::vector<Hyperbolic_isometry_2<double> > charts;
-  if constexpr(with_charts) {
+    return fail(ec, msg);
+  const std::vector<std::complex<double> > uv = internal::corner_points(tm, uvmap, topo);
+  const internal::Flat_problem& P = topo.P;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value) {
     static_assert(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::charts_t>::value,
                   "parameters::chart_map() needs parameters::charts()");
-    charts = CGAL::parameters::get_parameter(np, internal_np::charts);
-  }
-  for(face_descriptor f : faces(tm))
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
-      const auto vd = target(typename boost::graph_traits<Mesh>::halfedge_descriptor(h, false), mesh);
-      const std::size_t k = hindex(vd.hd.tmhd);
-      if(k == hindex.npos || index_of[k] < 0)
-        return fail(ERROR_CUT_FAILED, "a corner could not be matched to a vertex of the cut mesh");
-      const Point_2 p = get(uvmap, h);
-      uv[index_of[k]] = std::complex<double>(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-      if constexpr(with_charts) {
-        const auto cp = get(CGAL::parameters::get_parameter(np, internal_np::chart_map), h);
-        const int i = index_of[k];
-        if(cp.chart < -1 || cp.chart >= static_cast<int>(charts.size()))
-          return fail(ERROR_WRONG_PARAMETER, "a corner's chart " + std::to_string(cp.chart) + " is not one of the " +
-                                               std::to_string(charts.size()) + " charts");
-        if(chart_of[i] != -2 && chart_of[i] != cp.chart)
-          return fail(ERROR_WRONG_PARAMETER, "two corners of one vertex (off the cut) are in different charts");
-        chart_of[i] = cp.chart;
-        chart_local[i] = std::complex<double>(CGAL::to_double(cp.point.x()), CGAL::to_double(cp.point.y()));
-      }
+    const std::vector<Hyperbolic_isometry_2<double> > charts = CGAL::parameters::get_parameter(np, internal_np::charts);
+    std::vector<int> chart_of(P.n, -2); // (-2: not seen yet)
+    std::vector<std::complex<double> > chart_local(P.n);
+    std::size_t ih = 0;
+    for(halfedge_descriptor h : halfedges(tm)) {
+      const int i = topo.corner_vertex[ih++];
+      if(i < 0)
+        continue;
+      const auto cp = get(CGAL::parameters::get_parameter(np, internal_np::chart_map), h);
+      if(cp.chart < -1 || cp.chart >= static_cast<int>(charts.size()))
+        return fail(ERROR_WRONG_PARAMETER, "a corner's chart " + std::to_string(cp.chart) + " is not one of the " +
+                                             std::to_string(charts.size()) + " charts");
+      if(chart_of[i] != -2 && chart_of[i] != cp.chart)
+        return fail(ERROR_WRONG_PARAMETER, "two corners of one vertex (off the cut) are in different charts");
+      chart_of[i] = cp.chart;
+      chart_local[i] = std::complex<double>(CGAL::to_double(cp.point.x()), CGAL::to_double(cp.point.y()));
     }
-  if constexpr(with_charts) {
     for(const auto& m : charts)
       if(!m.is_orientation_preserving())
         return fail(ERROR_WRONG_PARAMETER, "a chart must be an orientation-preserving isometry");
@@ -286,16 +344,65 @@ Error_code certify_hyperbolic_orbifold_embedding(
       c = (std::max)(c, -1);
     internal::Cone_charts ch;
     if(!charts.empty()) {
-      if(!internal::charts_of_written_embedding(P, tile, uv, charts, chart_of, chart_local, ch))
+      if(!internal::charts_of_written_embedding(P, topo.tile, uv, charts, chart_of, chart_local, ch))
         return fail(ERROR_WRONG_PARAMETER, "the charts do not make separate regions (a face or an edge joins two charts, "
                                            "or a seam copy is in a chart and its twin is not)");
-      certificate = internal::certify_flat(P, tile, uv, 1e-6, &ch);
+      certificate = internal::certify_flat(P, topo.tile, uv, 1e-6, &ch);
       return OK;
     }
   }
-  certificate = internal::certify_flat(P, tile, uv);
+  certificate = internal::certify_flat(P, topo.tile, uv);
   return OK;
 }
+
+namespace internal {
+
+// certify_hyperbolic_orbifold_embedding() of a sequence of corner maps of one mesh (the
+// refinement's iterates): the topology is recovered again only when the seams differ from the
+// last map's, so each verdict is the function's at the cost of its checks alone
+template <class TriangleMesh, class NamedParameters>
+class Corner_map_certifier
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+
+public:
+  Corner_map_certifier(const TriangleMesh& tm, const std::vector<vertex_descriptor>& landmarks, const NamedParameters& np)
+    : tm_(tm), landmarks_(landmarks), np_(np)
+  {}
+
+  // as certify_hyperbolic_orbifold_embedding(tm, landmarks, uvmap, certificate, &why, np)
+  template <class HalfedgeUVMap>
+  Error_code operator()(HalfedgeUVMap uvmap, Embedding_certificate& certificate, std::string& why)
+  {
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::chart_map_t>::value)
+      return certify_hyperbolic_orbifold_embedding(tm_, landmarks_, uvmap, certificate, &why, np_);
+    else {
+      certificate = Embedding_certificate();
+      why.clear();
+      if(!recovered_ || seams_of_corner_map(tm_, uvmap, np_) != topo_.seams) {
+        recovered_ = false;
+        const Error_code ec = recover_certificate_topology(tm_, landmarks_, uvmap, np_, topo_, why);
+        if(ec != OK) {
+          if(why.empty())
+            why = error_message(ec);
+          return ec;
+        }
+        recovered_ = true;
+      }
+      certificate = certify_flat(topo_.P, topo_.tile, corner_points(tm_, uvmap, topo_));
+      return OK;
+    }
+  }
+
+private:
+  const TriangleMesh& tm_;
+  const std::vector<vertex_descriptor>& landmarks_;
+  const NamedParameters& np_;
+  Certificate_topology topo_;
+  bool recovered_ = false;
+};
+
+} // namespace internal
 
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions

@@ -93,10 +93,11 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
     return ERROR_WRONG_PARAMETER;
   }
   typedef internal::Map_refiner<TriangleMeshA, HalfedgeUVMapA, TriangleMeshB, Locator> Refiner;
+  internal::Corner_map_certifier<TriangleMeshA, NamedParameters> certifier(A, landmarks, np); // (the iterates keep the cut)
   const typename Refiner::Certify certify = [&](const typename Refiner::Corner_reader& corners, std::string& why) {
     Embedding_certificate cert;
-    const Error_code ec = certify_hyperbolic_orbifold_embedding(A, landmarks, boost::make_function_property_map<
-      typename boost::graph_traits<TriangleMeshA>::halfedge_descriptor>(corners), cert, &why, np);
+    const Error_code ec = certifier(boost::make_function_property_map<
+      typename boost::graph_traits<TriangleMeshA>::halfedge_descriptor>(corners), cert, why);
     if(ec == OK && !cert.is_bijective()) {
       std::ostringstream os;
       os << cert;
