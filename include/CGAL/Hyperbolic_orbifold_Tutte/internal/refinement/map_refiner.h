@@ -27,6 +27,7 @@
 #include <tbb/parallel_for.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -276,7 +277,8 @@ public:
     // 1e-6 (one is not enough: a nearly degenerate image can make the first steps small
     // against a huge energy, and the later ones large)
     small_steps_ = e > tempered_ * (1 - 1e-6) ? small_steps_ + 1 : 0;
-    if(!needed_held)
+    // (a step that needed a second round with nothing held, i.e. the ARAP proxy, holds nothing)
+    if(!needed_held || std::find(solve_held.begin(), solve_held.end(), 1) == solve_held.end())
       carried_.clear();
     else {
       carried_ = solve_held;
