@@ -2674,6 +2674,20 @@ TEST_CASE(default_weights_fall_back_to_mean_value_when_the_cotangent_embedding_f
   HOT::Embedding_certificate c;
   std::string why;
   CHECK_MSG(HOT::certify_hyperbolic_orbifold_embedding(m, used, uv, c, &why) == HOT::OK && c.is_bijective(), why);
+  // mean_value_fallback(true) asks for it with the cotangent weights given (a program passing
+  // on its user's choice): the same embedding; mean_value_fallback(false) refuses it with the
+  // default weights
+  HOT::Embedding_statistics asked, declined;
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, uv, HOT::parameters::weight_type(HOT::Cotangent,
+          HOT::parameters::mean_value_fallback(true, np(asked)))) == HOT::OK);
+  CHECK(asked.mean_value_fallback && asked.fallback_reason == explicit_cotangent.message);
+  same = 0;
+  k = 0;
+  for(halfedge_descriptor h : halfedges(m)) same += uv[h] == corners[k++] ? 1 : 0;
+  CHECK_MSG(same == corners.size(), same << " of " << corners.size() << " corners equal");
+  CHECK(HOT::hyperbolic_orbifold_Tutte_embedding(m, lm, uv, HOT::parameters::mean_value_fallback(false, np(declined))) ==
+        HOT::ERROR_NO_1_TO_1_MAPPING);
+  CHECK(!declined.mean_value_fallback && declined.message == explicit_cotangent.message);
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -29,6 +29,7 @@ struct Embed_job
 {
   hot_tools::Embedding_request request; // the mesh, weights and order (empty: the type's default)
   HOT::Weight_type weights = HOT::Cotangent;
+  bool mean_value_fallback = false; // the weights were not chosen: a cotangent embedding that fails the certificate is computed again with the mean value weights
   bool recentre = false;
   std::vector<int> orders; // --cone-orders, per landmark in the order given to the library (empty: 2 for all)
   std::function<void(const char*, double)> progress; // the library's progress reports (empty: none)
@@ -50,7 +51,8 @@ HOT::Embedding_statistics embed_mesh(const Embed_job& job, TriangleMesh& m, cons
       HOT::parameters::recentring(
         job.recentre,
         HOT::parameters::embedding_statistics(
-          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::orbifold_type(job.request.type))))))))));
+          &st, HOT::parameters::landmark_order(order, HOT::parameters::weight_type(job.weights, HOT::parameters::mean_value_fallback(
+            job.mean_value_fallback, HOT::parameters::orbifold_type(job.request.type)))))))))));
   if(ec != HOT::OK)
     throw Failure{ec, st.message};
   return st;

@@ -98,7 +98,7 @@ class Embedding:
     def cut_graph(self) -> list[list[int]]: ...
     def write_obj(self, path: _Path) -> None: ...
 
-def embed(V: ArrayLike, F: ArrayLike, landmarks: _Indices, *, orbifold: _Orbifold = "auto", weights: _Weights = "cotan",
+def embed(V: ArrayLike, F: ArrayLike, landmarks: _Indices, *, orbifold: _Orbifold = "auto", weights: _Weights | None = None,
           order: Literal["auto", "tsp", "given"] | _Indices = "auto", cone_orders: _Indices | None = None,
           recentre: bool = False, cut_graph: Sequence[_Indices] | None = None, name: str = "",
           progress: Callable[[str, float], object] | None = None) -> Embedding: ...
@@ -131,7 +131,7 @@ class _MeshMap(TypedDict):
     added: NDArray[np.int64] | None
 
 def map_meshes(VA: ArrayLike, FA: ArrayLike, landmarks_a: _Indices, VB: ArrayLike, FB: ArrayLike, landmarks_b: _Indices, *,
-               orbifold: _Orbifold = "auto", weights: _Weights = "cotan", order: Literal["auto", "tsp", "given"] | _Indices = "auto",
+               orbifold: _Orbifold = "auto", weights: _Weights | None = None, order: Literal["auto", "tsp", "given"] | _Indices = "auto",
                cone_orders: _Indices | None = None, unreliable: bool = False, refine: int = 0, augment: bool | None = None,
                progress: Callable[[str, float], object] | None = None) -> _MeshMap: ...
 

@@ -120,6 +120,7 @@ Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64
   job.request.weights = opt.weights;
   job.request.order = order_name == "explicit" ? "given" : order_name;
   job.request.cones = ids;
+  job.mean_value_fallback = opt.mean_value_fallback;
   if(opt.weights == "cotan") job.weights = HOT::Cotangent;
   else if(opt.weights == "mvc") job.weights = HOT::Mean_value;
   else if(opt.weights == "uniform") job.weights = HOT::Uniform;
@@ -191,6 +192,19 @@ void Progress_relay::rethrow()
 
 namespace {
 
+// embed()'s and map_meshes()' `weights` into `opt`: None, the cotangent weights with the mean
+// value fallback (as the command line without --weights); a name, those weights alone
+void parse_weights(py::handle weights, Embed_options& opt)
+{
+  opt.mean_value_fallback = weights.is_none();
+  if(weights.is_none())
+    opt.weights = "cotan";
+  else if(py::isinstance<py::str>(weights))
+    opt.weights = weights.cast<std::string>(); // (checked by compute_embedding())
+  else
+    fail(HOT::ERROR_WRONG_PARAMETER, "weights must be None, 'cotan', 'mvc' or 'uniform'");
+}
+
 // embed()'s and map_meshes()' `order` and `cone_orders` into `opt`
 void parse_order_options(py::handle order, py::handle cone_orders, Embed_options& opt)
 {
@@ -208,7 +222,7 @@ void parse_order_options(py::handle order, py::handle cone_orders, Embed_options
       opt.cone_orders.push_back(hot_tools::is_cone_order(p) ? static_cast<int>(p) : 0); // (0: refused below)
 }
 
-Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, const std::string& weights,
+Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std::string& orbifold, py::handle weights,
                     py::handle order, py::handle cone_orders, bool recentre, py::handle cut_graph, const std::string& name,
                     py::handle progress)
 {
@@ -218,7 +232,7 @@ Embedding_ptr embed(py::handle V, py::handle F, py::handle landmarks, const std:
   const std::vector<std::size_t> ids = index_list(landmarks, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
   Embed_options opt;
   opt.type = parse_orbifold(orbifold);
-  opt.weights = weights;
+  parse_weights(weights, opt);
   opt.recentre = recentre;
   opt.name = name;
   parse_order_options(order, cone_orders, opt);
@@ -375,9 +389,9 @@ void register_embedding(py::module_& m)
   register_embedding_class(m);
 
   m.def("embed", &embed, py::arg("V"), py::arg("F"), py::arg("landmarks"), py::kw_only(), py::arg("orbifold") = "auto",
-        py::arg("weights") = "cotan", py::arg("order") = "auto", py::arg("cone_orders") = py::none(), py::arg("recentre") = false,
+        py::arg("weights") = py::none(), py::arg("order") = "auto", py::arg("cone_orders") = py::none(), py::arg("recentre") = false,
         py::arg("cut_graph") = py::none(), py::arg("name") = "", py::arg("progress") = py::none(),
-        R"doc(embed(V, F, landmarks, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, recentre=False, cut_graph=None, name="", progress=None)
+        R"doc(embed(V, F, landmarks, *, orbifold="auto", weights=None, order="auto", cone_orders=None, recentre=False, cut_graph=None, name="", progress=None)
 
 Computes the certified hyperbolic orbifold Tutte embedding of the triangle mesh (V, F)
 with the given landmarks at the orbifold's cones, as the command line's `embed` does (the
@@ -394,7 +408,10 @@ landmarks: vertex indices (a sequence or 1-D integer array): on a closed genus-0
   none); on a disk at least 5 boundary vertices, in boundary order.
 orbifold: "auto" (sphere type if the mesh is closed, disk type if it has one boundary
   loop), "sphere" (or "closed") or "disk".
-weights: "cotan" (clamped cotangent), "mvc" (mean value) or "uniform".
+weights: "cotan" (clamped cotangent), "mvc" (mean value) or "uniform"; None (the default):
+  the cotangent weights, or the mean value weights when the cotangent embedding fails the
+  certificate (as the command line's embed without --weights, map and collection; the
+  report's "weights" says which).
 order: the cone order of the landmarks: "auto" ("tsp" for a closed genus-0 mesh, "given"
   otherwise, as the command line's default), "tsp" (the paper's tour through the
   landmarks), "given", or a sequence of landmark positions (a permutation of
@@ -719,7 +736,7 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, std::vector
 }
 
 py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::handle VB, py::handle FB, py::handle landmarks_b,
-                    const std::string& orbifold, const std::string& weights, py::handle order, py::handle cone_orders, bool unreliable,
+                    const std::string& orbifold, py::handle weights, py::handle order, py::handle cone_orders, bool unreliable,
                     int refine, std::optional<bool> augment, py::handle progress)
 {
   Progress_relay relay(progress);
@@ -729,7 +746,7 @@ py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::ha
   const std::vector<std::size_t> idb = index_list(landmarks_b, "landmark", HOT::ERROR_LANDMARK_OUT_OF_RANGE);
   Embed_options opt;
   opt.type = parse_orbifold(orbifold);
-  opt.weights = weights;
+  parse_weights(weights, opt);
   parse_order_options(order, cone_orders, opt);
   if(refine < 0)
     fail(HOT::ERROR_WRONG_PARAMETER, "refine must be 0 (no refinement) or a number of iterations, got " + std::to_string(refine));
@@ -759,10 +776,10 @@ py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::ha
 void register_maps(py::module_& m)
 {
   m.def("map_meshes", &map_meshes, py::arg("VA"), py::arg("FA"), py::arg("landmarks_a"), py::arg("VB"), py::arg("FB"), py::arg("landmarks_b"),
-        py::kw_only(), py::arg("orbifold") = "auto", py::arg("weights") = "cotan", py::arg("order") = "auto",
+        py::kw_only(), py::arg("orbifold") = "auto", py::arg("weights") = py::none(), py::arg("order") = "auto",
         py::arg("cone_orders") = py::none(), py::arg("unreliable") = false, py::arg("refine") = 0, py::arg("augment") = py::none(),
         py::arg("progress") = py::none(),
-        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights="cotan", order="auto", cone_orders=None, unreliable=False, refine=0, augment=None, progress=None) -> dict
+        R"doc(map_meshes(VA, FA, landmarks_a, VB, FB, landmarks_b, *, orbifold="auto", weights=None, order="auto", cone_orders=None, unreliable=False, refine=0, augment=None, progress=None) -> dict
 
 Maps mesh A = (VA, FA) onto mesh B = (VB, FB) in one call, as the command line's `map`
 does: landmark i of landmarks_a corresponds to landmark i of landmarks_b; both meshes are

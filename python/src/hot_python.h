@@ -188,6 +188,7 @@ struct Embed_options
 {
   std::optional<HOT::Orbifold_type> type; // std::nullopt: from the mesh
   std::string weights = "cotan";          // cotan, mvc, uniform
+  bool mean_value_fallback = false;       // weights=None: cotan, or mvc when the cotangent embedding fails the certificate
   std::string order = "auto";             // auto (the type's default), tsp, given, explicit
   std::vector<std::size_t> explicit_order; // order == "explicit": positions in the landmarks
   std::vector<int> cone_orders;           // per landmark as given (empty: 2 for all)

@@ -136,6 +136,13 @@ def test_options(bear, tmp_path):
     raises("ERROR_WRONG_PARAMETER", hot.embed, V, F, lm, orbifold="torus", match="orbifold")
     raises("ERROR_WRONG_TOPOLOGY", hot.embed, V, F, lm, orbifold="disk")
     raises("ERROR_WRONG_PARAMETER", hot.embed, V, F, lm, weights="harmonic", match="weights")
+    raises("ERROR_WRONG_PARAMETER", hot.embed, V, F, lm, weights=3, match="weights")
+    raises("ERROR_WRONG_PARAMETER", hot.map_meshes, V, F, lm, V, F, lm, weights=3, match="weights")
+    # weights=None (the default) is the cotangent weights when their embedding is certified
+    # (else the mean value ones, which bear.off does not need): the same corners, bit for bit
+    a, b = hot.embed(V, F, lm), hot.embed(V, F, lm, weights="cotan")
+    assert a.report["weights"] == b.report["weights"] == "cotan"
+    assert (a.uv == b.uv).all()
     raises("ERROR_WRONG_PARAMETER", hot.embed, V, F, lm, order="random", match="order")
     raises("ERROR_WRONG_PARAMETER", hot.embed, V, F, lm, order=[0, 0, 1, 2, 3, 4, 5], match="permutation")
     raises("ERROR_WRONG_PARAMETER", hot.embed, V, F, lm, order=[0, 1, 2], match="permutation")

@@ -133,7 +133,8 @@ inline Embed_command parse_embed_options(int argc, char** argv, bool& progress)
     else if(w == "uniform") job.weights = HOT::Uniform;
     else throw Usage_error{"--weights must be cotan, mvc or uniform, got '" + w + "'"};
     job.request.weights = w;
-  }
+  } else
+    job.mean_value_fallback = true; // (as map and collection: the cotangent weights, or the mean value ones if those fail the certificate)
   if(opt.has("order") && opt.get("order").find_first_of("0123456789") != std::string::npos)
     job.request.order = opt.get("order"); // (a list: parsed once the landmarks are read)
   else
@@ -263,6 +264,7 @@ inline int run_embed(int argc, char** argv)
             << (genus > 0 ? "closed, genus " + std::to_string(genus) : std::string(type == HOT::Sphere_type ? "sphere" : "disk") + " type") << ") in "
             << st.time_setup + st.time_initialization + st.time_optimization + st.time_certificate << " s, "
             << st.iterations << " Newton iterations, certified bijective"
+            << (st.mean_value_fallback ? " with the mean value weights (the cotangent weights' embedding failed the certificate)" : "")
             << (st.recentred ? " in a recentred frame (given in the report)" : "")
             << (st.charted_faces > 0 ? ", " + std::to_string(st.charted_faces) + " faces in charts around cone images" : std::string())
             << "; wrote " << job.out_path << std::endl;

@@ -94,7 +94,7 @@ struct Embedding_request
   std::string mesh_path;
   std::vector<std::size_t> cones;          // the landmarks as given: 0-based vertex indices
   HOT::Orbifold_type type = HOT::Sphere_type;
-  std::string weights = "cotan";           // cotan, mvc or uniform
+  std::string weights = "cotan";           // cotan, mvc or uniform (the report says mvc after a mean value fallback)
   std::string order;                       // given, tsp or explicit (--order I0,I1,...)
   const Input_mesh* input = nullptr;       // with --repair: the preparation (reported)
   const std::vector<Landmark_snap_record>* snaps = nullptr; // with --snap-landmarks
@@ -123,7 +123,7 @@ inline void write_embedding_report(std::ostream& os, const Embedding_request& re
   os << "  \"cones\": [";
   for(std::size_t i = 0; i < cone_indices.size(); ++i) os << (i ? ", " : "") << cone_indices[i];
   os << "],\n  \"orbifold\": \"" << (request.type == HOT::Sphere_type ? "sphere" : "disk") << "\",\n"
-     << "  \"weights\": \"" << request.weights << "\",\n  \"order\": \"" << request.order << "\",\n"
+     << "  \"weights\": \"" << (st.mean_value_fallback ? std::string("mvc") : request.weights) << "\",\n  \"order\": \"" << request.order << "\",\n"
      << "  \"landmark_order_used\": [";
   for(std::size_t i = 0; i < st.landmark_order.size(); ++i)
     os << (i ? ", " : "") << cone_indices[st.landmark_order[i]];

@@ -144,6 +144,11 @@ orbifold tile (`Orbifold_tile::side_pairing()`).
     \cgalParamDefault{`Cotangent`; when neither this nor `edge_weight_map` is given and the cotangent
     weights' embedding fails the certificate, the mean value weights' one if it passes
     (`Embedding_statistics::mean_value_fallback`, `fallback_reason`)} \cgalParamNEnd
+  \cgalParamNBegin{mean_value_fallback} \cgalParamDescription{a `bool`: whether an embedding that fails
+    the certificate is computed again with the mean value weights, kept if it passes (for a
+    `weight_type` given explicitly, e.g. a program passing on its user's choice, which may be
+    the default's); never with `edge_weight_map`}
+    \cgalParamDefault{`true` when neither `weight_type` nor `edge_weight_map` is given, else `false`} \cgalParamNEnd
   \cgalParamNBegin{edge_weight_map} \cgalParamDescription{a readable property map from `edge_descriptor`
     to positive `double` weights, used instead of `weight_type`} \cgalParamDefault{unused} \cgalParamNEnd
   \cgalParamNBegin{weight_epsilon} \cgalParamDescription{lower clamp of cotangent weights}
@@ -292,8 +297,11 @@ Error_code hyperbolic_orbifold_Tutte_embedding(
   };
   constexpr bool default_weights = is_default_parameter<NamedParameters, internal_np::weight_type_t>::value &&
                                    is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value;
+  // (never with weights of one's own: the fallback replaces a weight type)
+  const bool fallback = is_default_parameter<NamedParameters, internal_np::edge_weight_map_t>::value &&
+                        choose_parameter(get_parameter(np, internal_np::mean_value_fallback), default_weights);
   Error_code ec = internal::solve_with_mean_value_fallback(solve, choose_parameter(get_parameter(np, internal_np::weight_type), Cotangent),
-                                                           default_weights, st);
+                                                           fallback, st);
   st.landmark_order = order_used;
   st.time_setup += time_cut;
   if(genus > 0)

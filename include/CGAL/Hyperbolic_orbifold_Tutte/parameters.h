@@ -31,6 +31,7 @@ namespace internal_np {
 enum orbifold_type_t { orbifold_type };
 enum weight_type_t { weight_type };
 enum weight_epsilon_t { weight_epsilon };
+enum mean_value_fallback_t { mean_value_fallback };
 enum landmark_order_t { landmark_order };
 enum gradient_tolerance_t { gradient_tolerance };
 enum embedding_statistics_t { embedding_statistics };
@@ -78,6 +79,10 @@ CGAL_HOT_NAMED_PARAMETER(orbifold_type)
 CGAL_HOT_NAMED_PARAMETER(weight_type)
 /// `double`: lower clamp of cotangent weights (default \f$10^{-6}\f$)
 CGAL_HOT_NAMED_PARAMETER(weight_epsilon)
+/// `bool`: whether an embedding that fails the certificate is computed again with the mean
+/// value weights (default: `true` when neither `weight_type` nor `edge_weight_map` is given,
+/// else `false`; see `hyperbolic_orbifold_Tutte_embedding()`)
+CGAL_HOT_NAMED_PARAMETER(mean_value_fallback)
 /// `Landmark_order` (default `Given_order`)
 CGAL_HOT_NAMED_PARAMETER(landmark_order)
 /// `double`: force imbalance (relative hyperbolic gradient norm) at which the solver stops (default \f$10^{-10}\f$)
