@@ -222,7 +222,7 @@ public:
     const bool carried = !carried_.empty() && stats_.iterations < next_free_;
     const bool free_try = !carried_.empty() && !carried; // (a scheduled one)
     std::vector<char> held = carried ? carried_ : std::vector<char>(vidx_.size(), 0), solve_held;
-    bool accepted = false, certificate_failed = false, solved = true, needed_held = false;
+    bool accepted = false, certificate_failed = false, solved = true;
     double e = tempered_;
     std::size_t undone = 0;
     for(int pass = carried ? 0 : 1; pass < 2 && !accepted; ++pass) {
@@ -233,7 +233,6 @@ public:
       for(int round = 0; round < 4 && !accepted; ++round) {
         std::vector<Eigen::Vector2d> d;
         solve_held = held;
-        needed_held = pass == 0 || round > 0;
         if(!step_->solve(q_, T_, s_, held, d, round < 2, cap_)) {
           solved = false; // (a round with the ARAP proxy may still solve)
           continue;
@@ -277,8 +276,9 @@ public:
     // 1e-6 (one is not enough: a nearly degenerate image can make the first steps small
     // against a huge energy, and the later ones large)
     small_steps_ = e > tempered_ * (1 - 1e-6) ? small_steps_ + 1 : 0;
-    // (a step that needed a second round with nothing held, i.e. the ARAP proxy, holds nothing)
-    if(!needed_held || std::find(solve_held.begin(), solve_held.end(), 1) == solve_held.end())
+    // the accepted step's held vertices, if any (none: a free step, in its first round or with
+    // the ARAP proxy)
+    if(std::find(solve_held.begin(), solve_held.end(), 1) == solve_held.end())
       carried_.clear();
     else {
       carried_ = solve_held;
