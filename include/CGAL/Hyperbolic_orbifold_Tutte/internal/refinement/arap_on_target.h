@@ -286,10 +286,12 @@ private:
 
   // Conjugate gradients on H x = rhs preconditioned by the factor of an earlier matrix (the
   // matrices of successive steps differ little): false when 20 iterations do not bring the
-  // residual below 1e-2 of the right-hand side's, and the caller factors H itself.
+  // residual below 3e-2 of the right-hand side's, and the caller factors H itself. (The step is
+  // a proxy's, and the line search only asks that it lower the energy: with 1e-2 the solves took
+  // a third more iterations and more factorisations, for no better maps on SHREC'07's classes.)
   bool preconditioned_solve(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const
   {
-    const double goal = 1e-2 * rhs.norm();
+    const double goal = 3e-2 * rhs.norm();
     x = ldlt_.solve(rhs);
     Eigen::VectorXd r = rhs - H * x;
     if(!(r.norm() > goal))
