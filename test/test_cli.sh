@@ -176,6 +176,10 @@ case "$case_name" in
     err=$(awk -f "$d/off_reader.awk" -f "$d/map_error.awk" "$tmp/m.txt" "$tmp/twisted.off" "$tmp/twisted.off")
     echo "eight -> twisted: $err"
     echo "$err" | awk '{ exit !($2 == 315 && $4 == 0 && $6 < 0.02) }' || fail "map error: $err"
+    # --refine handles genus 0 only: refused in one line that says why, no file left
+    expect_error "$tmp/m3.txt" map --source "$data/meshes/eight.off" --source-cones "$tmp/none.cones" --target "$tmp/twisted.off" \
+      --target-cones "$tmp/none.cones" --out "$tmp/m3.txt" --refine
+    grep -q -- "--refine: .*genus 2" "$tmp/stderr" || fail "--refine on genus 2 refused without saying why: $(cat "$tmp/stderr")"
     # maps need corresponding cut graphs: another mesh of genus 2 without them, and another genus, are refused
     expect_error "$tmp/m2.txt" map --source "$data/meshes/eight.off" --source-cones "$tmp/none.cones" --target "$data/meshes/femur.off" \
       --target-cones "$tmp/none.cones" --out "$tmp/m2.txt"
