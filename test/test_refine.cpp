@@ -235,6 +235,10 @@ TEST_CASE(refinement_refusals_leave_the_embedding)
   const std::vector<vertex_descriptor> torus_landmarks(grid.begin(), grid.begin() + 3);
   CHECK(HOT::refine_orbifold_map(torus, torus_landmarks, uvt, p.b, L, st) == HOT::ERROR_WRONG_PARAMETER);
   CHECK(st.message.find("genus 1") != std::string::npos);
+  // the same answer from the mesh alone, before any embedding; the sphere-type source passes
+  const HOT::Status refusal = HOT::check_refinable_source(torus);
+  CHECK(refusal.code == HOT::ERROR_WRONG_PARAMETER && refusal.message == st.message);
+  CHECK(HOT::check_refinable_source(p.a).code == HOT::OK && HOT::check_refinable_source(p.a).message.empty());
 }
 
 // The refinement certifies each iterate with internal::Corner_map_certifier, which recovers the

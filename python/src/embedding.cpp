@@ -688,6 +688,9 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, std::vector
     fail(HOT::ERROR_WRONG_PARAMETER, "the meshes have genus " + std::to_string(a0.genus) +
                                        " and not the same faces: a map between them depends on corresponding cut graphs;"
                                        " embed both with corresponding cut_graph= and call map()");
+  if(refine > 0) // (refused before the embeddings, not after)
+    if(const HOT::Status refusal = HOT::check_refinable_source(a0.mesh); !refusal)
+      fail(refusal.code, "refine: " + refusal.message);
   // augment=None: with refine > 0 on closed genus-0 meshes (as map --refine without --no-augment)
   r.augmented = augment ? *augment : refine > 0 && a0.type == HOT::Sphere_type && a0.genus == 0 && b0.genus == 0 && opt.order != "explicit";
   if(r.augmented)

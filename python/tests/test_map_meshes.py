@@ -229,6 +229,21 @@ def test_bad_inputs_raise_input_error(bear):
         hot.transfer([0, 1], [[1, 0, 0], [1, 0]], F, V)
 
 
+def test_refine_on_a_source_of_genus_2_is_refused_before_the_embeddings(meshes):
+    # eight.off (libcgal-demo) is closed of genus 2 (Euler: V - E + F = -2); the refinement moves
+    # corners in one disk around the landmarks, so refine=N is refused, and before any embedding
+    # phase is reported (the same pair maps without refine)
+    V, F = hot.read_mesh(os.path.join(meshes, "eight.off"))
+    assert len(V) - 3 * len(F) // 2 + len(F) == -2
+    phases = []
+    with pytest.raises(hot.InputError, match="^refine: .*genus 2$") as info:
+        hot.map_meshes(V, F, [0], V, F, [0], refine=5, progress=lambda phase, fraction: phases.append(phase))
+    assert info.value.code == "ERROR_WRONG_PARAMETER"
+    assert not any(p.startswith(("source", "target")) for p in phases)
+    r = hot.map_meshes(V, F, [0], V, F, [0], progress=lambda phase, fraction: phases.append(phase))
+    assert any(p.startswith("source") for p in phases) and len(r["faces"]) == len(V)
+
+
 def test_meshes_of_different_types_are_refused(bear, meshes):
     V, F, lm, _ = bear
     VD, FD = hot.read_mesh(os.path.join(meshes, "mushroom.off"))  # libcgal-demo's disk

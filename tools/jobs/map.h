@@ -185,9 +185,9 @@ inline HOT::Landmark_order_candidate embed_map_meshes(const Options& opt, const 
   match_genus_zero(opt, repair, A, B, minimum_landmarks(orders));
   progress.done("read");
   check_map_pair(A, B);
-  if(opt.has("refine") && A.type == HOT::Sphere_type && genus_of(A) > 0) // (refused before the embeddings, not after)
-    throw Failure{HOT::ERROR_WRONG_PARAMETER, "--refine: refine_orbifold_map() handles surfaces of genus 0; the source has genus " +
-                                                std::to_string(genus_of(A))};
+  if(opt.has("refine")) // (refused before the embeddings, not after)
+    if(const HOT::Status refusal = HOT::check_refinable_source(A.mesh); !refusal)
+      throw Failure{refusal.code, "--refine: " + refusal.message};
   // --augment, or --refine without --no-augment on closed genus-0 meshes (elsewhere --refine
   // does not augment: the added landmarks would not fit the orbifold)
   const bool closed_genus_0 = A.type == HOT::Sphere_type && genus_of(A) == 0 && genus_of(B) == 0;

@@ -32,6 +32,25 @@ namespace Hyperbolic_orbifold_Tutte {
 /*!
 \ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
 
+whether `refine_orbifold_map()` can refine a map whose source is `A`, answered from the mesh
+alone, so that a caller can ask before embedding: `OK`, or `ERROR_WRONG_PARAMETER` with the
+reason when `A` is closed of genus 1 or more (the refinement moves corners in one disk
+around the landmarks' orbifold). `refine_orbifold_map()` asks it first, then checks the
+embedding itself (given without charts, certified).
+\tparam TriangleMesh a model of `FaceGraph`
+*/
+template <class TriangleMesh>
+Status check_refinable_source(const TriangleMesh& A)
+{
+  if(is_closed(A) && closed_mesh_genus(A) > 0)
+    return Status::failure(ERROR_WRONG_PARAMETER, "refine_orbifold_map() handles surfaces of genus 0; the source has genus " +
+                                                    std::to_string(closed_mesh_genus(A)));
+  return Status();
+}
+
+/*!
+\ingroup PkgHyperbolicOrbifoldTutteHelperFunctions
+
 refines the map \f$f_{AB}\f$ from `A` onto `B` through their common orbifold (the map of
 `map_vertices()`) towards an isometry: moves `A`'s embedding `uvA` so that the map lowers its
 as-rigid-as-possible (ARAP) energy
@@ -70,7 +89,7 @@ stays a bijection that interpolates the landmarks and is seamless through the or
        (`orbifold_type`, `frame`, `cone_orders`, `cut_graph`) describing `A`'s embedding, and
        `vertex_point_map` for `A` (`B`'s points are read with `get(vertex_point, B)`)
 
-\return `OK` (read `stats.stop`), `ERROR_WRONG_PARAMETER` if `A` has genus 1 or more or its
+\return `OK` (read `stats.stop`), `ERROR_WRONG_PARAMETER` if `A` has genus 1 or more (`check_refinable_source()`) or its
 embedding is given in charts (`chart_map`: refused), `ERROR_NO_1_TO_1_MAPPING` if `uvA` itself is not certified,
 `ERROR_POINT_NOT_LOCATED` if a vertex of `A` cannot be located on `B`, or the certificate's
 error; `uvA` is then unchanged.
@@ -110,9 +129,9 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
     stats.message = "refine_orbifold_map() handles embeddings without charts around cone images";
     return ERROR_WRONG_PARAMETER;
   }
-  if(is_closed(A) && closed_mesh_genus(A) > 0) {
-    stats.message = "refine_orbifold_map() handles surfaces of genus 0; the source has genus " + std::to_string(closed_mesh_genus(A));
-    return ERROR_WRONG_PARAMETER;
+  if(const Status refusal = check_refinable_source(A); !refusal) {
+    stats.message = refusal.message;
+    return refusal.code;
   }
   Refiner refiner(A, landmarks, uvA, B, locB, stats, certify);
   const Error_code ec = refiner.prepare(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, A)));
