@@ -515,6 +515,26 @@ TEST_CASE(a_sphere_has_no_thin_tips)
   CHECK(xm.source_extremities == 0 && xm.target_extremities == 0 && xm.pairs.empty());
 }
 
+TEST_CASE(the_map_is_not_computed_where_it_cannot_add_a_pair)
+{
+  // three spikes on the source, none on the target (a round sphere, whose every geodesic ball
+  // holds at least ~0.9 pi r^2: no thin maximum at all): the source's tips are left unmatched,
+  // and along the map they could only be matched to a thin maximum of the target, so neither
+  // way embeds the meshes, and no pair is added (the target has no protrusion to match)
+  const Mesh a = spiked_sphere(8, {X, Y, -Y});
+  const Mesh b = similar_copy(spiked_sphere(8, std::vector<Spike>()));
+  const std::vector<vertex_descriptor> lm = {toward(8, Z), toward(8, -Z), toward(8, -X), toward(8, K::Vector_3(1, 1, 1))};
+  HOT::Extremity_matching<vertex_descriptor> xm;
+  for(int way = 0; way < 2; ++way) {
+    CHECK((way == 0 ? HOT::match_extremities(a, lm, b, lm, xm) : HOT::match_extremities(b, lm, a, lm, xm)) == HOT::OK);
+    CHECK((way == 0 ? xm.source_extremities : xm.target_extremities) == 3);
+    CHECK(xm.pairs.empty() && xm.matched_along_map == 0 && !xm.embedded_along_map);
+  }
+  // tips on both meshes, all matched by their descriptors: nothing is left, nothing embedded
+  CHECK(HOT::match_extremities(a, lm, similar_copy(a), lm, xm) == HOT::OK);
+  CHECK(xm.pairs.size() == 3 && !xm.embedded_along_map);
+}
+
 TEST_CASE(mirror_twins_are_told_apart_by_the_map_alone)
 {
   // spikes at +y and -y, landmarks on the plane y = 0 (+z, -z, +x, -x): the reflection y -> -y
@@ -531,7 +551,7 @@ TEST_CASE(mirror_twins_are_told_apart_by_the_map_alone)
   CHECK(xm.source_extremities == 2 && xm.target_extremities == 2);
   CHECK(xm.pairs.empty() && xm.matched_along_map == 0);
   CHECK(HOT::match_extremities(a, lm, b, lm, xm) == HOT::OK);
-  CHECK_MSG(xm.pairs.size() == 2 && xm.matched_along_map == 2, std::to_string(xm.pairs.size()) + " pairs");
+  CHECK_MSG(xm.pairs.size() == 2 && xm.matched_along_map == 2 && xm.embedded_along_map, std::to_string(xm.pairs.size()) + " pairs");
   std::set<vertex_descriptor> apices = {toward(8, Y), toward(8, -Y)};
   for(std::size_t i = 0; i < xm.pairs.size(); ++i) {
     CHECK_MSG(xm.pairs[i].first == xm.pairs[i].second, "a pair off the truth");

@@ -266,6 +266,27 @@ int nearest_thin_maximum(const Graph& g, const Distance_field& field, int v, dou
   return found;
 }
 
+// whether the distance has a thin local maximum anywhere (as nearest_thin_maximum() finds near
+// a vertex): a thin tip is one; else every maximum's ball is measured, until a thin one
+template <class Graph>
+bool has_thin_maximum(const Graph& g, const Distance_field& field, const Tips& tips, double threshold)
+{
+  if(tips.tips > 0)
+    return true;
+  Dijkstra_workspace ball;
+  ball.init(g.size());
+  for(std::size_t u = 0; u < g.size(); ++u) {
+    if(field.dist[u] < kFarthest * field.dmax)
+      continue;
+    bool top = true;
+    for(std::size_t e = g.offsets[u]; top && e < g.offsets[u + 1]; ++e)
+      top = field.dist[g.nbrs[e]] <= field.dist[u];
+    if(top && tipness_at(g, ball, field, static_cast<int>(u)) < threshold)
+      return true;
+  }
+  return false;
+}
+
 // the relative difference of two descriptors, sqrt(2 |x - y|^2 / (|x|^2 + |y|^2))
 inline double descriptor_difference(const std::vector<double>& x, const std::vector<double>& y)
 {
