@@ -42,9 +42,10 @@ embedding itself (given without charts, certified).
 template <class TriangleMesh>
 Status check_refinable_source(const TriangleMesh& A)
 {
-  if(is_closed(A) && closed_mesh_genus(A) > 0)
+  const long long genus = is_closed(A) ? closed_mesh_genus(A) : 0;
+  if(genus > 0)
     return Status::failure(ERROR_WRONG_PARAMETER, "refine_orbifold_map() handles surfaces of genus 0; the source has genus " +
-                                                    std::to_string(closed_mesh_genus(A)));
+                                                    std::to_string(genus));
   return Status();
 }
 

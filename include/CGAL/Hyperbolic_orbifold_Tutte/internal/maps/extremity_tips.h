@@ -96,6 +96,20 @@ std::vector<int> distinct_maxima(const Graph& g, const std::vector<double>& f, c
   return distinct;
 }
 
+// whether vertex u is a far local maximum of the distance `dist` (largest value dmax): at least
+// kFarthest dmax, no neighbour farther (thin_tips()'s candidates, the maxima of the matching along
+// the map)
+template <class Graph>
+bool is_far_maximum(const Graph& g, const std::vector<double>& dist, double dmax, std::size_t u)
+{
+  if(dist[u] < kFarthest * dmax)
+    return false;
+  for(std::size_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e)
+    if(dist[g.nbrs[e]] > dist[u])
+      return false;
+  return true;
+}
+
 template <class Graph, class TriangleMesh>
 std::vector<double> vertex_areas(const Graph& g, const TriangleMesh& tm, double& total)
 {
@@ -160,11 +174,8 @@ Tips thin_tips(const Graph& g, const TriangleMesh& tm, const std::vector<int>& l
   std::vector<std::pair<double, int> > candidates; // (-distance, vertex)
   std::vector<char> is_candidate(n, 0);
   for(std::size_t i = 0; i < n; ++i) {
-    const double d = nearest.dist[i];
-    bool top = d >= kFarthest * dmax;
-    for(std::size_t e = g.offsets[i]; top && e < g.offsets[i + 1]; ++e)
-      top = nearest.dist[g.nbrs[e]] <= d;
-    if(top) candidates.emplace_back(-d, static_cast<int>(i));
+    const bool top = is_far_maximum(g, nearest.dist, dmax, i);
+    if(top) candidates.emplace_back(-nearest.dist[i], static_cast<int>(i));
     is_candidate[i] = top;
   }
   // the distinct maxima: edge path distances place a maximum only to about an edge, so a drop
@@ -257,9 +268,7 @@ int nearest_thin_maximum(const Graph& g, const Distance_field& field, int v, dou
   ws.begin_run();
   dijkstra(g, ws, v, [&](int u) {
     if(ws.distance(u) > field.r) { beyond = true; return; }
-    if(field.dist[u] < kFarthest * field.dmax) return;
-    for(std::size_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e)
-      if(field.dist[g.nbrs[e]] > field.dist[u]) return;
+    if(!is_far_maximum(g, field.dist, field.dmax, u)) return;
     const double t = tipness_at(g, ball, field, u);
     if(t < threshold) { found = u; tipness = t; }
   }, [&]() { return beyond || found >= 0; });
@@ -275,15 +284,9 @@ bool has_thin_maximum(const Graph& g, const Distance_field& field, const Tips& t
     return true;
   Dijkstra_workspace ball;
   ball.init(g.size());
-  for(std::size_t u = 0; u < g.size(); ++u) {
-    if(field.dist[u] < kFarthest * field.dmax)
-      continue;
-    bool top = true;
-    for(std::size_t e = g.offsets[u]; top && e < g.offsets[u + 1]; ++e)
-      top = field.dist[g.nbrs[e]] <= field.dist[u];
-    if(top && tipness_at(g, ball, field, static_cast<int>(u)) < threshold)
+  for(std::size_t u = 0; u < g.size(); ++u)
+    if(is_far_maximum(g, field.dist, field.dmax, u) && tipness_at(g, ball, field, static_cast<int>(u)) < threshold)
       return true;
-  }
   return false;
 }
 
