@@ -58,8 +58,9 @@ as-rigid-as-possible (ARAP) energy
 \f$ \sum_f |f| \, \| J_f - s R_f \|_F^2 / (s^2 |A|) \f$, with \f$J_f\f$ the Jacobian of the
 map on face \f$f\f$ of `A` (its vertices' images on `B`, linear in between), \f$R_f\f$ the
 closest rotation and \f$s^2\f$ the ratio of `B`'s area to `A`'s (0 for an isometry up to that
-scale). Each iteration is a local-global step with the images moving in `B`'s tangent planes,
-turned into moves of `A`'s corners in the disk; copies of a vertex across the seams move by
+scale). Each iteration is a local-global step with the images moving in `B`'s tangent planes
+(plus 0.8 times their last accepted moves, a heavy-ball momentum, except on faces squeezed
+beyond the tempering cap below), turned into moves of `A`'s corners in the disk; copies of a vertex across the seams move by
 the orbifold's side pairings, landmarks and border vertices stay, a move that would turn a
 face of `A` over is undone (with its face's other moves), the step is halved until the
 iterate lowers the symmetric Dirichlet energy \f$ \sum_f |f| (\sigma_1^2 + \sigma_2^2 +
