@@ -60,9 +60,10 @@ map on face \f$f\f$ of `A` (its vertices' images on `B`, linear in between), \f$
 closest rotation and \f$s^2\f$ the ratio of `B`'s area to `A`'s (0 for an isometry up to that
 scale). Each iteration is a local-global step with the images moving in `B`'s tangent planes
 (plus 0.8 times their last accepted moves, a heavy-ball momentum, except on faces squeezed
-beyond the tempering cap below), turned into moves of `A`'s corners in the disk; copies of a vertex across the seams move by
+beyond the tempering cap below), turned into moves of `A`'s corners in the disk (each moved image
+taken there by the chart of the face of `B` that holds it); copies of a vertex across the seams move by
 the orbifold's side pairings, landmarks and border vertices stay, a move that would turn a
-face of `A` over is undone (with its face's other moves), the step is halved until the
+face of `A` over is undone (with its face's other moves), the step (in `B`'s tangent planes) is halved until the
 iterate lowers the symmetric Dirichlet energy \f$ \sum_f |f| (\sigma_1^2 + \sigma_2^2 +
 \sigma_1^{-2} + \sigma_2^{-2}) / |A| \f$ (singular values of \f$J_f / s\f$; 4 for an isometry
 up to the scale \f$s\f$, infinite for a degenerate image), tempered: a face's density
