@@ -241,6 +241,85 @@ TEST_CASE(refinement_refusals_leave_the_embedding)
   CHECK(HOT::check_refinable_source(p.a).code == HOT::OK && HOT::check_refinable_source(p.a).message.empty());
 }
 
+// The refinement's Newton step (Arap_global_step) reads each face's density of the symmetric
+// Dirichlet energy, its gradient and its Hessian projected onto the positive semidefinite
+// matrices from a closed-form eigensystem. Facts from outside that code: the singular values of
+// an SVD (the density is sum sigma^2 + sigma^-2), central finite differences of the density,
+// Eigen's eigensolver applied to the finite-difference Hessian (its negative eigenvalues set to
+// 0), and at a scaled isometry s R a zero gradient and the eigenvalues 0, 0, 0, 8, 8, 8 over s^2
+// (sigma^2 + sigma^-2 has second derivative 8 at 1; turning and tilting cost nothing).
+TEST_CASE(newton_derivatives_match_finite_differences)
+{
+  typedef Eigen::Matrix<double, 6, 1> V6;
+  typedef Eigen::Matrix<double, 6, 6> M6;
+  typedef HOT::internal::Arap_source Src;
+  const auto density = [](const V6& x, double s) {
+    Eigen::Matrix<double, 3, 2> J;
+    J.col(0) = x.head<3>();
+    J.col(1) = x.tail<3>();
+    return Src::density(J, s);
+  };
+  std::srand(7);
+  const auto uniform = [] { return 2.0 * std::rand() / RAND_MAX - 1; };
+  double worst_value = 0, worst_grad = 0, worst_hess = 0;
+  int tested = 0, indefinite = 0;
+  for(int t = 0; t < 300; ++t) {
+    Eigen::Matrix<double, 3, 2> J;
+    for(int r = 0; r < 3; ++r)
+      for(int c = 0; c < 2; ++c)
+        J(r, c) = uniform();
+    const double s = 1 + 0.5 * uniform();
+    const Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2> > svd(J / s);
+    if(!(svd.singularValues()[1] > 0.3)) // (finite differences lose their digits near a degenerate image)
+      continue;
+    double value;
+    V6 grad;
+    M6 hess;
+    CHECK(Src::density_derivatives(J, s, value, grad, hess));
+    const Eigen::Vector2d sv = svd.singularValues();
+    const double truth = sv.squaredNorm() + 1 / (sv[0] * sv[0]) + 1 / (sv[1] * sv[1]);
+    V6 x;
+    x << J.col(0), J.col(1);
+    const double h = 1e-4 * s;
+    V6 fd_grad;
+    M6 fd_hess;
+    for(int i = 0; i < 6; ++i) {
+      const V6 ei = V6::Unit(i) * h;
+      fd_grad[i] = (density(x + ei, s) - density(x - ei, s)) / (2 * h);
+      for(int j = 0; j < 6; ++j) {
+        const V6 ej = V6::Unit(j) * h;
+        fd_hess(i, j) = (density(x + ei + ej, s) - density(x + ei - ej, s) - density(x - ei + ej, s) + density(x - ei - ej, s)) / (4 * h * h);
+      }
+    }
+    const Eigen::SelfAdjointEigenSolver<M6> es(0.5 * (fd_hess + fd_hess.transpose()));
+    indefinite += es.eigenvalues()[0] < -1e-3 ? 1 : 0;
+    const M6 projected = es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
+    worst_value = (std::max)({worst_value, std::abs(value - truth) / truth, std::abs(density(x, s) - truth) / truth});
+    worst_grad = (std::max)(worst_grad, (grad - fd_grad).norm() / fd_grad.norm());
+    worst_hess = (std::max)(worst_hess, (hess - projected).norm() / projected.norm());
+    ++tested;
+  }
+  std::cout << "  " << tested << " Jacobians (" << indefinite << " with an indefinite Hessian): value " << worst_value << ", gradient "
+            << worst_grad << ", projected Hessian " << worst_hess << " (largest relative differences)" << std::endl;
+  CHECK(tested >= 50 && indefinite >= 10); // (otherwise the projection is not tested)
+  CHECK(worst_value < 1e-12);
+  CHECK(worst_grad < 1e-5);
+  CHECK(worst_hess < 1e-4);
+  // at a scaled isometry: a zero gradient, eigenvalues 0, 0, 0, 8, 8, 8 over s^2
+  const double s = 1.7;
+  Eigen::Matrix<double, 3, 2> R;
+  R.col(0) = Eigen::Vector3d(1, 2, 2).normalized();
+  R.col(1) = Eigen::Vector3d(2, -2, 1).normalized(); // (orthogonal to the first)
+  double value;
+  V6 grad;
+  M6 hess;
+  CHECK(Src::density_derivatives(s * R, s, value, grad, hess));
+  CHECK(std::abs(value - 4) < 1e-12 && grad.norm() < 1e-12);
+  const Eigen::Matrix<double, 6, 1> ev = Eigen::SelfAdjointEigenSolver<M6>(hess * s * s).eigenvalues();
+  for(int k = 0; k < 6; ++k)
+    CHECK_MSG(std::abs(ev[k] - (k < 3 ? 0.0 : 8.0)) < 1e-9, "eigenvalue " << k << ": " << ev[k]);
+}
+
 // The refinement certifies each iterate with internal::Corner_map_certifier, which recovers the
 // cut from the corners once and again only when the seams change: its verdict on every map must
 // be certify_hyperbolic_orbifold_embedding()'s. Maps whose faults are known from their

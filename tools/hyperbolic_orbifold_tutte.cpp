@@ -93,7 +93,7 @@ const char* const usage_map =
   "      (\"distortion\": percentiles 50, 90, 99, max and mean of the conformal distortion\n"
   "      sigma1/sigma2 and of the area distortion sigma1 sigma2 / (area(f(A))/area(A)) over\n"
   "      A's faces, and the count of degenerate faces; infinity is written \"inf\").\n"
-  "      --refine [N]: refines the map towards an isometry (at most N iterations, default 40,\n"
+  "      --refine [N]: refines the map towards an isometry (at most N iterations, default 30,\n"
   "      each certified bijective; landmarks kept; genus 0, a source without charts): lowers the\n"
   "      symmetric Dirichlet energy (4 for an isometry up to scale); REPORT.json's \"refinement\"\n"
   "      gives its iterations, stop, energies, time and the \"distortion_before\" it\n"

@@ -121,36 +121,18 @@ public:
     return poincare_orientation_sign_filtered(z[0].real(), z[0].imag(), z[1].real(), z[1].imag(), z[2].real(), z[2].imag());
   }
 
-  // the point a fraction alpha of the way from a to b along their geodesic
-  static C along_geodesic(const C& a, const C& b, double alpha)
+  // Moves every vertex i with `moves[i]` to `to[i]` (a point of its primary corner's frame),
+  // then undoes the moves of the vertices of every face whose orientation is not `sign` until
+  // none is left (each round undoes at least one move, and a face whose vertices are all back
+  // is as it was). Sets `undone[i]` for the undone moves and returns their number.
+  std::size_t move(const std::vector<C>& to, const std::vector<char>& moves, const std::vector<C>& old, std::vector<C>& corners, Sign sign,
+                   std::vector<char>& undone_flag) const
   {
-    if(alpha >= 1)
-      return b;
-    if(alpha <= 0)
-      return a;
-    typedef Hyperbolic_isometry_2<double> I;
-    const I m = I::translation_to_origin(a);
-    const C w = m.apply(b);
-    const double r = std::abs(w);
-    if(!(r > 0))
-      return a;
-    const C wa = w / r * std::tanh(alpha * std::atanh((std::min)(r, 1 - 1e-16)));
-    return m.inverse().apply(wa);
-  }
-
-  // Moves every vertex i with `alpha[i] > 0` from its primary point `from[i]` the fraction
-  // alpha[i] of the way to `to[i]`, then undoes the moves of the vertices of every face whose
-  // orientation is not `sign` until none is left (each round undoes at least one move, and a
-  // face whose vertices are all back is as it was). Sets `undone[i]` for the undone moves and
-  // returns their number.
-  std::size_t move(const std::vector<C>& from, const std::vector<C>& to, const std::vector<double>& alpha, const std::vector<C>& old,
-                   std::vector<C>& corners, Sign sign, std::vector<char>& undone_flag) const
-  {
-    std::vector<char> moved_flag(alpha.size(), 0);
+    std::vector<char> moved_flag(moves.size(), 0);
     std::vector<std::size_t> moved;
-    for(std::size_t i = 0; i < alpha.size(); ++i)
-      if(alpha[i] > 0) {
-        place(i, along_geodesic(from[i], to[i], alpha[i]), corners);
+    for(std::size_t i = 0; i < moves.size(); ++i)
+      if(moves[i]) {
+        place(i, to[i], corners);
         moved.push_back(i);
         moved_flag[i] = 1;
       }

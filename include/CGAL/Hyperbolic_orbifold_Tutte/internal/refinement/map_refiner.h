@@ -109,22 +109,28 @@ Eigen::Matrix<double, 3, 2> tangent_basis(const Location& l, const Locator& locB
 // most 4 times). One face's chart extended across its neighbours is wrong at first order (the
 // Jacobian of B's embedding jumps from face to face), and the images then did not land where
 // the tangent step said: on SHREC'07's humans the energy predicted along the step fell while the
-// energy of the images increased, and the line search cut steps to 1/32 and less.
+// energy of the images increased, and the line search cut steps to 1/32 and less. `where` is
+// z's location on B when the search found it (the last chart's face), else not successful.
 template <class Location, class Locator, class VertexPointMapB>
 bool refinement_move(const Location& l, const Locator& locB, VertexPointMapB vpmB, const Eigen::Vector3d& q, Eigen::Vector3d m,
-                     std::complex<double>& z)
+                     std::complex<double>& z, Location& where)
 {
+  where.success = false;
   for(int halving = 0; halving < 30; ++halving, m *= 0.5)
     if(const auto t = refinement_target(l, locB, vpmB, q + m)) {
       z = *t;
       Location chart = l;
       for(int k = 0; k < 4; ++k) {
         const Location next = locB.locate_near(typename Locator::Point_2(z.real(), z.imag()), chart);
-        if(!next.success || next.face_index == chart.face_index)
+        if(!next.success || next.face_index == chart.face_index) {
+          where = next;
           break;
+        }
         const auto u = refinement_target(next, locB, vpmB, q + m);
-        if(!u)
+        if(!u) {
+          where = next; // (z unchanged)
           break;
+        }
         z = *u;
         chart = next;
       }
@@ -270,20 +276,26 @@ public:
               d[i] += momentum_ * (T_[i].transpose() * last_move_[i]);
         // each attempt's targets: the iterate's images moved by the step, scaled (not a point
         // on the disk's geodesic to the full step's target: B's charts differ from face to face)
-        std::vector<C> from(vidx_.size()), to(vidx_.size());
-        for(std::size_t i = 0; i < vidx_.size(); ++i)
-          if(!fixed_[i] && !held[i])
-            from[i] = old[hidx_(moves_->primary(i))];
+        std::vector<C> to(vidx_.size());
+        std::vector<Location> where(vidx_.size());
         std::vector<char> undone_flag(vidx_.size(), 0);
         for(int attempt = 0; attempt < 8 && !accepted; ++attempt) {
-          corners_ = old;
-          std::vector<double> a(vidx_.size(), 0.0);
+          restore();
+          std::vector<char> moved(vidx_.size(), 0);
+          for_each_vertex([&](std::size_t i) {
+            if(fixed_[i] || held[i])
+              return;
+            const Eigen::Vector3d m = std::ldexp(1.0, -attempt) * (T_[i] * d[i]);
+            moved[i] = refinement_move(old_locs[i], locB_, get(vertex_point, B_), old_q[i], m, to[i], where[i]);
+          });
+          undone = moves_->move(to, moved, old, corners_, sign_, undone_flag);
+          // the moved images where refinement_move() located them (the others located again)
           for(std::size_t i = 0; i < vidx_.size(); ++i)
-            if(!fixed_[i] && !held[i]) {
-              const Eigen::Vector3d m = std::ldexp(1.0, -attempt) * (T_[i] * d[i]);
-              a[i] = refinement_move(old_locs[i], locB_, get(vertex_point, B_), old_q[i], m, to[i]) ? 1.0 : 0.0;
+            if(moved[i] && where[i].success && corners_[hidx_(moves_->primary(i))] == to[i]) {
+              locs_[i] = where[i];
+              located_[i] = to[i];
+              q_[i] = image(where[i]);
             }
-          undone = moves_->move(from, to, a, old, corners_, sign_, undone_flag);
           e = locate() ? src_.symmetric_dirichlet(q_, s_, cap_) : std::numeric_limits<double>::infinity();
           if(!(e < tempered_))
             continue;
@@ -363,7 +375,6 @@ private:
     if(locs_.empty())
       locs_.resize(vidx_.size());
     std::atomic<bool> ok(true);
-    const auto vpmB = get(vertex_point, B_);
     const auto run = [&](std::size_t i) {
       const halfedge_descriptor h = moves_->primary(i);
       if(h == GT::null_halfedge() || corners_[hidx_(h)] == located_[i])
@@ -375,23 +386,35 @@ private:
         ok = false;
         return;
       }
-      const Location& l = locs_[i]; // (as surface_point())
-      const std::array<Eigen::Vector3d, 3> P = face_points(l, locB_, vpmB);
-      const std::array<double, 3>& b = l.barycentric;
-      q_[i] = (b[0] * P[0] + b[1] * P[1] + b[2] * P[2]) / (b[0] + b[1] + b[2]);
+      q_[i] = image(locs_[i]);
     };
+    for_each_vertex(run);
+    return ok.load();
+  }
+
+  // the point of B at location l (as surface_point())
+  Eigen::Vector3d image(const Location& l) const
+  {
+    const std::array<Eigen::Vector3d, 3> P = face_points(l, locB_, get(vertex_point, B_));
+    const std::array<double, 3>& b = l.barycentric;
+    return (b[0] * P[0] + b[1] * P[1] + b[2] * P[2]) / (b[0] + b[1] + b[2]);
+  }
+
+  // run(i) for every vertex i, in parallel on large meshes (each i touches only its own data)
+  template <class Run>
+  void for_each_vertex(const Run& run) const
+  {
 #ifdef CGAL_LINKED_WITH_TBB
     if(vidx_.size() > 10000) {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vidx_.size(), 1024), [&](const tbb::blocked_range<std::size_t>& r) {
         for(std::size_t i = r.begin(); i != r.end(); ++i)
           run(i);
       });
-      return ok.load();
+      return;
     }
 #endif
     for(std::size_t i = 0; i < vidx_.size(); ++i)
       run(i);
-    return ok.load();
   }
 
   const TriangleMeshA& A_;
