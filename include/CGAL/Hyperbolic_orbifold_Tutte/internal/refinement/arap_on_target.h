@@ -342,7 +342,8 @@ private:
     for(int i = 0; i < 3; ++i)
       for(int j = i; j < 3; ++j) {
         b.H[3 * i + j] = k * (U[i] * HU[j]);
-        b.H[3 * j + i] = b.H[3 * i + j].transpose();
+        if(j != i) // (a diagonal block is symmetric; assigning its own transpose would alias)
+          b.H[3 * j + i] = b.H[3 * i + j].transpose();
       }
     return true;
   }
@@ -392,8 +393,7 @@ private:
   // search only asks that the step lower the energy: with 1e-2 the solves took a third more
   // iterations and more factorisations, for no better maps on SHREC'07's classes. With 1e-1,
   // four fifths of the time on 40K-vertex sources, but the refinement of test_refine's bear
-  // stalled at an energy of 5.63, every step failing the line search: the stiff springs of the
-  // held vertices need the closer solve.)
+  // stalled at an energy of 5.63, every step failing the line search; why is not established.)
   bool preconditioned_solve(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const
   {
     const double goal = 3e-2 * rhs.norm();
