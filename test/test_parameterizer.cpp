@@ -2031,7 +2031,7 @@ static void simplicial_float_factor_case(int side)
   const double backward = (A * xf - b).norm() / (normA * xf.norm());
   const double hermitian = std::abs(u.dot(xf) - sf_u.dot(b)) / (u.norm() * xf.norm());
   // the rounded factor's own solves: split on the larger grid, the same bits on one thread
-  HOT::internal::Simplicial_float_factor single;
+  HOT::internal::Simplicial_float_factor<std::complex<double> > single;
   single.assign(eigen);
   CHECK_MSG(single.split() == (n > 4096), "split " << single.split() << " for " << n << " rows");
   Eigen::VectorXcd xs, xs1;
@@ -2071,6 +2071,64 @@ TEST_CASE(simplicial_float_factor_solves_with_the_rounded_factor)
 {
   for(int side : {50, 90})
     simplicial_float_factor_case(side);
+}
+
+// The real counterpart (the refinement's preconditioner, arap_on_target.h): the real part of
+// such a Laplacian (symmetric positive definite: x^T Re(A) x = Re(x^* A x) for real x), its
+// simplicial LDL^T factor with L rounded to float. The same facts: each solve is, to double
+// rounding, one with P^T L~ D L~^T P (built here from Eigen's own factor); its backward error
+// against the matrix is float's; the operator is symmetric and definite; the same bits on
+// one thread. Split on the larger grid.
+TEST_CASE(real_simplicial_float_factor_solves_with_the_rounded_factor)
+{
+  for(int side : {50, 90}) {
+    const int n = side * side;
+    std::vector<int> order(n);
+    for(int v = 0; v < n; ++v) order[v] = (v * 7919) % n;
+    const Eigen::SparseMatrix<double> R = random_grid_connection_laplacian(side, order, 1e-3).real();
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > eigen(R);
+    CHECK(eigen.info() == Eigen::Success && (eigen.vectorD().array() > 0).all());
+    HOT::internal::Simplicial_float_factor<double> single;
+    CHECK(single.empty());
+    single.assign(eigen);
+    CHECK(!single.empty());
+    CHECK_MSG(single.split() == (n > 4096), "split " << single.split() << " for " << n << " rows");
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n), u = Eigen::VectorXd::Random(n);
+    Eigen::VectorXd xs, su, xs1;
+    single.solve(b, xs);
+    single.solve(u, su);
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::task_arena one(1);
+    one.execute([&] { single.solve(b, xs1); });
+    CHECK_MSG(xs1 == xs, "not the same bits on one thread: " << (xs1 - xs).norm());
+#endif
+    Eigen::SparseMatrix<double> L = eigen.matrixL().nestedExpression();
+    L.makeCompressed();
+    for(Eigen::Index k = 0; k < L.nonZeros(); ++k) {
+      const volatile float l = static_cast<float>(L.valuePtr()[k]); // (see simplicial_float_factor_case)
+      L.valuePtr()[k] = l;
+    }
+    Eigen::SparseMatrix<double> I(n, n);
+    I.setIdentity();
+    const Eigen::SparseMatrix<double> Lt = L + I;
+    const Eigen::VectorXd d = eigen.vectorD();
+    const Eigen::VectorXd px = eigen.permutationP() * xs;
+    const Eigen::VectorXd tilde_b = eigen.permutationP().inverse() * (Lt * (d.asDiagonal() * (Lt.transpose() * px)));
+    double normR = 0; // the largest row sum: at least the 2-norm (symmetric)
+    for(int i = 0; i < n; ++i)
+      normR = std::max(normR, Eigen::MatrixXd(R.row(i)).cwiseAbs().sum());
+    const double with_rounded = (tilde_b - b).norm() / (normR * xs.norm());
+    const double backward = (R * xs - b).norm() / (normR * xs.norm());
+    const double symmetric = std::abs(u.dot(xs) - su.dot(b)) / (u.norm() * xs.norm());
+    std::cout << "  real rounded factor (" << n << " rows" << (single.split() ? ", split" : "") << "): residual with L~ D L~^T " << with_rounded
+              << ", backward error " << backward << ", symmetric to " << symmetric << std::endl;
+    CHECK_MSG(with_rounded < 1e-13, "not a solve with the rounded factor: " << with_rounded);
+    CHECK_MSG(backward < 1e-5 && backward > 1e-11, "backward error " << backward);
+    CHECK_MSG(symmetric < 1e-12, "not symmetric: " << symmetric);
+    CHECK(u.dot(su) > 0 && b.dot(xs) > 0);
+    single.clear();
+    CHECK(single.empty());
+  }
 }
 
 // The initialisation's Tutte embedding solved with the leading block of the solver's

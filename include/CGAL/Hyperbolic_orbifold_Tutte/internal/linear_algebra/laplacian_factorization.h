@@ -415,7 +415,7 @@ private:
 #endif
 
   Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int> > simplicial_;
-  Simplicial_float_factor simplicial_single_; // (complex only) simplicial_'s L rounded to float, or empty
+  Simplicial_float_factor<std::complex<double> > simplicial_single_; // (complex only) simplicial_'s L rounded to float, or empty
 #ifdef CGAL_HOT_USE_CHOLMOD
   Cholmod cholmod_;
   bool use_cholmod_ = false;

@@ -5,17 +5,19 @@
 #ifndef CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_LINEAR_ALGEBRA_SIMPLICIAL_FLOAT_FACTOR_H
 #define CGAL_HYPERBOLIC_ORBIFOLD_TUTTE_INTERNAL_LINEAR_ALGEBRA_SIMPLICIAL_FLOAT_FACTOR_H
 
-// Solves with Eigen's simplicial LDL^* factor of a complex Hermitian matrix,
-// P A P^T = L D L^*, its L rounded to single precision: the small meshes' counterpart of
-// single_precision_factor.h (CHOLMOD's supernodal factors of 50K rows and more).
+// Solves with Eigen's simplicial LDL^* factor of a complex Hermitian matrix (or a real
+// symmetric one: Scalar double), P A P^T = L D L^*, its L rounded to single precision: the
+// small meshes' counterpart of single_precision_factor.h (CHOLMOD's supernodal factors of 50K
+// rows and more).
 //
-// The preconditioner's solves (20 to 90 per embedding, more with many landmarks) read the
-// whole of L twice; its entries as float pairs and 32-bit row indices take 12 bytes instead
-// of 20. The arithmetic is in double, D is kept in double: each solve is, to double
-// rounding, exactly one with L~ D L~^*, L~ = fl32(L), a Hermitian positive definite matrix
-// (D > 0) within a relative 6e-8 |L| D |L^*| of A, so conjugate gradients keep their
-// guarantees. A fixed order of operations, no BLAS: the same bits on every machine and any
-// number of threads.
+// The preconditioner's solves (20 to 90 per embedding, more with many landmarks; in the
+// refinement's conjugate gradients, 5 to 20 per step) read the whole of L twice; its entries
+// as float pairs and 32-bit row indices take 12 bytes instead of 20 (real: 8 instead of 12).
+// The arithmetic is in double, D is kept in double: each solve is, to double rounding,
+// exactly one with L~ D L~^*, L~ = fl32(L), a Hermitian positive definite matrix (D > 0)
+// within a relative 6e-8 |L| D |L^*| of A, so conjugate gradients keep their guarantees. A
+// fixed order of operations, no BLAS: the same bits on every machine and any number of
+// threads.
 //
 // The solves run on two threads where the elimination tree allows (split_tree()): two
 // disjoint sets of subtrees, each about 45% of L's entries, then the columns above them
@@ -34,17 +36,22 @@
 #include <algorithm>
 #include <complex>
 #include <queue>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Hyperbolic_orbifold_Tutte {
 namespace internal {
 
+template <class Scalar>
 class Simplicial_float_factor
 {
 public:
-  typedef std::complex<double> C;
+  typedef Scalar C;
   typedef Eigen::SparseMatrix<C> Matrix;
+  // doubles per entry: 2 (complex: real and imaginary parts, interleaved) or 1
+  static constexpr int K = std::is_same<Scalar, std::complex<double> >::value ? 2 : 1;
+  static_assert(K == 2 || std::is_same<Scalar, double>::value, "complex<double> or double");
 
   // from a successful factorisation `f` (L strictly lower, column by column; D real)
   template <class Ordering>
@@ -55,7 +62,7 @@ public:
     outer_.assign(L.outerIndexPtr(), L.outerIndexPtr() + n_ + 1);
     const int nnz = outer_[n_] - outer_[0];
     inner_.resize(nnz);
-    re_im_.resize(2 * static_cast<std::size_t>(nnz));
+    re_im_.resize(K * static_cast<std::size_t>(nnz));
     // (Eigen's factor is compressed; were it not, each column ends at outer + innerNonZeros)
     for(int j = 0; j < n_; ++j) {
       const int b = L.outerIndexPtr()[j];
@@ -63,14 +70,15 @@ public:
       outer_[j + 1] = outer_[j] + (e - b);
       for(int p = b, q = outer_[j]; p < e; ++p, ++q) {
         inner_[q] = L.innerIndexPtr()[p];
-        re_im_[2 * q] = static_cast<float>(L.valuePtr()[p].real());
-        re_im_[2 * q + 1] = static_cast<float>(L.valuePtr()[p].imag());
+        re_im_[K * q] = static_cast<float>(std::real(L.valuePtr()[p]));
+        if constexpr(K == 2)
+          re_im_[2 * q + 1] = static_cast<float>(L.valuePtr()[p].imag());
       }
     }
     const Eigen::Matrix<C, Eigen::Dynamic, 1> D = f.vectorD(); // (a copy: Eigen returns it by value)
     inv_d_.resize(n_);
     for(int j = 0; j < n_; ++j)
-      inv_d_[j] = 1.0 / D[j].real();
+      inv_d_[j] = 1.0 / std::real(D[j]);
     perm_ = f.permutationP().indices();
     split_tree();
   }
@@ -94,18 +102,10 @@ public:
   void solve(const Eigen::Matrix<C, Eigen::Dynamic, 1>& b, Eigen::Matrix<C, Eigen::Dynamic, 1>& x) const
   {
     const int n = n_;
-    y_.resize(2 * static_cast<std::size_t>(n));
+    y_.resize(K * static_cast<std::size_t>(n));
     double* y = y_.data();
-    if(perm_.size() == n) // y = P b: (P b)[perm[i]] = b[i]
-      for(int i = 0; i < n; ++i) {
-        y[2 * perm_[i]] = b[i].real();
-        y[2 * perm_[i] + 1] = b[i].imag();
-      }
-    else
-      for(int i = 0; i < n; ++i) {
-        y[2 * i] = b[i].real();
-        y[2 * i + 1] = b[i].imag();
-      }
+    for(int i = 0; i < n; ++i) // y = P b: (P b)[perm[i]] = b[i]
+      store(b[i], y + K * (perm_.size() == n ? perm_[i] : i));
     if(columns_[1].empty()) { // (one set: every column in order)
       forward(0, n, nullptr, y, nullptr);
       scale(y);
@@ -113,18 +113,16 @@ public:
     } else {
       // the subtrees' updates of the top: gathered per set, added in a fixed order
       for(auto& sum : top_sum_) {
-        sum.resize(2 * static_cast<std::size_t>(n));
-        for(int r : columns_[0]) {
-          sum[2 * r] = 0;
-          sum[2 * r + 1] = 0;
-        }
+        sum.resize(K * static_cast<std::size_t>(n));
+        for(int r : columns_[0])
+          for(int k = 0; k < K; ++k)
+            sum[K * r + k] = 0;
       }
       in_parallel([&] { forward(0, static_cast<int>(columns_[1].size()), columns_[1].data(), y, top_sum_[0].data()); },
                   [&] { forward(0, static_cast<int>(columns_[2].size()), columns_[2].data(), y, top_sum_[1].data()); });
-      for(int r : columns_[0]) {
-        y[2 * r] = (y[2 * r] + top_sum_[0][2 * r]) + top_sum_[1][2 * r];
-        y[2 * r + 1] = (y[2 * r + 1] + top_sum_[0][2 * r + 1]) + top_sum_[1][2 * r + 1];
-      }
+      for(int r : columns_[0])
+        for(int k = 0; k < K; ++k)
+          y[K * r + k] = (y[K * r + k] + top_sum_[0][K * r + k]) + top_sum_[1][K * r + k];
       forward(0, static_cast<int>(columns_[0].size()), columns_[0].data(), y, nullptr);
       scale(y);
       backward(0, static_cast<int>(columns_[0].size()), columns_[0].data(), y);
@@ -132,15 +130,25 @@ public:
                   [&] { backward(0, static_cast<int>(columns_[2].size()), columns_[2].data(), y); });
     }
     x.resize(n);
-    if(perm_.size() == n) // x = P^T y
-      for(int i = 0; i < n; ++i)
-        x[i] = C(y[2 * perm_[i]], y[2 * perm_[i] + 1]);
-    else
-      for(int i = 0; i < n; ++i)
-        x[i] = C(y[2 * i], y[2 * i + 1]);
+    for(int i = 0; i < n; ++i) // x = P^T y
+      x[i] = load(y + K * (perm_.size() == n ? perm_[i] : i));
   }
 
 private:
+  static void store(const C& v, double* y)
+  {
+    y[0] = std::real(v);
+    if constexpr(K == 2)
+      y[1] = std::imag(v);
+  }
+  static C load(const double* y)
+  {
+    if constexpr(K == 2)
+      return C(y[0], y[1]);
+    else
+      return y[0];
+  }
+
   // L~ y = y (unit diagonal) over the columns cols[begin, end) (ascending; all columns when
   // cols is null), column by column: y_i -= l_ij y_j, rows of the top into `top` when given
   void forward(int begin, int end, const int* cols, double* y, double* top) const
@@ -150,22 +158,27 @@ private:
     const float* v = re_im_.data();
     for(int c = begin; c < end; ++c) {
       const int j = cols ? cols[c] : c;
-      const double yr = y[2 * j], yi = y[2 * j + 1];
-      for(int p = outer[j]; p < outer[j + 1]; ++p) {
-        const double lr = v[2 * p], li = v[2 * p + 1];
-        double* t = (top && in_top_[inner[p]] ? top : y) + 2 * inner[p];
-        t[0] -= lr * yr - li * yi;
-        t[1] -= lr * yi + li * yr;
+      if constexpr(K == 2) {
+        const double yr = y[2 * j], yi = y[2 * j + 1];
+        for(int p = outer[j]; p < outer[j + 1]; ++p) {
+          const double lr = v[2 * p], li = v[2 * p + 1];
+          double* t = (top && in_top_[inner[p]] ? top : y) + 2 * inner[p];
+          t[0] -= lr * yr - li * yi;
+          t[1] -= lr * yi + li * yr;
+        }
+      } else {
+        const double yj = y[j];
+        for(int p = outer[j]; p < outer[j + 1]; ++p)
+          (top && in_top_[inner[p]] ? top : y)[inner[p]] -= double(v[p]) * yj;
       }
     }
   }
 
   void scale(double* y) const
   {
-    for(int j = 0; j < n_; ++j) {
-      y[2 * j] *= inv_d_[j];
-      y[2 * j + 1] *= inv_d_[j];
-    }
+    for(int j = 0; j < n_; ++j)
+      for(int k = 0; k < K; ++k)
+        y[K * j + k] *= inv_d_[j];
   }
 
   // L~^* y = y over the columns cols[begin, end) (all when cols is null), from the last:
@@ -177,15 +190,22 @@ private:
     const float* v = re_im_.data();
     for(int c = end - 1; c >= begin; --c) {
       const int j = cols ? cols[c] : c;
-      double sr = y[2 * j], si = y[2 * j + 1];
-      for(int p = outer[j]; p < outer[j + 1]; ++p) {
-        const double lr = v[2 * p], li = v[2 * p + 1];
-        const double* t = y + 2 * inner[p];
-        sr -= lr * t[0] + li * t[1];
-        si -= lr * t[1] - li * t[0];
+      if constexpr(K == 2) {
+        double sr = y[2 * j], si = y[2 * j + 1];
+        for(int p = outer[j]; p < outer[j + 1]; ++p) {
+          const double lr = v[2 * p], li = v[2 * p + 1];
+          const double* t = y + 2 * inner[p];
+          sr -= lr * t[0] + li * t[1];
+          si -= lr * t[1] - li * t[0];
+        }
+        y[2 * j] = sr;
+        y[2 * j + 1] = si;
+      } else {
+        double sj = y[j];
+        for(int p = outer[j]; p < outer[j + 1]; ++p)
+          sj -= double(v[p]) * y[inner[p]];
+        y[j] = sj;
       }
-      y[2 * j] = sr;
-      y[2 * j + 1] = si;
     }
   }
 
@@ -301,7 +321,7 @@ private:
   mutable std::vector<double> top_sum_[2];
   int n_ = 0;
   std::vector<int> outer_, inner_;
-  std::vector<float> re_im_; // interleaved real and imaginary parts
+  std::vector<float> re_im_; // L's entries (complex: interleaved real and imaginary parts)
   std::vector<double> inv_d_;
   Eigen::VectorXi perm_;
   mutable std::vector<double> y_;

@@ -16,6 +16,8 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <CGAL/Hyperbolic_orbifold_Tutte/internal/linear_algebra/simplicial_float_factor.h>
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -227,10 +229,10 @@ public:
       if(!(a > 0))
         return;
       const Eigen::Matrix<double, 3, 2> J = src_.jacobian(f, q);
-      if(symmetric_dirichlet && newton_block(J, s, a, c, g, T, b))
-        return;
       if(symmetric_dirichlet) {
-        const double e = Arap_source::density(J, s);
+        const double e = Arap_source::density(J, s); // (cheaper than the SVD of newton_block())
+        if(e <= newton_density_ && newton_block(J, s, a, c, g, T, b))
+          return;
         if(e > cap)
           a *= cap / e; // the tempered energy's gradient
       }
@@ -280,7 +282,7 @@ public:
     const Eigen::SparseMatrix<double>& H = H_;
     d.assign(fixed_.size(), Eigen::Vector2d::Zero());
     Eigen::VectorXd x;
-    if(!(factored_ && preconditioned_solve(H, rhs, x))) {
+    if(!(factored_ && !single_.empty() && preconditioned_solve(H, rhs, x))) {
       if(!factored_)
         ldlt_.analyzePattern(H);
       ldlt_.factorize(H);
@@ -288,6 +290,11 @@ public:
       if(!factored_)
         return false;
       x = ldlt_.solve(rhs);
+      // the next steps' preconditioner: the factor rounded to float (positive definite: D > 0)
+      if((ldlt_.vectorD().array() > 0).all())
+        single_.assign(ldlt_);
+      else
+        single_.clear();
     }
     if(!x.allFinite())
       return false;
@@ -310,8 +317,8 @@ private:
   // gradient (density_derivatives()), carried to the corners' tangent moves by the hat
   // functions' gradients. Scaled by s^2/2 times the face's area, the proxy's scale (its
   // quadratic is |W (J - s R)|^2 with the energy's gradient at J up to that factor), so that the
-  // two kinds of faces, the springs and the Tikhonov term weigh as before. False on a face
-  // squeezed beyond newton_density_ (the proxy's then).
+  // two kinds of faces, the springs and the Tikhonov term weigh as before. Taken on the faces
+  // whose density is at most newton_density_ (the caller tests it); false on a degenerate image.
   //
   // Why only there: on a squeezed face the energy's Hessian is far from its value a step away
   // (1/A varies fast), and Newton's step overshoots; the proxy's weights are bounded. On the
@@ -327,7 +334,7 @@ private:
     double value;
     Eigen::Matrix<double, 6, 1> gJ;
     Eigen::Matrix<double, 6, 6> hJ;
-    if(!Arap_source::density_derivatives(J, s, value, gJ, hJ) || !(value <= newton_density_))
+    if(!Arap_source::density_derivatives(J, s, value, gJ, hJ))
       return false;
     // corner i's tangent move t changes J by (T_i t) g_i^T, its entries by U_i^T t with
     // U_i = [g_i[0] T_i^T, g_i[1] T_i^T] (2 x 6)
@@ -388,20 +395,24 @@ private:
   }
 
   // Conjugate gradients on H x = rhs preconditioned by the factor of an earlier matrix (the
-  // matrices of successive steps differ little): false when 20 iterations do not bring the
-  // residual below 3e-2 of the right-hand side's, and the caller factors H itself. (The line
-  // search only asks that the step lower the energy: with 1e-2 the solves took a third more
-  // iterations and more factorisations, for no better maps on SHREC'07's classes. With 1e-1,
-  // four fifths of the time on 40K-vertex sources, but the refinement of test_refine's bear
-  // stalled at an energy of 5.63, every step failing the line search; why is not established.)
+  // matrices of successive steps differ little), its L rounded to float and solved on two
+  // threads (simplicial_float_factor.h: a symmetric positive definite operator, the same bits
+  // on any number of threads; with Eigen's own solves, two thirds of the refinement's time on
+  // 40K vertices): false when 20 iterations do not bring the
+  // residual below a tenth of the right-hand side's, and the caller factors H itself. The
+  // iterations start from x = 0, so that each iterate lowers the quadratic model below its
+  // value at 0 (x^T H x / 2 - rhs^T x < 0): rhs^T x > 0, a descent direction of the energy
+  // (rhs is minus its gradient), however early the iterations stop. (Started from the
+  // preconditioned right-hand side, unscaled, that was not so: with a goal of 1e-1 the
+  // refinement of test_refine's bear stalled at an energy of 5.63, every step failing the
+  // line search, and a goal of 3e-2 took a third more iterations.)
   bool preconditioned_solve(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const
   {
-    const double goal = 3e-2 * rhs.norm();
-    x = ldlt_.solve(rhs);
-    Eigen::VectorXd r = rhs - H * x;
-    if(!(r.norm() > goal))
-      return x.allFinite();
-    Eigen::VectorXd z = ldlt_.solve(r), p = z;
+    const double goal = 1e-1 * rhs.norm();
+    x = Eigen::VectorXd::Zero(rhs.size());
+    Eigen::VectorXd r = rhs, z, p;
+    single_.solve(r, z);
+    p = z;
     double rz = r.dot(z);
     for(int k = 0; k < 20; ++k) {
       const Eigen::VectorXd Hp = H * p;
@@ -413,13 +424,14 @@ private:
       r -= a * Hp;
       if(!(r.norm() > goal))
         return x.allFinite();
-      z = ldlt_.solve(r);
+      single_.solve(r, z);
       const double rz2 = r.dot(z);
       p = z + (rz2 / rz) * p;
       rz = rz2;
     }
     return false;
   }
+
 
   // The proxy's metric on the residual J - s R: the identity for ARAP; for the symmetric
   // Dirichlet energy, the reweighting of scalable locally injective maps (Rabinovich et al.
@@ -464,6 +476,7 @@ private:
   std::vector<Face_block> blocks_;
   bool factored_ = false; // (ldlt_ holds the factor of an earlier step's matrix)
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt_;
+  Simplicial_float_factor<double> single_; // ldlt_'s factor rounded to float (see preconditioned_solve())
 };
 
 } // namespace internal
