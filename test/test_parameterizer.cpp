@@ -27,6 +27,7 @@
 #include <cstring>
 #include <map>
 #include <random>
+#include <type_traits>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
 #endif
@@ -1985,6 +1986,44 @@ TEST_CASE(single_precision_factor_solves_with_the_rounded_factor)
 #endif
 }
 
+// P^T L~ D L~^* P x from Eigen's own factor of a matrix (P A P^T = L D L^*), L~ = fl32(L) its
+// unit lower factor with the entries rounded to float here (not the library's copy)
+template <class Scalar>
+static Eigen::Matrix<Scalar, Eigen::Dynamic, 1> rounded_factor_product(
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>, Eigen::Lower, Eigen::AMDOrdering<int> >& eigen,
+    const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& x)
+{
+  typedef Eigen::SparseMatrix<Scalar> Sp;
+  Sp L = eigen.matrixL().nestedExpression();
+  L.makeCompressed();
+  for(Eigen::Index k = 0; k < L.nonZeros(); ++k) {
+    // (through volatile floats: with Eigen's headers, GCC 12 at -O2 was seen to drop the
+    // double -> float -> double round trip of `Cd(static_cast<float>(re), ...)` altogether)
+    const Scalar l = L.valuePtr()[k];
+    const volatile float re = static_cast<float>(std::real(l)), im = static_cast<float>(std::imag(l));
+    if constexpr(std::is_same<Scalar, std::complex<double> >::value)
+      L.valuePtr()[k] = Scalar(re, im);
+    else
+      L.valuePtr()[k] = re;
+  }
+  Sp I(L.rows(), L.cols());
+  I.setIdentity();
+  const Sp Lt = Sp(L) + I; // (unit diagonal)
+  const Eigen::Matrix<Scalar, Eigen::Dynamic, 1> d = eigen.vectorD();
+  return eigen.permutationP().inverse() * (Lt * (d.asDiagonal() * (Lt.adjoint() * (eigen.permutationP() * x))));
+}
+
+// the largest absolute row sum of a sparse matrix: at least its 2-norm when it is Hermitian
+template <class Matrix>
+static double largest_row_sum(const Matrix& A)
+{
+  Eigen::VectorXd sums = Eigen::VectorXd::Zero(A.rows());
+  for(Eigen::Index j = 0; j < A.outerSize(); ++j)
+    for(typename Matrix::InnerIterator it(A, j); it; ++it)
+      sums[it.row()] += std::abs(it.value());
+  return sums.maxCoeff();
+}
+
 // Below CHOLMOD's size, Eigen's simplicial LDL^* factor of the connection Laplacian with L
 // rounded to single precision: each solve is, to double rounding, one with the matrix
 // P^T L~ D L~^* P, L~ = fl32(L), built here from Eigen's own factor (not the library's
@@ -2009,24 +2048,8 @@ static void simplicial_float_factor_case(int side)
   // P^T L~ D L~^* P from Eigen's factor of A, its L rounded to float here
   Eigen::SimplicialLDLT<SpC, Eigen::Lower, Eigen::AMDOrdering<int> > eigen(A);
   CHECK(eigen.info() == Eigen::Success);
-  SpC L = eigen.matrixL().nestedExpression();
-  L.makeCompressed();
-  for(Eigen::Index k = 0; k < L.nonZeros(); ++k) {
-    // (through volatile floats: with Eigen's headers, GCC 12 at -O2 was seen to drop the
-    // double -> float -> double round trip of `Cd(static_cast<float>(re), ...)` altogether)
-    const Cd l = L.valuePtr()[k];
-    const volatile float re = static_cast<float>(l.real()), im = static_cast<float>(l.imag());
-    L.valuePtr()[k] = Cd(re, im);
-  }
-  SpC I(n, n);
-  I.setIdentity();
-  const SpC Lt = SpC(L) + I; // (unit diagonal)
-  const Eigen::VectorXcd d = eigen.vectorD();
-  const Eigen::VectorXcd px = eigen.permutationP() * xf;
-  const Eigen::VectorXcd tilde_x = eigen.permutationP().inverse() * (Lt * (d.asDiagonal() * (Lt.adjoint() * px)));
-  double normA = 0; // the largest row sum: at least the 2-norm (Hermitian)
-  for(int i = 0; i < n; ++i)
-    normA = std::max(normA, Eigen::MatrixXcd(A.row(i)).cwiseAbs().sum());
+  const Eigen::VectorXcd tilde_x = rounded_factor_product(eigen, xf);
+  const double normA = largest_row_sum(A);
   const double with_rounded = (tilde_x - b).norm() / (normA * xf.norm());
   const double backward = (A * xf - b).norm() / (normA * xf.norm());
   const double hermitian = std::abs(u.dot(xf) - sf_u.dot(b)) / (u.norm() * xf.norm());
@@ -2102,21 +2125,8 @@ TEST_CASE(real_simplicial_float_factor_solves_with_the_rounded_factor)
     one.execute([&] { single.solve(b, xs1); });
     CHECK_MSG(xs1 == xs, "not the same bits on one thread: " << (xs1 - xs).norm());
 #endif
-    Eigen::SparseMatrix<double> L = eigen.matrixL().nestedExpression();
-    L.makeCompressed();
-    for(Eigen::Index k = 0; k < L.nonZeros(); ++k) {
-      const volatile float l = static_cast<float>(L.valuePtr()[k]); // (see simplicial_float_factor_case)
-      L.valuePtr()[k] = l;
-    }
-    Eigen::SparseMatrix<double> I(n, n);
-    I.setIdentity();
-    const Eigen::SparseMatrix<double> Lt = L + I;
-    const Eigen::VectorXd d = eigen.vectorD();
-    const Eigen::VectorXd px = eigen.permutationP() * xs;
-    const Eigen::VectorXd tilde_b = eigen.permutationP().inverse() * (Lt * (d.asDiagonal() * (Lt.transpose() * px)));
-    double normR = 0; // the largest row sum: at least the 2-norm (symmetric)
-    for(int i = 0; i < n; ++i)
-      normR = std::max(normR, Eigen::MatrixXd(R.row(i)).cwiseAbs().sum());
+    const Eigen::VectorXd tilde_b = rounded_factor_product(eigen, xs);
+    const double normR = largest_row_sum(R);
     const double with_rounded = (tilde_b - b).norm() / (normR * xs.norm());
     const double backward = (R * xs - b).norm() / (normR * xs.norm());
     const double symmetric = std::abs(u.dot(xs) - su.dot(b)) / (u.norm() * xs.norm());
