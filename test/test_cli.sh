@@ -418,6 +418,12 @@ assert f["free_vertices"] == r1["source_vertices"] - r1["landmarks"] and f["seco
 # --refine adds the matched extremities, as --augment does (the same pairs)
 assert r1["augmentation"]["added"] == r0["augmentation"]["added"] and r1["landmarks"] == 7 + len(r0["augmentation"]["added"])
 PY
+    # --progress: the phase 'refine' from 0% to 100%, never going down (told after every
+    # iteration; the lines at most every 0.5 s), and the same map
+    "$prog" map "${args[@]}" --out "$tmp/m4.txt" --refine 20 --progress > /dev/null 2> "$tmp/p.stderr" || fail "map --refine --progress failed"
+    cmp -s "$tmp/m1.txt" "$tmp/m4.txt" || fail "map --refine --progress: another map"
+    awk '/^map: refine [0-9]+%$/ { pc = $3 + 0; if(n == 0 && pc != 0) bad = 1; if(pc < last) bad = 1; last = pc; n++ }
+      END { exit !(n >= 2 && last == 100 && !bad) }' "$tmp/p.stderr" || fail "the refinement's progress: $(cat "$tmp/p.stderr")"
     # usage errors: exit 2, no file left
     for bad in -1 x 1.5; do
       "$prog" map "${args[@]}" --out "$tmp/m2.txt" --refine "$bad" 2> "$tmp/stderr"; [ $? -eq 2 ] || fail "--refine $bad: not a usage error"

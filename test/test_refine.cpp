@@ -26,6 +26,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <set>
@@ -133,6 +134,39 @@ TEST_CASE(refinement_moves_a_map_towards_the_isometry)
   CHECK(HOT::certify_hyperbolic_orbifold_embedding(p.a, p.landmarks, p.uva, cert, &why, HOT::parameters::frame(p.sa.frame)) == HOT::OK);
   CHECK_MSG(cert.is_bijective(), why);
   CHECK(cert.flipped_faces == 0 && cert.twin_failures == 0);
+}
+
+// The named parameter `progress` (documented in refine_orbifold_map()): the phase
+// "refinement", 0 once the refinement starts, i / N after iteration i of at most N, 1 at the
+// end; nothing when it refuses; and the refined embedding is the one computed without it, bit
+// for bit.
+TEST_CASE(refinement_tells_its_progress)
+{
+  Pair p, q;
+  CHECK(make_pair(p) && make_pair(q));
+  if(p.landmarks.empty() || q.landmarks.empty())
+    return;
+  const Locator Lp(p.b, p.uvb, HOT::Sphere_type, static_cast<int>(p.landmarks.size()));
+  const Locator Lq(q.b, q.uvb, HOT::Sphere_type, static_cast<int>(q.landmarks.size()));
+  std::vector<std::pair<std::string, double> > told;
+  const std::function<void(const char*, double)> progress = [&told](const char* phase, double f) { told.emplace_back(phase, f); };
+  const int N = 4;
+  HOT::Map_refinement_statistics sp, sq;
+  CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, Lp, sp,
+                                 HOT::parameters::refine(N, HOT::parameters::frame(p.sa.frame, HOT::parameters::progress(progress)))) == HOT::OK);
+  CHECK(HOT::refine_orbifold_map(q.a, q.landmarks, q.uva, q.b, Lq, sq, HOT::parameters::refine(N, HOT::parameters::frame(q.sa.frame))) == HOT::OK);
+  CHECK(corners(p) == corners(q));
+  CHECK(sp.iterations == N && sp.stop == HOT::Refinement_iterations); // (the uniform weights' map is far from converged)
+  CHECK(told.size() == static_cast<std::size_t>(N + 2));
+  for(std::size_t i = 0; i < told.size(); ++i) {
+    CHECK(told[i].first == "refinement");
+    CHECK(told[i].second == (i == 0 ? 0.0 : i <= std::size_t(N) ? double(i) / N : 1.0));
+  }
+  // refusals: nothing told
+  told.clear();
+  CHECK(HOT::refine_orbifold_map(p.a, p.landmarks, p.uva, p.b, Lp, sp, HOT::parameters::refine(-1, HOT::parameters::progress(progress))) ==
+        HOT::ERROR_WRONG_PARAMETER);
+  CHECK(told.empty());
 }
 
 // A protrusion without a landmark that the embeddings squeeze beyond what double resolves (as

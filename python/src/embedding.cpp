@@ -524,7 +524,8 @@ struct Corner_vector_map
 } // namespace
 
 void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int64_t>& faces, std::vector<double>& bary,
-                    std::vector<std::int64_t>* unreliable, int refine, HOT::Map_refinement_statistics* refinement)
+                    std::vector<std::int64_t>* unreliable, int refine, HOT::Map_refinement_statistics* refinement,
+                    const std::function<void(const char*, double)>& progress)
 {
   check_map_pair(A, B);
   if(refine < 0)
@@ -546,7 +547,8 @@ void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int
       ordered.push_back(A.landmarks[i]);
     HOT::Map_refinement_statistics st;
     const HOT::Error_code ec = HOT::refine_orbifold_map(A.mesh, ordered, uv, B.mesh, locB, st,
-      HOT::parameters::refine(refine, HOT::parameters::frame(A.stats.frame, HOT::parameters::cone_orders(A.stats.cone_orders, HOT::parameters::orbifold_type(A.type)))));
+      HOT::parameters::refine(refine, HOT::parameters::frame(A.stats.frame, HOT::parameters::cone_orders(A.stats.cone_orders,
+        HOT::parameters::orbifold_type(A.type, HOT::parameters::progress(progress))))));
     if(ec != HOT::OK)
       fail(ec, "refine: " + st.message);
     if(refinement)
@@ -735,7 +737,7 @@ void compute_mesh_map(const Double_array& VA, const Index_array& FA, std::vector
   if(c == std::size_t(-1))
     fail(code, message);
   r.chosen = candidates[c];
-  map_embeddings(*r.A, *r.B, r.faces, r.bary, unreliable ? &r.flagged : nullptr, refine);
+  map_embeddings(*r.A, *r.B, r.faces, r.bary, unreliable ? &r.flagged : nullptr, refine, nullptr, opt.progress);
 }
 
 py::dict map_meshes(py::handle VA, py::handle FA, py::handle landmarks_a, py::handle VB, py::handle FB, py::handle landmarks_b,
@@ -807,7 +809,8 @@ augment: True adds to both meshes' landmarks the thin tips the landmarks leave o
   None (the default): True when refine > 0 on closed genus-0 meshes and order is not a
   sequence (as `map --refine`), else False; False: never.
 progress: as embed()'s, the phases of the two embeddings named "source: PHASE" and
-  "target: PHASE" (a mesh embedded again in another order tells its phases again).
+  "target: PHASE" (a mesh embedded again in another order tells its phases again), then
+  with refine=N the phase "refinement": 0, i / N after iteration i, 1 at its end.
 
 Returns a dict (the map() result and how it was made):
   "faces", "bary": map()'s result (int64 (nA,), float64 (nA, 3)): vertex i of A goes to

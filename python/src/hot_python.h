@@ -247,10 +247,12 @@ Embedding_ptr compute_embedding(const double* V, std::size_t n, const std::int64
 // vertices of A whose images the map cannot resolve (HOT::map_reliability(), the map report's
 // "unreliable_vertices"). With `refine` > 0, the map refined by HOT::refine_orbifold_map() (at
 // most `refine` iterations, on a copy of A's corners: A is unchanged; `refinement` gets its
-// statistics if not null). Does not need the GIL. Failures throw Hot_error.
+// statistics if not null; `progress`, if not empty, is told the phase "refinement"). Does not
+// need the GIL. Failures throw Hot_error.
 void map_embeddings(const Embedding& A, const Embedding& B, std::vector<std::int64_t>& faces, std::vector<double>& bary,
                     std::vector<std::int64_t>* unreliable = nullptr, int refine = 0,
-                    HOT::Map_refinement_statistics* refinement = nullptr);
+                    HOT::Map_refinement_statistics* refinement = nullptr,
+                    const std::function<void(const char*, double)>& progress = std::function<void(const char*, double)>());
 
 // ---------------------------------------------------------------------------------------
 // registration, one function per area (module.cpp calls them)

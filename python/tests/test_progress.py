@@ -1,7 +1,7 @@
 # Copyright (c) 2026  The Hyperbolic_orbifold_Tutte project.  All rights reserved.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""progress= of hot.embed() and hot.map_meshes(): the library's phases in order, each from 0
-to 1, the same phases as the command line's `embed --progress` lines, the same result bit for
+"""progress= of hot.embed() and hot.map_meshes(): the library's phases in order (map_meshes(): the
+refinement's last), each from 0 to 1, the same phases as the command line's `embed --progress` lines, the same result bit for
 bit with or without the callable, and an exception of the callable raised by the call."""
 
 import subprocess
@@ -67,6 +67,22 @@ def test_map_meshes_names_the_two_embeddings(bear):
     r = hot.map_meshes(V, F, lm, V + 1.0, F, lm, progress=lambda phase, f: calls.append((phase, f)))
     check_phases(calls, ["source: " + p for p in PHASES] + ["target: " + p for p in PHASES])
     plain = hot.map_meshes(V, F, lm, V + 1.0, F, lm)
+    assert np.array_equal(r["faces"], plain["faces"]) and np.array_equal(r["bary"], plain["bary"])
+
+
+def test_map_meshes_tells_the_refinement_after_the_embeddings(bear):
+    # refine=N: the phase "refinement" last, 0 when it starts, i / N after iteration i, 1 at its
+    # end (refine_orbifold_map()'s progress); the same map as without the callable. The target
+    # is the bear stretched along y, so that the harmonic map is not the refined one.
+    V, F, lm, _ = bear
+    W = V * np.array([1.0, 1.3, 1.0])
+    N = 3
+    calls = []
+    r = hot.map_meshes(V, F, lm, W, F, lm, refine=N, progress=lambda phase, f: calls.append((phase, f)))
+    check_phases(calls, ["source: " + p for p in PHASES] + ["target: " + p for p in PHASES] + ["refinement"])
+    told = [f for p, f in calls if p == "refinement"]
+    assert 3 <= len(told) <= N + 2 and told[1:-1] == [k / N for k in range(1, len(told) - 1)], told
+    plain = hot.map_meshes(V, F, lm, W, F, lm, refine=N)
     assert np.array_equal(r["faces"], plain["faces"]) and np.array_equal(r["bary"], plain["bary"])
 
 

@@ -227,14 +227,17 @@ inline std::vector<Locator::Location> map_source_vertices(const Embedded& A, con
 // --refine N: the source's embedding refined towards an isometry onto the target (A's embedding
 // moves, `f` is the refined map); `distortion_before`: the map's distortion before
 inline HOT::Map_refinement_statistics refine_map(int refine, Embedded& A, const Embedded& B, const Locator& locB,
-                                                 std::vector<Locator::Location>& f, HOT::Map_distortion& distortion_before)
+                                                 std::vector<Locator::Location>& f, HOT::Map_distortion& distortion_before,
+                                                 Progress_line& progress)
 {
   HOT::Map_refinement_statistics refinement;
   if(!A.stats.charts.empty()) // (the library refuses the rest: genus 1 or more)
     throw Failure{HOT::ERROR_WRONG_PARAMETER, "--refine handles sources embedded without charts; the source is embedded partly in charts around cone images"};
   distortion_before = HOT::map_distortion(A.mesh, B.mesh, locB, f);
+  const std::function<void(const char*, double)> told = [&progress](const char*, double fraction) { progress("refine", fraction); };
   const HOT::Error_code ec = HOT::refine_orbifold_map(A.mesh, A.ordered, A.uv, B.mesh, locB, refinement,
-    HOT::parameters::refine(refine, HOT::parameters::frame(A.stats.frame, HOT::parameters::cone_orders(A.stats.cone_orders, HOT::parameters::orbifold_type(A.type)))));
+    HOT::parameters::refine(refine, HOT::parameters::frame(A.stats.frame, HOT::parameters::cone_orders(A.stats.cone_orders,
+      HOT::parameters::orbifold_type(A.type, HOT::parameters::progress(told))))));
   if(ec != HOT::OK)
     throw Failure{ec, "--refine: " + refinement.message};
   f = map_source_vertices(A, locB, " after the refinement");
@@ -342,7 +345,7 @@ inline int run_map(int argc, char** argv)
   HOT::Map_refinement_statistics refinement;
   if(refine > 0) { // (A's embedding moves: everything below reads the refined map)
     progress.step("refine");
-    refinement = refine_map(refine, A, B, locB, f, distortion_before);
+    refinement = refine_map(refine, A, B, locB, f, distortion_before, progress);
     progress.done("refine");
   }
   progress.step("reliability");

@@ -160,7 +160,8 @@ CGAL_HOT_NAMED_PARAMETER(refine)
 /// a callable `void(const char* phase, double fraction)` (stored as a `std::function`): for
 /// `hyperbolic_orbifold_Tutte_embedding()`, told the progress of the phases "input", "cut",
 /// "initialization", "optimization" and "certificate", in this order, from the calling thread
-/// (see `Hyperbolic_orbifold_Tutte_parameterizer_3::set_progress()`; default: none)
+/// (see `Hyperbolic_orbifold_Tutte_parameterizer_3::set_progress()`); for `refine_orbifold_map()`,
+/// the phase "refinement", after every iteration (default: none)
 CGAL_HOT_NAMED_PARAMETER(progress)
 /// `double`: for `match_extremities()`, the radius of an extremity's geodesic ball as a fraction
 /// of the largest geodesic distance to the landmarks (default 0.25)

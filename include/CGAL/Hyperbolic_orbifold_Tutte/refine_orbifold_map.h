@@ -20,6 +20,7 @@
 #include <boost/property_map/function_property_map.hpp>
 
 #include <chrono>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,7 +91,12 @@ stays a bijection that interpolates the landmarks and is seamless through the or
 \param np optional named parameters: `refine` (an `int`, the largest number of iterations, default 100;
        0 leaves `uvA` as it is), those of `certify_hyperbolic_orbifold_embedding()`
        (`orbifold_type`, `frame`, `cone_orders`, `cut_graph`) describing `A`'s embedding, and
-       `vertex_point_map` for `A` (`B`'s points are read with `get(vertex_point, B)`)
+       `vertex_point_map` for `A` (`B`'s points are read with `get(vertex_point, B)`), and
+       `progress` (a callable `void(const char* phase, double fraction)`, stored as a
+       `std::function`): told, from the calling thread, the phase `"refinement"` with the
+       fraction of the largest number of iterations done, 0 once the iterate is certified and
+       the images located, then after every iteration, and 1 when the refinement ends (early
+       when it converges or stops; not told when it refuses)
 
 \return `OK` (read `stats.stop`), `ERROR_WRONG_PARAMETER` if `A` has genus 1 or more (`check_refinable_source()`) or its
 embedding is given in charts (`chart_map`: refused), `ERROR_NO_1_TO_1_MAPPING` if `uvA` itself is not certified,
@@ -140,10 +146,19 @@ Error_code refine_orbifold_map(const TriangleMeshA& A,
   const Error_code ec = refiner.prepare(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, A)));
   if(ec != OK)
     return ec;
+  std::function<void(const char*, double)> progress; // (empty: no report)
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::progress_t>::value)
+    progress = get_parameter(np, internal_np::progress);
+  const auto tell = [&progress](double fraction) {
+    if(progress)
+      progress("refinement", fraction);
+  };
+  tell(0.0);
   stats.stop = iterations == 0 ? Refinement_not_run : Refinement_iterations;
-  for(int it = 0; it < iterations && refiner.iterate(); ++it) {
-  }
+  for(int it = 0; it < iterations && refiner.iterate(); ++it)
+    tell(static_cast<double>(it + 1) / iterations);
   refiner.write(uvA);
+  tell(1.0);
   switch(stats.stop) {
   case Refinement_not_run: stats.message = "not refined (0 iterations asked)"; break;
   case Refinement_iterations: stats.message = "ran the " + std::to_string(iterations) + " iterations asked"; break;
